@@ -1,0 +1,51 @@
+# pendulum-figures: thin front end to CMake.
+#   make            build (installs missing Debian packages when run as root)
+#   make test       build and run every test
+#   make figures    build and write every figure into figures/
+#   make bench      run the benchmarks
+#   make clean      remove the build directory
+
+BUILD ?= build
+JOBS ?= 2
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+
+# Debian packages needed to build and test. GoogleTest and Google Benchmark are listed too,
+# so that a machine without them gets them the same way.
+DEB_PACKAGES := g++ cmake make pkgconf libgsl-dev libcairo2-dev libpango1.0-dev libcli11-dev \
+	libpng-dev libgtest-dev libbenchmark-dev fonts-cmu poppler-utils
+
+.PHONY: all deps build test bench figures clean
+
+all: build
+
+deps:
+	@if command -v dpkg-query >/dev/null 2>&1; then \
+	  missing=""; \
+	  for p in $(DEB_PACKAGES); do \
+	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
+	  done; \
+	  if [ -n "$$missing" ]; then \
+	    if [ "$$(id -u)" = 0 ]; then \
+	      echo "installing missing Debian packages:$$missing"; \
+	      apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	    else \
+	      echo "missing Debian packages; install them with:"; \
+	      echo "  sudo apt-get install$$missing"; \
+	      exit 1; \
+	    fi; \
+	  fi; \
+	fi
+
+build: deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+bench: build
+	$(BUILD)/bench_pendulum --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+	  --benchmark_min_time=0.2
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <vector>
+
+namespace pendulum {
+
+/// A truncated Fourier solution theta(t) = sum_k c_{2k+1} cos((2k+1) w t).
+struct fourier_solution {
+    double frequency_ratio = 1.0;      ///< w/w0
+    std::vector<double> coefficients;  ///< c1, c3, c5, ...
+
+    /// The period ratio T/T0 = w0/w.
+    double period_ratio() const { return 1.0 / frequency_ratio; }
+    /// theta at time w0 t.
+    double theta(double w0_t) const;
+};
+
+/// The largest order accepted by iterated().
+inline constexpr int max_order = 200;
+
+/// Harmonic solution theta0 cos(w0 t) (paper Eq. Lamb.5).
+fourier_solution harmonic(double theta0);
+
+/// Lowest order: c1 = theta0, (w/w0)^2 = besinc(theta0) = 2 J1(theta0)/theta0 (Eq. Lamb.15.1).
+fourier_solution lowest_order(double theta0);
+
+/// First order: c1', c3' and w from eta = -J3/(9 J1) (Eqs. Lamb.20, Lamb.21).
+fourier_solution first_order(double theta0);
+
+/// Second order as in the paper's appendix, with its linearised projection.
+fourier_solution second_order(double theta0);
+
+/// Taylor polynomials of c1, c3, c5 and of T/T0 through theta0^5 (after Fulcher and Davis).
+fourier_solution polynomial(double theta0);
+
+/// The paper's iteration carried to `order` (order + 1 harmonics), projecting
+/// sin(theta) exactly; orders 0 and 1 equal lowest_order() and first_order().
+fourier_solution iterated(double theta0, int order);
+
+/// (w/w0)^2 = 2 J1(x) / x, the "besinc" function of optics (1 at x = 0).
+double besinc(double x);
+
+}  // namespace pendulum

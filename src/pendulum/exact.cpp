@@ -1,0 +1,178 @@
+#include "pendulum/exact.hpp"
+
+#include "pendulum/amplitude.hpp"
+#include "pendulum/gsl_support.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace pendulum {
+
+using std::numbers::pi;
+
+double agm(double a, double b) {
+    // Quadratic convergence: the loop ends within a handful of steps even for b ~ 1e-300.
+    for (int i = 0; i < 64 && std::fabs(a - b) > 2e-16 * a; ++i) {
+        const double next = 0.5 * (a + b);
+        b = std::sqrt(a * b);
+        a = next;
+    }
+    return 0.5 * (a + b);
+}
+
+jacobi_values jacobi(double u, double kp) {
+    // Descending Landen transformation seeded with k' itself (the AGM of 1 and k'), so a
+    // parameter m = 1 - k'^2 that rounds to 1 in double precision still gives exact values.
+    if (kp == 0.0) {
+        const double sech = 1.0 / std::cosh(u);
+        return {std::tanh(u), sech, sech};
+    }
+    std::array<double, 32> em{};
+    std::array<double, 32> en{};
+    double a = 1.0;
+    double b = kp;
+    double c = 0.5 * (a + b);
+    int last = 0;
+    for (int i = 0; i < static_cast<int>(em.size()); ++i) {
+        em[i] = a;
+        en[i] = b;
+        c = 0.5 * (a + b);
+        last = i;
+        if (std::fabs(a - b) <= 1e-10 * a) break;
+        b = std::sqrt(a * b);
+        a = c;
+    }
+    const double v = u * c;
+    double sn = std::sin(v);
+    double cn = std::cos(v);
+    double dn = 1.0;
+    if (sn == 0.0) return {sn, cn, dn};
+    a = cn / sn;
+    c *= a;
+    for (int i = last; i >= 0; --i) {
+        b = em[i];
+        a *= c;
+        c *= dn;
+        dn = (en[i] + a) / (b + a);
+        a = c / b;
+    }
+    a = 1.0 / std::sqrt(c * c + 1.0);
+    sn = std::copysign(a, sn);
+    cn = c * sn;
+    return {sn, cn, dn};
+}
+
+exact_solution::exact_solution(double theta0) : theta0_(theta0) {
+    check_amplitude(theta0);
+    k_ = std::sin(0.5 * theta0);
+    kp_ = std::cos(0.5 * theta0);
+    quarter_ = 0.5 * pi / agm(1.0, kp_);
+    // K(k')/K(k) = AGM(1, k')/AGM(1, k).
+    log_nome_ = -pi * agm(1.0, kp_) / agm(1.0, k_);
+}
+
+double exact_solution::period_ratio() const { return 2.0 * quarter_ / pi; }
+
+double exact_solution::frequency_ratio() const { return 0.5 * pi / quarter_; }
+
+double exact_solution::nome() const { return std::exp(log_nome_); }
+
+double exact_solution::theta_in_quarter(double r, double sign) const {
+    // r in [0, K]. The cn form is exact where cn is far from its zero (first half of the
+    // quarter); the sn/dn form with u = K - r small is exact in the second half.
+    if (r <= 0.5 * quarter_) {
+        const auto j = jacobi(r, kp_);
+        return sign * 2.0 * std::atan2(k_ * j.cn, kp_);
+    }
+    const auto j = jacobi(quarter_ - r, kp_);
+    return sign * 2.0 * std::atan2(k_ * j.sn, j.dn);
+}
+
+double exact_solution::theta(double w0_t) const {
+    if (!std::isfinite(w0_t)) {
+        throw domain_error("time must be finite, got " + format_double(w0_t));
+    }
+    // Symmetries: even about 0, period 4K, odd about K.
+    const double period = 4.0 * quarter_;
+    double r = std::fabs(w0_t);
+    if (r >= period) r = std::fmod(r, period);
+    if (r > 2.0 * quarter_) r = period - r;
+    double sign = 1.0;
+    if (r > quarter_) {
+        sign = -1.0;
+        r = 2.0 * quarter_ - r;
+    }
+    return theta_in_quarter(r, sign);
+}
+
+double exact_solution::theta_at_fraction(double s) const {
+    if (!std::isfinite(s)) {
+        throw domain_error("time must be finite, got " + format_double(s));
+    }
+    // Each step below is exact in floating point, so the reduction adds no error.
+    s = std::fabs(s);
+    s -= std::floor(s);
+    if (s > 0.5) s = 1.0 - s;
+    double sign = 1.0;
+    if (s > 0.25) {
+        sign = -1.0;
+        s = 0.5 - s;
+    }
+    if (s <= 0.125) return theta_in_quarter(4.0 * quarter_ * s, sign);
+    // u = K (1 - 4 s) is formed without cancellation, then handed over as r = K - u.
+    const auto j = jacobi(quarter_ * (1.0 - 4.0 * s), kp_);
+    return sign * 2.0 * std::atan2(k_ * j.sn, j.dn);
+}
+
+double exact_solution::coefficient(int n) const {
+    if (n < 0) throw domain_error("harmonic index must be >= 0, got " + std::to_string(n));
+    const double h = 2.0 * n + 1.0;
+    const double sign = (n % 2 == 0) ? 1.0 : -1.0;
+    const double root = std::exp((n + 0.5) * log_nome_);
+    return sign * 8.0 * root / (h * (1.0 + std::exp(h * log_nome_)));
+}
+
+double exact_solution::coefficient_by_quadrature(int n) const {
+    if (n < 0) throw domain_error("harmonic index must be >= 0, got " + std::to_string(n));
+    // c_{2n+1} = (4/pi) int_0^{pi/2} theta(2 K x / pi) cos((2n+1) x) dx, by the symmetries
+    // of theta (even, odd about a quarter period).
+    struct params {
+        const exact_solution* solution;
+        int harmonic;
+    } p{this, 2 * n + 1};
+    gsl_function f;
+    f.function = [](double x, void* data) {
+        const auto* q = static_cast<const params*>(data);
+        return q->solution->theta_at_fraction(x / (2.0 * pi)) * std::cos(q->harmonic * x);
+    };
+    f.params = &p;
+    const auto workspace = make_integration_workspace(512);
+    double result = 0.0;
+    double error = 0.0;
+    // The integrand is of size theta0; ask for an absolute accuracy just above its rounding.
+    const double tolerance = 1e-15 * theta0_;
+    const int status = gsl_integration_qag(&f, 0.0, 0.5 * pi, tolerance, 0.0, 512,
+                                           GSL_INTEG_GAUSS61, workspace.get(), &result, &error);
+    // GSL_EROUND means rounding stopped further progress: the result is as good as doubles allow.
+    if (status != GSL_EROUND || error > 1e3 * tolerance) {
+        check_gsl(status, "quadrature of c" + std::to_string(2 * n + 1));
+    }
+    return 4.0 / pi * result;
+}
+
+double period_ratio(double theta0) { return exact_solution(theta0).period_ratio(); }
+
+std::vector<double> fourier_coefficients(double theta0, int count) {
+    const exact_solution solution(theta0);
+    std::vector<double> c;
+    c.reserve(count > 0 ? count : 0);
+    for (int n = 0; n < count; ++n) c.push_back(solution.coefficient(n));
+    return c;
+}
+
+}  // namespace pendulum

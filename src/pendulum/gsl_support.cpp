@@ -1,0 +1,37 @@
+#include "pendulum/gsl_support.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_bessel.h>
+
+#include <mutex>
+#include <new>
+#include <stdexcept>
+
+namespace pendulum {
+
+void use_gsl_status_codes() {
+    static std::once_flag once;
+    std::call_once(once, [] { gsl_set_error_handler_off(); });
+}
+
+integration_workspace make_integration_workspace(std::size_t size) {
+    use_gsl_status_codes();
+    integration_workspace w(gsl_integration_workspace_alloc(size));
+    if (!w) throw std::bad_alloc();
+    return w;
+}
+
+void check_gsl(int status, const std::string& what) {
+    if (status != GSL_SUCCESS) {
+        throw std::runtime_error(what + " failed: " + gsl_strerror(status));
+    }
+}
+
+double bessel_j(int n, double x) {
+    use_gsl_status_codes();
+    gsl_sf_result r;
+    check_gsl(gsl_sf_bessel_Jn_e(n, x, &r), "bessel J" + std::to_string(n));
+    return r.val;
+}
+
+}  // namespace pendulum

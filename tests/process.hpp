@@ -1,0 +1,46 @@
+#pragma once
+// Runs the pendulum-figures executable and captures its exit code, stdout and stderr.
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace test_support {
+
+/// The result of running a command.
+struct run_result {
+    int status = -1;      ///< exit code
+    std::string out;      ///< standard output
+    std::string err;      ///< standard error
+};
+
+inline std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// Runs PENDULUM_EXE with `args` (shell syntax) in `cwd`, capturing both streams.
+inline run_result run_cli(const std::string& args, const std::filesystem::path& cwd = ".") {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("pendulum-cli-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const auto out = dir / "out";
+    const auto err = dir / "err";
+    const std::string cmd = "cd '" + cwd.string() + "' && '" + std::string(PENDULUM_EXE) + "' " +
+                            args + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
+    const int raw = std::system(cmd.c_str());
+    run_result r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    std::filesystem::remove_all(dir);
+    return r;
+}
+
+}  // namespace test_support

@@ -1,0 +1,203 @@
+// Tests of the command line: angle expressions, output tables and every kind of bad input.
+#include "cli/angle.hpp"
+#include "cli/table.hpp"
+#include "pendulum/approximants.hpp"
+#include "pendulum/exact.hpp"
+#include "process.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+using namespace pendulum;
+using std::numbers::pi;
+using test_support::run_cli;
+
+TEST(Angle, ParsesWhatPhysicistsType) {
+    EXPECT_EQ(cli::parse_angle("1.2"), 1.2);
+    EXPECT_EQ(cli::parse_angle("pi/2"), pi / 2);
+    EXPECT_EQ(cli::parse_angle("9pi/10"), 9 * pi / 10);
+    EXPECT_EQ(cli::parse_angle("9*pi/10"), 9 * pi / 10);
+    EXPECT_EQ(cli::parse_angle("0.9pi"), 0.9 * pi);
+    EXPECT_EQ(cli::parse_angle("162deg"), 0.9 * pi);
+    EXPECT_EQ(cli::parse_angle("90 deg"), pi / 2);
+    EXPECT_EQ(cli::parse_angle("90\u00b0"), pi / 2);
+    EXPECT_EQ(cli::parse_angle("\u03c0/3"), pi / 3);
+    EXPECT_EQ(cli::parse_angle(" 3pi/4 "), 3 * pi / 4);
+    EXPECT_EQ(cli::parse_angle("pi - 1e-9"), pi - 1e-9);
+    EXPECT_EQ(cli::parse_angle("2(pi/3)"), 2 * (pi / 3));
+    EXPECT_EQ(cli::parse_angle("1e-8"), 1e-8);
+    EXPECT_EQ(cli::parse_angle("1.5rad"), 1.5);
+    EXPECT_EQ(cli::parse_angle("-pi/2"), -pi / 2);
+}
+
+TEST(Angle, RejectsWhatIsNotAnAngle) {
+    for (const char* bad : {"", " ", "abc", "pi/0", "1e999", "inf", "nan", "1..2", "pi/", "(pi",
+                            "2 3", "0x10", "1e", ".", "pideg deg", "1e308*10"}) {
+        EXPECT_THROW(cli::parse_angle(bad), std::invalid_argument) << "'" << bad << "'";
+    }
+    try {
+        cli::parse_angle("pi/0");
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("'pi/0'"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("division by zero"), std::string::npos);
+    }
+}
+
+TEST(Angle, SplitsLists) {
+    EXPECT_EQ(cli::split_list("a,b"), (std::vector<std::string>{"a", "b"}));
+    EXPECT_EQ(cli::split_list("a,"), (std::vector<std::string>{"a", ""}));
+    EXPECT_EQ(cli::split_list(""), (std::vector<std::string>{""}));
+}
+
+TEST(Table, CsvAndJsonRoundTrip) {
+    cli::table t{{"x", "y"}, {{0.1, 1.0 / 3.0}, {1e-300, -2.5}}};
+    std::ostringstream csv;
+    cli::write_table(csv, t, cli::table_format::csv);
+    EXPECT_EQ(csv.str(), "x,y\n0.1,0.3333333333333333\n1e-300,-2.5\n");
+    std::ostringstream json;
+    cli::write_table(json, t, cli::table_format::json);
+    EXPECT_EQ(json.str(), "[\n {\"x\": 0.1, \"y\": 0.3333333333333333},\n {\"x\": 1e-300, \"y\": -2.5}\n]\n");
+    EXPECT_THROW(cli::parse_table_format("xml"), std::invalid_argument);
+}
+
+namespace {
+
+std::vector<std::string> lines(const std::string& s) {
+    std::vector<std::string> out;
+    std::istringstream in(s);
+    std::string line;
+    while (std::getline(in, line)) out.push_back(line);
+    return out;
+}
+
+std::vector<double> numbers(const std::string& line) {
+    std::vector<double> v;
+    std::istringstream in(line);
+    std::string field;
+    while (std::getline(in, field, ',')) v.push_back(std::stod(field));
+    return v;
+}
+
+}  // namespace
+
+TEST(Cli, EvalPrintsTheDocumentedColumns) {
+    const auto r = run_cli("eval --theta0 'pi/2,162deg' --order 3 --order 12");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    const auto l = lines(r.out);
+    ASSERT_EQ(l.size(), 3u);
+    EXPECT_EQ(l[0],
+              "theta0,period_exact,period_lowest,period_first,period_second,c1_exact,c3_exact,"
+              "c5_exact,c1_lowest,c1_first,c3_first,c1_second,c3_second,c5_second,c1_poly,c3_poly,"
+              "c5_poly,period_order3,period_order12");
+    const auto row = numbers(l[1]);
+    ASSERT_EQ(row.size(), 19u);
+    EXPECT_EQ(row[0], pi / 2);
+    const exact_solution e(pi / 2);
+    EXPECT_EQ(row[1], e.period_ratio());  // round-trips exactly
+    EXPECT_EQ(row[5], e.coefficient(0));
+    EXPECT_EQ(row[4], second_order(pi / 2).period_ratio());
+    EXPECT_EQ(row[18], iterated(pi / 2, 12).period_ratio());
+    EXPECT_EQ(numbers(l[2])[0], 0.9 * pi);
+}
+
+TEST(Cli, EvalJson) {
+    const auto r = run_cli("eval --theta0 1 --format json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.substr(0, 15), "[\n {\"theta0\": 1");
+    EXPECT_NE(r.out.find("\"c5_poly\": "), std::string::npos);
+}
+
+TEST(Cli, TrajectoryMethodsAtTheSamePhysicalTime) {
+    const auto r = run_cli("trajectory --theta0 9pi/10 --method second --at 0,0.25,0.5");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto l = lines(r.out);
+    ASSERT_EQ(l.size(), 4u);
+    EXPECT_EQ(l[0], "t_over_T,theta");
+    const exact_solution e(9 * pi / 10);
+    const auto s = second_order(9 * pi / 10);
+    EXPECT_EQ(numbers(l[2])[1], s.theta(0.25 * 4 * e.quarter_period()));
+
+    const auto x = run_cli("trajectory --theta0 9pi/10 --samples 5 --periods 2");
+    ASSERT_EQ(x.status, 0) << x.err;
+    const auto xl = lines(x.out);
+    ASSERT_EQ(xl.size(), 6u);
+    EXPECT_EQ(numbers(xl[3]), (std::vector<double>{1.0, 9 * pi / 10}));
+    EXPECT_EQ(numbers(xl[2]), (std::vector<double>{0.5, -9 * pi / 10}));
+
+    for (const char* m : {"exact", "harmonic", "lowest", "first", "second", "polynomial"}) {
+        const auto y = run_cli(std::string("trajectory --theta0 1 --samples 3 --method ") + m);
+        EXPECT_EQ(y.status, 0) << m << y.err;
+        EXPECT_EQ(lines(y.out).size(), 4u);
+    }
+    const auto o = run_cli("trajectory --theta0 1 --method order --order 6 --at 0.1 --format json");
+    EXPECT_EQ(o.status, 0) << o.err;
+    EXPECT_NE(o.out.find("\"t_over_T\": 0.1"), std::string::npos);
+}
+
+TEST(Cli, HelpTeaches) {
+    for (const char* args : {"--help", "eval --help", "trajectory --help"}) {
+        const auto r = run_cli(args);
+        EXPECT_EQ(r.status, 0) << args;
+        EXPECT_NE(r.out.find("Example"), std::string::npos) << args;
+        EXPECT_NE(r.out.find("9pi/10"), std::string::npos) << args;
+    }
+}
+
+TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
+    const char* cases[] = {
+        "eval --theta0 0",
+        "eval --theta0 -1",
+        "eval --theta0 pi",
+        "eval --theta0 4",
+        "eval --theta0 nan",
+        "eval --theta0 inf",
+        "eval --theta0 ''",
+        "eval --theta0 abc",
+        "eval --theta0 pi/0",
+        "eval --theta0 1e999",
+        "eval --theta0 '1,,2'",
+        "eval --theta0 1 --order -1",
+        "eval --theta0 1 --order 201",
+        "eval --theta0 1 --order x",
+        "eval --theta0 1 --format xml",
+        "eval",
+        "eval --theta0 1 --bogus",
+        "frobnicate",
+        "",
+        "trajectory --theta0 1 --method fancy --samples 3",
+        "trajectory --theta0 1 --method order --samples 3",
+        "trajectory --theta0 1 --method order --order 999 --samples 3",
+        "trajectory --theta0 1 --method first --order 3 --samples 3",
+        "trajectory --theta0 1 --samples 1",
+        "trajectory --theta0 1 --samples 0",
+        "trajectory --theta0 1 --samples 100000000",
+        "trajectory --theta0 1 --samples 3 --periods 0",
+        "trajectory --theta0 1 --samples 3 --periods -1",
+        "trajectory --theta0 1 --samples 3 --periods nan",
+        "trajectory --theta0 1 --at 0.1,abc",
+        "trajectory --theta0 1 --at ''",
+        "trajectory --theta0 1",
+        "trajectory --theta0 1 --at 0.1 --samples 3",
+        "trajectory --theta0 1,2 --at 0.1",
+        "trajectory --theta0 pi --at 0.1",
+    };
+    for (const char* args : cases) {
+        const auto r = run_cli(args);
+        EXPECT_NE(r.status, 0) << args;
+        EXPECT_EQ(r.out, "") << args;
+        const auto l = lines(r.err);
+        ASSERT_EQ(l.size(), 1u) << args << "\n" << r.err;
+        EXPECT_EQ(l[0].rfind("pendulum-figures: error: ", 0), 0u) << l[0];
+    }
+    const auto r = run_cli("eval --theta0 pi/0");
+    EXPECT_NE(r.err.find("'pi/0'"), std::string::npos) << r.err;
+    const auto p = run_cli("eval --theta0 3.5");
+    EXPECT_NE(p.err.find("between 0 and pi"), std::string::npos) << p.err;
+    EXPECT_NE(p.err.find("3.5"), std::string::npos) << p.err;
+}

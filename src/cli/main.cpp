@@ -1,6 +1,9 @@
 // pendulum-figures: the command line. Parsing and validation only; the work is in the libraries.
 #include "cli/angle.hpp"
 #include "cli/table.hpp"
+#include "figures/catalog.hpp"
+#include "plot/output.hpp"
+#include "plot/theme.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
@@ -8,8 +11,13 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <mutex>
+#include <thread>
+#include <unistd.h>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -187,6 +195,185 @@ cli::table trajectory_table(const trajectory_options& o, bool order_given, bool 
     return t;
 }
 
+struct render_options {
+    std::vector<std::string> ids;
+    bool all = false;
+    std::string dir = ".";
+    std::string formats = "pdf,png";
+    std::string theme = "paper";
+    double dpi = 300;
+    std::string theta0;
+    bool paper_files = false;
+};
+
+/// One file to write: a figure (or one panel of it, for --paper-files) in one format.
+struct render_job {
+    const figures::entry* entry;
+    int panel;  // -1: the whole figure
+    std::filesystem::path path;
+    std::string format;
+};
+
+/// Checks that dir exists and can be written to, naming it otherwise.
+void check_output_dir(const std::string& dir) {
+    std::error_code ec;
+    if (!std::filesystem::exists(dir, ec)) throw usage_error("output directory '" + dir + "' does not exist");
+    if (!std::filesystem::is_directory(dir, ec)) throw usage_error("output path '" + dir + "' is not a directory");
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+        throw usage_error("output directory '" + dir + "' is not writable");
+    }
+}
+
+std::vector<const figures::entry*> selected_figures(const std::vector<std::string>& ids, bool all) {
+    if (all && !ids.empty()) throw usage_error("give figure ids or --all, not both");
+    if (!all && ids.empty()) throw usage_error("name the figures to render, or use --all (see 'list')");
+    std::vector<const figures::entry*> chosen;
+    if (all) {
+        for (const auto& e : figures::catalog()) chosen.push_back(&e);
+        return chosen;
+    }
+    for (const auto& id : ids) {
+        const auto* e = &figures::find(id);
+        if (std::find(chosen.begin(), chosen.end(), e) == chosen.end()) chosen.push_back(e);
+    }
+    return chosen;
+}
+
+/// A figure with one of its panels alone, sized as the paper's LaTeX includes it.
+plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
+    plot::figure one;
+    one.panel_width_cm = width_cm;
+    one.panel_aspect = f.panel_aspect;
+    one.panels.push_back(f.panels.at(panel));
+    one.panels.back().legend = f.panels.front().legend == plot::legend_place::none
+                                   ? plot::legend_place::none
+                                   : plot::legend_place::automatic;
+    return one;
+}
+
+int run_render(const render_options& o) {
+    const auto chosen = selected_figures(o.ids, o.all);
+    std::vector<std::string> formats;
+    for (const auto& f : cli::split_list(o.formats)) {
+        plot::check_format(f);
+        if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
+    }
+    const plot::theme theme = plot::theme_by_name(o.theme);
+    if (!(o.dpi >= plot::min_dpi && o.dpi <= plot::max_dpi)) {
+        throw usage_error("--dpi " + format_double(o.dpi) + ": must be between " + format_double(plot::min_dpi) +
+                          " and " + format_double(plot::max_dpi));
+    }
+    figures::build_options build;
+    if (!o.theta0.empty()) build.amplitudes = parse_amplitudes(o.theta0);
+    check_output_dir(o.dir);
+
+    std::vector<render_job> jobs;
+    for (const auto* e : chosen) {
+        if (o.paper_files) {
+            for (std::size_t i = 0; i < e->paper_files.size(); ++i) {
+                for (const auto& f : formats) {
+                    jobs.push_back({e, static_cast<int>(i), std::filesystem::path(o.dir) / (e->paper_files[i] + "." + f), f});
+                }
+            }
+        } else {
+            for (const auto& f : formats) jobs.push_back({e, -1, std::filesystem::path(o.dir) / (e->id + "." + f), f});
+        }
+    }
+    if (jobs.empty()) throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
+
+    // Figures are independent: build and write them on every core. Each file is complete or
+    // absent; the first error is reported once all workers stop.
+    std::vector<const figures::entry*> unique(chosen);
+    std::vector<plot::figure> built(unique.size());
+    std::atomic<std::size_t> next{0};
+    std::mutex error_mutex;
+    std::string first_error;
+    auto work = [&](auto&& task, std::size_t count) {
+        next = 0;
+        auto loop = [&] {
+            for (std::size_t i = next++; i < count; i = next++) {
+                try {
+                    task(i);
+                } catch (const std::exception& e) {
+                    std::lock_guard lock(error_mutex);
+                    if (first_error.empty()) first_error = e.what();
+                }
+            }
+        };
+        const unsigned n = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), count));
+        std::vector<std::thread> threads;
+        for (unsigned t = 1; t < n; ++t) threads.emplace_back(loop);
+        loop();
+        for (auto& t : threads) t.join();
+    };
+    work([&](std::size_t i) { built[i] = figures::build(*unique[i], build); }, unique.size());
+    if (first_error.empty()) {
+        work([&](std::size_t i) {
+            const auto& job = jobs[i];
+            const auto at = std::find(unique.begin(), unique.end(), job.entry) - unique.begin();
+            const plot::figure& f = built[at];
+            plot::save(job.panel < 0 ? f : single_panel(f, job.panel, job.entry->paper_width_cm), theme, job.path,
+                       plot::output_options{o.dpi});
+        }, jobs.size());
+    }
+    if (!first_error.empty()) {
+        std::cerr << "pendulum-figures: error: " << first_error << "\n";
+        return 1;
+    }
+    return 0;
+}
+
+std::string list_text() {
+    std::ostringstream out;
+    for (const auto& e : figures::catalog()) {
+        std::string id = e.id + (e.alias.empty() ? "" : " (" + e.alias + ")");
+        out << id << std::string(id.size() < 28 ? 28 - id.size() : 1, ' ') << e.paper_figure
+            << std::string(e.paper_figure.size() < 8 ? 8 - e.paper_figure.size() : 1, ' ') << e.description << "\n";
+    }
+    return out.str();
+}
+
+/// Series labels are markup; CSV wants plain text.
+std::string plain_text(const std::string& markup) {
+    std::string out;
+    bool in_tag = false;
+    for (char c : markup) {
+        if (c == '<') in_tag = true;
+        else if (c == '>') in_tag = false;
+        else if (!in_tag) out += c;
+    }
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}}) {
+        for (std::size_t pos; (pos = out.find(from)) != std::string::npos;) out.replace(pos, from.size(), to);
+    }
+    return out;
+}
+
+std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string figure_data(const std::string& id, const std::string& theta0) {
+    const auto& e = figures::find(id);
+    figures::build_options build;
+    if (!theta0.empty()) build.amplitudes = parse_amplitudes(theta0);
+    const auto f = figures::build(e, build);
+    std::ostringstream out;
+    out << "panel,series,x,y\n";
+    for (std::size_t p = 0; p < f.panels.size(); ++p) {
+        const std::string panel(1, static_cast<char>('a' + p));
+        for (const auto& s : f.panels[p].data) {
+            const std::string name = csv_field(plain_text(s.label));
+            for (std::size_t i = 0; i < s.x.size(); ++i) {
+                out << panel << ',' << name << ',' << format_double(s.x[i]) << ',' << format_double(s.y[i]) << '\n';
+            }
+        }
+    }
+    return out.str();
+}
+
 const char* const angle_help =
     "Angles are expressions in radians: 1.2, pi/2, 9pi/10, 9*pi/10, 0.9pi, pi-1e-6, or degrees "
     "with deg: 162deg. A LIST is comma-separated: --theta0 'pi/3,pi/2,162deg'.";
@@ -205,6 +392,8 @@ int main(int argc, char** argv) {
                "  pendulum-figures eval --theta0 pi/2\n"
                "  pendulum-figures eval --theta0 'pi/3,pi/2,9pi/10' --order 4 --order 12 --format json\n"
                "  pendulum-figures trajectory --theta0 162deg --method first --samples 101\n"
+               "  pendulum-figures list\n"
+               "  pendulum-figures render --all -o figures -f pdf,png\n"
                "\nRun 'pendulum-figures COMMAND --help' for the options of each command.");
 
     eval_options ev;
@@ -255,10 +444,57 @@ int main(int argc, char** argv) {
                  "  pendulum-figures trajectory --theta0 9pi/10 --method second --samples 201 --periods 2\n"
                  "  pendulum-figures trajectory --theta0 pi/2 --method order --order 8 --at 0,0.125,0.25");
 
+    render_options ro;
+    auto* render = app.add_subcommand("render", "Draw figures of the catalog into files (PNG, PDF, SVG, EPS).");
+    render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), e.g. period fig2")->type_name("ID...");
+    render->add_flag("--all", ro.all, "Render every figure of the catalog");
+    render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR");
+    render->add_option("-f,--formats", ro.formats, "Comma-separated formats: png, pdf, svg, eps (default: pdf,png)")
+        ->type_name("LIST");
+    render->add_option("--theme", ro.theme, "paper (default: black and white, serif, paper sizes) or slides (16:9, "
+                                            "large text, colour-blind-safe colours)")
+        ->type_name("NAME");
+    render->add_option("--dpi", ro.dpi, "PNG resolution in dots per inch, 10..2400 (default: 300)")->type_name("N");
+    render->add_option("--theta0", ro.theta0, "Amplitudes of the trajectory figures, a comma-separated LIST")
+        ->type_name("LIST");
+    render->add_flag("--paper-files", ro.paper_files,
+                     "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
+    render->footer(std::string("\n") + angle_help +
+                   "\n\nFiles are DIR/ID.EXT (or the paper's names with --paper-files). Each file is written "
+                   "under a temporary name and renamed, so a failed run never leaves a partial figure. Set "
+                   "SOURCE_DATE_EPOCH to stamp PDF and EPS files with that date; otherwise they carry none.\n\n"
+                   "Examples:\n"
+                   "  pendulum-figures render --all -o figures -f pdf,png\n"
+                   "  pendulum-figures render fig2 --theta0 170deg --theme slides -f png --dpi 150\n"
+                   "  pendulum-figures render --all --paper-files -f eps -o paper/");
+
+    auto* list = app.add_subcommand("list", "List the figures: id, figure of the paper, description.");
+
+    std::string data_id;
+    std::string data_file;
+    std::string data_theta0;
+    auto* data = app.add_subcommand("data", "Print the data of a figure as CSV: panel,series,x,y.");
+    data->add_option("id", data_id, "Figure id or alias (see 'list')")->required()->type_name("ID");
+    data->add_option("-o,--output", data_file, "Write to FILE instead of standard output")->type_name("FILE");
+    data->add_option("--theta0", data_theta0, "Amplitudes of a trajectory figure, a comma-separated LIST")
+        ->type_name("LIST");
+    data->footer("\nOne row per plotted point; panels are a, b, c, ... as in the paper's captions.\n\n"
+                 "Example:\n  pendulum-figures data period -o period.csv");
+
     try {
         app.parse(argc, argv);
         std::ostringstream out;
-        if (*eval) {
+        if (*render) return run_render(ro);
+        if (*list) {
+            out << list_text();
+        } else if (*data) {
+            const std::string csv = figure_data(data_id, data_theta0);
+            if (!data_file.empty()) {
+                plot::write_atomically(data_file, csv);
+                return 0;
+            }
+            out << csv;
+        } else if (*eval) {
             cli::write_table(out, eval_table(ev), cli::parse_table_format(ev.format));
         } else if (*traj) {
             if (std::find(method_names.begin(), method_names.end(), tr.method) == method_names.end()) {
@@ -287,10 +523,10 @@ int main(int argc, char** argv) {
         if (app.get_subcommands().empty()) {
             // No command, or an unknown word where the command should be.
             if (argc < 2) {
-                message = "a command is required: eval or trajectory (see --help)";
+                message = "a command is required: eval, trajectory, list, render or data (see --help)";
             } else if (argv[1][0] != '-') {
                 message = std::string("unknown command '") + argv[1] +
-                          "'; commands: eval, trajectory (see --help)";
+                          "'; commands: eval, trajectory, list, render, data (see --help)";
             }
         }
         std::cerr << "pendulum-figures: error: " << message << "\n";

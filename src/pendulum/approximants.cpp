@@ -123,13 +123,17 @@ std::vector<double> project_sine_converged(const std::vector<double>& c, int cou
 }  // namespace
 
 fourier_solution iterated(double theta0, int order) {
+    return std::move(iterated_sequence(theta0, order).back());
+}
+
+std::vector<fourier_solution> iterated_sequence(double theta0, int order) {
     check_amplitude(theta0);
     if (order < 0 || order > max_order) {
         throw domain_error("order must be between 0 and " + std::to_string(max_order) + ", got " +
                            std::to_string(order));
     }
+    std::vector<fourier_solution> levels;
     std::vector<double> c{theta0};
-    double lambda = 1.0;
     for (int level = 0; level <= order; ++level) {
         const int count = level + 1;
         std::vector<double> C;
@@ -144,11 +148,12 @@ fourier_solution iterated(double theta0, int order) {
         }
         double sum = 0.0;
         for (int k = 0; k < count; ++k) sum += C[k] / ((2.0 * k + 1) * (2.0 * k + 1));
-        lambda = sum / theta0;
+        const double lambda = sum / theta0;
         c.assign(count, 0.0);
         for (int k = 0; k < count; ++k) c[k] = C[k] / ((2.0 * k + 1) * (2.0 * k + 1) * lambda);
+        levels.push_back({std::sqrt(lambda), c});
     }
-    return {std::sqrt(lambda), std::move(c)};
+    return levels;
 }
 
 }  // namespace pendulum

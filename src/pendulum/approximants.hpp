@@ -37,6 +37,9 @@ fourier_solution polynomial(double theta0);
 /// sin(theta) exactly; orders 0 and 1 equal lowest_order() and first_order().
 fourier_solution iterated(double theta0, int order);
 
+/// Every level of the iteration, 0 to `order`: element n is iterated(theta0, n).
+std::vector<fourier_solution> iterated_sequence(double theta0, int order);
+
 /// (w/w0)^2 = 2 J1(x) / x, the "besinc" function of optics (1 at x = 0).
 double besinc(double x);
 

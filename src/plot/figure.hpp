@@ -1,0 +1,68 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace plot {
+
+/// How a series' line is drawn.
+enum class line_style { none, solid, dashed, dotted, dash_dot };
+
+/// How a series' points are marked.
+enum class marker_style { none, open_circle };
+
+/// One curve or set of points, with its legend entry.
+struct series {
+    std::string label;                      ///< legend text (Pango markup); empty: no entry
+    std::vector<double> x;                  ///< abscissae
+    std::vector<double> y;                  ///< ordinates; non-finite values break the line
+    line_style line = line_style::solid;    ///< line style
+    marker_style marker = marker_style::none;  ///< marker
+    int color = 0;                          ///< index into the theme's palette
+};
+
+/// Axis scale.
+enum class scale { linear, log };
+
+/// Tick locator of an axis.
+enum class tick_kind { nice, multiples_of_pi };
+
+/// One axis: label, range, scale and ticks.
+struct axis {
+    std::string label;                  ///< axis label (Pango markup)
+    std::optional<double> min;          ///< lower limit; from the data when empty
+    std::optional<double> max;          ///< upper limit; from the data when empty
+    scale kind = scale::linear;         ///< linear or logarithmic
+    tick_kind ticks = tick_kind::nice;  ///< tick locator
+    int max_ticks = 6;                  ///< at most this many major ticks
+    double margin = 0.04;               ///< fraction of the data range added to free limits
+    bool round_limits = false;          ///< move free limits out to the enclosing ticks
+};
+
+/// Where a legend goes; automatic picks a corner free of data, else above the plot.
+enum class legend_place { automatic, none };
+
+/// One plotting area with its axes, series and legend.
+struct panel {
+    axis x;                               ///< horizontal axis
+    axis y;                               ///< vertical axis
+    std::vector<series> data;             ///< series, drawn in order
+    std::string label;                    ///< panel label such as "(a)"; empty for none
+    legend_place legend = legend_place::automatic;  ///< legend placement
+};
+
+/// A grid of panels with a physical size.
+struct figure {
+    int rows = 1;                  ///< grid rows
+    int cols = 1;                  ///< grid columns
+    double panel_width_cm = 6.0;   ///< width of one panel (paper theme)
+    double panel_aspect = 0.75;    ///< panel height / width (paper theme)
+    std::vector<panel> panels;     ///< row-major, rows * cols at most
+    bool shared_legend = false;    ///< one legend, in the first panel with room inside the axes
+};
+
+/// Escapes text for use inside Pango markup (&, <, >, quotes).
+std::string escape_markup(const std::string& text);
+
+}  // namespace plot

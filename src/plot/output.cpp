@@ -1,0 +1,304 @@
+#include "plot/output.hpp"
+
+#include "plot/handles.hpp"
+#include "plot/render.hpp"
+
+#include <cairo-pdf.h>
+#include <cairo-ps.h>
+#include <cairo-svg.h>
+#include <png.h>
+#include <zlib.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fcntl.h>
+#include <map>
+#include <optional>
+#include <regex>
+#include <stdexcept>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace plot {
+
+namespace {
+
+/// SOURCE_DATE_EPOCH as a UTC time, if set and valid.
+std::optional<std::tm> source_date() {
+    const char* text = std::getenv("SOURCE_DATE_EPOCH");
+    if (!text || !*text) return std::nullopt;
+    char* end = nullptr;
+    errno = 0;
+    const long long seconds = std::strtoll(text, &end, 10);
+    if (errno != 0 || *end != '\0' || seconds < 0) return std::nullopt;
+    const std::time_t t = static_cast<std::time_t>(seconds);
+    std::tm tm{};
+    if (!gmtime_r(&t, &tm)) return std::nullopt;
+    return tm;
+}
+
+cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
+    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+}
+
+void check_surface(cairo_surface_t* s, std::string_view format) {
+    const cairo_status_t status = cairo_surface_status(s);
+    if (status != CAIRO_STATUS_SUCCESS) {
+        throw std::runtime_error("cannot render " + std::string(format) + ": " + cairo_status_to_string(status));
+    }
+}
+
+void draw_on(cairo_surface_t* surface, const figure& fig, const theme& th, page_size size, double scale,
+             std::string_view format) {
+    check_surface(surface, format);
+    context_ptr cr(cairo_create(surface));
+    cairo_scale(cr.get(), scale, scale);
+    draw_figure(cr.get(), fig, th, size);
+    const cairo_status_t status = cairo_status(cr.get());
+    if (status != CAIRO_STATUS_SUCCESS) {
+        throw std::runtime_error("cannot render " + std::string(format) + ": " + cairo_status_to_string(status));
+    }
+}
+
+std::string render_vector(const figure& fig, const theme& th, std::string_view format) {
+    const page_size size = figure_size(fig, th);
+    std::string bytes;
+    surface_ptr surface;
+    if (format == "pdf") {
+        surface.reset(cairo_pdf_surface_create_for_stream(append_bytes, &bytes, size.width_pt, size.height_pt));
+        check_surface(surface.get(), format);
+        if (const auto tm = source_date()) {
+            char date[32];
+            std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &*tm);
+            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, date);
+        } else {
+            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, "");
+        }
+    } else if (format == "svg") {
+        surface.reset(cairo_svg_surface_create_for_stream(append_bytes, &bytes, size.width_pt, size.height_pt));
+        check_surface(surface.get(), format);
+        cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PT);
+    } else {
+        surface.reset(cairo_ps_surface_create_for_stream(append_bytes, &bytes, size.width_pt, size.height_pt));
+        check_surface(surface.get(), format);
+        cairo_ps_surface_set_eps(surface.get(), 1);
+    }
+    draw_on(surface.get(), fig, th, size, 1.0, format);
+    cairo_surface_finish(surface.get());
+    check_surface(surface.get(), format);
+    return bytes;
+}
+
+/// Cairo numbers SVG surface ids from a process-wide counter; renumber them in order of
+/// appearance so that the file does not depend on what else the process drew.
+std::string renumber_svg_ids(const std::string& svg) {
+    static const std::regex id("surface[0-9]+");
+    std::map<std::string, int> seen;
+    std::string out;
+    auto last = svg.cbegin();
+    for (std::sregex_iterator it(svg.begin(), svg.end(), id), end; it != end; ++it) {
+        out.append(last, svg.cbegin() + it->position());
+        const auto [pos, added] = seen.emplace(it->str(), static_cast<int>(seen.size()) + 1);
+        out += "surface" + std::to_string(pos->second);
+        last = svg.cbegin() + it->position() + it->length();
+    }
+    out.append(last, svg.cend());
+    return out;
+}
+
+/// Cairo writes the clock time as %%CreationDate with no way to set it: use
+/// SOURCE_DATE_EPOCH, or drop the line (it is optional in DSC).
+std::string fix_eps_date(const std::string& eps) {
+    const std::string key = "%%CreationDate:";
+    const auto start = eps.find(key);
+    if (start == std::string::npos) return eps;
+    const auto end = eps.find('\n', start);
+    std::string line;
+    if (const auto tm = source_date()) {
+        char date[64];
+        std::strftime(date, sizeof date, "%a %b %e %H:%M:%S %Y", &*tm);
+        line = key + " " + date + "\n";
+    }
+    return eps.substr(0, start) + line + (end == std::string::npos ? "" : eps.substr(end + 1));
+}
+
+struct png_sink {
+    std::string bytes;
+};
+
+void png_write_bytes(png_structp png, png_bytep data, png_size_t length) {
+    static_cast<png_sink*>(png_get_io_ptr(png))->bytes.append(reinterpret_cast<const char*>(data), length);
+}
+
+void png_flush_nothing(png_structp) {}
+
+/// Encodes rows with libpng. Kept free of C++ objects with destructors because libpng reports
+/// errors by longjmp. Returns false on failure.
+bool encode_png(png_sink* sink, png_bytepp rows, png_uint_32 width, png_uint_32 height, int color_type,
+                png_colorp palette, int palette_size, png_uint_32 pixels_per_metre) {
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    if (!png) return false;
+    png_infop info = png_create_info_struct(png);
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return false;
+    }
+    png_set_write_fn(png, sink, png_write_bytes, png_flush_nothing);
+    // Line art: long runs of one value. Run-length deflate with the Sub filter is several
+    // times faster than the default settings and gives smaller files for these images.
+    png_set_compression_level(png, 6);
+    png_set_compression_strategy(png, Z_RLE);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+    png_set_IHDR(png, info, width, height, 8, color_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
+                 PNG_FILTER_TYPE_BASE);
+    if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_PLTE(png, info, palette, palette_size);
+    png_set_pHYs(png, info, pixels_per_metre, pixels_per_metre, PNG_RESOLUTION_METER);
+    png_write_info(png, info);
+    png_write_image(png, rows);
+    png_write_end(png, info);
+    png_destroy_write_struct(&png, &info);
+    return true;
+}
+
+std::string render_png(const figure& fig, const theme& th, double dpi) {
+    const page_size size = figure_size(fig, th);
+    const double scale = dpi / 72.0;
+    const int width = static_cast<int>(std::lround(size.width_pt * scale));
+    const int height = static_cast<int>(std::lround(size.height_pt * scale));
+    if (width < 1 || height < 1 || static_cast<double>(width) * height > 4e8) {
+        throw std::invalid_argument("a PNG of " + std::to_string(width) + " x " + std::to_string(height) +
+                                    " pixels is out of range; choose another --dpi");
+    }
+    surface_ptr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
+    draw_on(surface.get(), fig, th, size, scale, "png");
+    cairo_surface_flush(surface.get());
+    const unsigned char* data = cairo_image_surface_get_data(surface.get());
+    const int stride = cairo_image_surface_get_stride(surface.get());
+
+    // Pick the smallest exact pixel format: grey, a palette of at most 256 colours, or RGB.
+    bool grey = true;
+    std::map<std::uint32_t, int> colours;
+    for (int y = 0; y < height && (grey || colours.size() <= 256); ++y) {
+        const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+        for (int x = 0; x < width; ++x) {
+            const std::uint32_t p = row[x] & 0xffffffu;
+            const unsigned r = p >> 16, g = (p >> 8) & 0xff, b = p & 0xff;
+            if (grey && (r != g || g != b)) grey = false;
+            if (!grey && colours.size() <= 256) colours.emplace(p, 0);
+            if (!grey && colours.size() > 256) break;
+        }
+    }
+    int color_type = PNG_COLOR_TYPE_RGB;
+    int channels = 3;
+    std::vector<png_color> palette;
+    if (grey) {
+        color_type = PNG_COLOR_TYPE_GRAY;
+        channels = 1;
+    } else if (colours.size() <= 256) {
+        color_type = PNG_COLOR_TYPE_PALETTE;
+        channels = 1;
+        for (auto& [p, index] : colours) {
+            index = static_cast<int>(palette.size());
+            palette.push_back(png_color{static_cast<png_byte>(p >> 16), static_cast<png_byte>((p >> 8) & 0xff),
+                                        static_cast<png_byte>(p & 0xff)});
+        }
+    }
+    std::vector<png_byte> pixels(static_cast<std::size_t>(width) * height * channels);
+    std::vector<png_bytep> rows(height);
+    for (int y = 0; y < height; ++y) {
+        const auto* src = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+        png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width * channels;
+        rows[y] = dst;
+        for (int x = 0; x < width; ++x) {
+            const std::uint32_t p = src[x] & 0xffffffu;
+            if (color_type == PNG_COLOR_TYPE_GRAY) {
+                dst[x] = static_cast<png_byte>(p & 0xff);
+            } else if (color_type == PNG_COLOR_TYPE_PALETTE) {
+                dst[x] = static_cast<png_byte>(colours.find(p)->second);
+            } else {
+                dst[3 * x] = static_cast<png_byte>(p >> 16);
+                dst[3 * x + 1] = static_cast<png_byte>((p >> 8) & 0xff);
+                dst[3 * x + 2] = static_cast<png_byte>(p & 0xff);
+            }
+        }
+    }
+    png_sink sink;
+    const auto ppm = static_cast<png_uint_32>(std::lround(dpi / 0.0254));
+    if (!encode_png(&sink, rows.data(), width, height, color_type, palette.data(),
+                    static_cast<int>(palette.size()), ppm)) {
+        throw std::runtime_error("cannot encode PNG");
+    }
+    return std::move(sink.bytes);
+}
+
+}  // namespace
+
+std::vector<std::string> format_names() { return {"png", "pdf", "svg", "eps"}; }
+
+void check_format(std::string_view format) {
+    for (const auto& f : format_names()) {
+        if (f == format) return;
+    }
+    throw std::invalid_argument("unknown format '" + std::string(format) + "'; formats: png, pdf, svg, eps");
+}
+
+std::string render(const figure& fig, const theme& th, std::string_view format, const output_options& options) {
+    check_format(format);
+    if (format == "png") {
+        if (!(options.dpi >= min_dpi && options.dpi <= max_dpi)) {
+            throw std::invalid_argument("dpi must be between 10 and 2400");
+        }
+        return render_png(fig, th, options.dpi);
+    }
+    std::string bytes = render_vector(fig, th, format);
+    if (format == "svg") return renumber_svg_ids(bytes);
+    if (format == "eps") return fix_eps_date(bytes);
+    return bytes;
+}
+
+void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
+    const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    std::string temp = (dir / ("." + path.filename().string() + ".XXXXXX")).string();
+    const int fd = ::mkstemp(temp.data());
+    if (fd < 0) {
+        throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+    }
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            const int e = errno;
+            ::close(fd);
+            ::unlink(temp.c_str());
+            throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(e));
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    // mkstemp makes the file private; figures are ordinary files. The umask is read once:
+    // reading it means setting it, which must not race with other writers.
+    static const mode_t mask = [] {
+        const mode_t m = ::umask(022);
+        ::umask(m);
+        return m;
+    }();
+    ::fchmod(fd, 0666 & ~mask);
+    if (::close(fd) != 0 || std::rename(temp.c_str(), path.c_str()) != 0) {
+        const int e = errno;
+        ::unlink(temp.c_str());
+        throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(e));
+    }
+}
+
+void save(const figure& fig, const theme& th, const std::filesystem::path& path, const output_options& options) {
+    std::string ext = path.extension().string();
+    if (!ext.empty()) ext.erase(0, 1);
+    write_atomically(path, render(fig, th, ext, options));
+}
+
+}  // namespace plot

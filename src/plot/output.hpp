@@ -1,0 +1,40 @@
+#pragma once
+
+#include "plot/figure.hpp"
+#include "plot/theme.hpp"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace plot {
+
+/// Options that apply when a figure is written.
+struct output_options {
+    double dpi = 300;  ///< raster resolution (PNG)
+};
+
+/// The smallest and largest accepted --dpi.
+inline constexpr double min_dpi = 10;
+/// The largest accepted dpi.
+inline constexpr double max_dpi = 2400;
+
+/// The supported output formats, as file extensions: png, pdf, svg, eps.
+std::vector<std::string> format_names();
+
+/// Throws std::invalid_argument listing the supported formats unless `format` is one.
+void check_format(std::string_view format);
+
+/// Renders the figure in the format and returns the file's bytes. The same input always
+/// gives the same bytes: dates come from SOURCE_DATE_EPOCH or are left out.
+std::string render(const figure& fig, const theme& th, std::string_view format, const output_options& options);
+
+/// Writes bytes to path through a temporary file in the same directory and a rename, so the
+/// file is either the old one or the complete new one. Throws std::runtime_error naming the path.
+void write_atomically(const std::filesystem::path& path, const std::string& bytes);
+
+/// Renders and writes the figure; the format is the path's extension.
+void save(const figure& fig, const theme& th, const std::filesystem::path& path, const output_options& options);
+
+}  // namespace plot

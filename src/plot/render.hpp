@@ -1,0 +1,23 @@
+#pragma once
+
+#include "plot/figure.hpp"
+#include "plot/theme.hpp"
+
+#include <cairo.h>
+
+namespace plot {
+
+/// A page size in points (1/72 inch).
+struct page_size {
+    double width_pt = 0;   ///< width
+    double height_pt = 0;  ///< height
+};
+
+/// The size of a figure drawn with a theme: the theme's fixed size, or the panels' size.
+page_size figure_size(const figure& fig, const theme& th);
+
+/// Draws the figure on cr, whose user units are points, filling [0, w] x [0, h].
+/// Throws std::runtime_error if the theme's font is not installed.
+void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size);
+
+}  // namespace plot

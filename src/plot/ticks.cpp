@@ -1,0 +1,198 @@
+#include "plot/ticks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <stdexcept>
+
+namespace plot {
+
+namespace {
+
+const char* const minus = "\u2212";
+
+/// Integer tick indices i with i*step in [lo, hi] (or enclosing it when expanding).
+std::pair<long long, long long> index_range(double lo, double hi, double step, bool expand) {
+    // A small slack keeps ticks that land on the limits up to rounding.
+    const double slack = 1e-9;
+    const double a = lo / step;
+    const double b = hi / step;
+    if (expand) return {static_cast<long long>(std::floor(a + slack)), static_cast<long long>(std::ceil(b - slack))};
+    return {static_cast<long long>(std::ceil(a - slack)), static_cast<long long>(std::floor(b + slack))};
+}
+
+void widen_if_degenerate(double& lo, double& hi) {
+    if (!std::isfinite(lo) || !std::isfinite(hi)) throw std::invalid_argument("axis range must be finite");
+    if (lo > hi) std::swap(lo, hi);
+    if (hi - lo <= 1e-12 * std::max(std::fabs(lo), std::fabs(hi))) {
+        const double d = lo == 0.0 ? 1.0 : 0.05 * std::fabs(lo);
+        lo -= d;
+        hi += d;
+    }
+}
+
+std::string with_minus(const std::string& s) {
+    if (!s.empty() && s[0] == '-') return minus + s.substr(1);
+    return s;
+}
+
+}  // namespace
+
+double nice_step(double lo, double hi, int max_ticks, bool expand) {
+    max_ticks = std::max(max_ticks, 2);
+    const double raw = (hi - lo) / (max_ticks - 1);
+    const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 2.5, 5.0, 10.0, 20.0}) {
+        const double step = m * decade;
+        const auto [a, b] = index_range(lo, hi, step, expand);
+        if (b - a + 1 <= max_ticks && b - a >= 1) return step;
+    }
+    return 20.0 * decade;
+}
+
+std::vector<std::string> format_linear_labels(const std::vector<double>& ticks, double step) {
+    double largest = 0.0;
+    for (double t : ticks) largest = std::max(largest, std::fabs(t));
+    std::vector<std::string> labels;
+    const bool scientific = largest >= 1e5 || (largest > 0 && largest < 1e-3);
+    int exponent = 0;
+    double scaled_step = step;
+    if (scientific) {
+        exponent = static_cast<int>(std::floor(std::log10(largest)));
+        scaled_step = step / std::pow(10.0, exponent);
+    }
+    // Fewest decimals that show every multiple of the step exactly.
+    int decimals = 0;
+    while (decimals < 12) {
+        const double scaled = scaled_step * std::pow(10.0, decimals);
+        if (std::fabs(scaled - std::round(scaled)) < 1e-6 * scaled) break;
+        ++decimals;
+    }
+    for (double t : ticks) {
+        char buf[64];
+        if (t == 0.0) {
+            labels.emplace_back(scientific ? "0" : (std::snprintf(buf, sizeof buf, "%.*f", decimals, 0.0), buf));
+            continue;
+        }
+        if (!scientific) {
+            std::snprintf(buf, sizeof buf, "%.*f", decimals, t);
+            labels.push_back(with_minus(buf));
+        } else {
+            std::snprintf(buf, sizeof buf, "%.*f", decimals, t / std::pow(10.0, exponent));
+            char ebuf[16];
+            std::snprintf(ebuf, sizeof ebuf, "%d", exponent);
+            labels.push_back(with_minus(buf) + "\u00d710<sup>" + with_minus(ebuf) + "</sup>");
+        }
+    }
+    return labels;
+}
+
+tick_set linear_ticks(double lo, double hi, int max_ticks, bool expand) {
+    widen_if_degenerate(lo, hi);
+    const double step = nice_step(lo, hi, max_ticks, expand);
+    const auto [a, b] = index_range(lo, hi, step, expand);
+    tick_set t;
+    t.lo = expand ? std::min(lo, a * step) : lo;
+    t.hi = expand ? std::max(hi, b * step) : hi;
+    for (long long i = a; i <= b; ++i) t.major.push_back(i == 0 ? 0.0 : static_cast<double>(i) * step);
+    t.labels = format_linear_labels(t.major, step);
+    // AutoMinorLocator: 5 subdivisions for steps 1 and 5, 4 for 2 and 2.5.
+    const double mantissa = step / std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+    const int sub = (std::fabs(mantissa - 2.0) < 1e-9 || std::fabs(mantissa - 2.5) < 1e-9) ? 4 : 5;
+    const double minor_step = step / sub;
+    const auto [ma, mb] = index_range(t.lo, t.hi, minor_step, false);
+    for (long long i = ma; i <= mb; ++i) {
+        if (i % sub != 0) t.minor.push_back(static_cast<double>(i) * minor_step);
+    }
+    return t;
+}
+
+tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
+    widen_if_degenerate(lo, hi);
+    const double pi = 3.14159265358979323846;
+    // Steps as fractions num/den of pi.
+    const int steps[][2] = {{1, 8}, {1, 4}, {1, 2}, {1, 1}, {2, 1}, {4, 1}, {8, 1}};
+    int num = 8;
+    int den = 1;
+    for (const auto& s : steps) {
+        const auto [a, b] = index_range(lo, hi, pi * s[0] / s[1], true);
+        if (b - a + 1 <= std::max(max_ticks, 2)) {
+            num = s[0];
+            den = s[1];
+            break;
+        }
+    }
+    const double step = pi * num / den;
+    const auto [a, b] = index_range(lo, hi, step, expand);
+    tick_set t;
+    t.lo = expand ? std::min(lo, a * step) : lo;
+    t.hi = expand ? std::max(hi, b * step) : hi;
+    for (long long i = a; i <= b; ++i) {
+        // i*num/den pi, reduced.
+        long long p = i * num;
+        long long q = den;
+        const long long g = std::gcd(p < 0 ? -p : p, q);
+        if (g > 0) {
+            p /= g;
+            q /= g;
+        }
+        t.major.push_back(static_cast<double>(p) * pi / static_cast<double>(q));
+        std::string label;
+        if (p == 0) {
+            label = "0";
+        } else {
+            const long long ap = p < 0 ? -p : p;
+            label = (p < 0 ? minus : "") + (ap == 1 ? std::string() : std::to_string(ap)) + "\u03c0" +
+                    (q == 1 ? std::string() : "/" + std::to_string(q));
+        }
+        t.labels.push_back(label);
+    }
+    const double minor_step = step / 2;
+    const auto [ma, mb] = index_range(t.lo, t.hi, minor_step, false);
+    for (long long i = ma; i <= mb; ++i) {
+        if (i % 2 != 0) t.minor.push_back(static_cast<double>(i) * minor_step);
+    }
+    return t;
+}
+
+tick_set log_ticks(double lo, double hi, int max_ticks, bool expand) {
+    if (!(lo > 0) || !(hi > 0) || !std::isfinite(lo) || !std::isfinite(hi)) {
+        throw std::invalid_argument("a logarithmic axis needs a positive, finite range");
+    }
+    if (lo > hi) std::swap(lo, hi);
+    double a = std::log10(lo);
+    double b = std::log10(hi);
+    if (b - a < 1e-9) {
+        a -= 1;
+        b += 1;
+    }
+    long long ea = expand ? static_cast<long long>(std::floor(a + 1e-9)) : static_cast<long long>(std::ceil(a - 1e-9));
+    long long eb = expand ? static_cast<long long>(std::ceil(b - 1e-9)) : static_cast<long long>(std::floor(b + 1e-9));
+    long long every = 1;
+    while ((eb - ea) / every + 1 > std::max(max_ticks, 2)) every *= 2;
+    if (expand) {
+        // Keep the limits on labelled decades.
+        ea = static_cast<long long>(std::floor(static_cast<double>(ea) / every)) * every;
+        eb = static_cast<long long>(std::ceil(static_cast<double>(eb) / every)) * every;
+    }
+    tick_set t;
+    t.lo = expand ? std::pow(10.0, static_cast<double>(ea)) : lo;
+    t.hi = expand ? std::pow(10.0, static_cast<double>(eb)) : hi;
+    for (long long e = ea; e <= eb; ++e) {
+        const double v = std::pow(10.0, static_cast<double>(e));
+        if ((e - ea) % every == 0) {
+            t.major.push_back(v);
+            const std::string exponent = e < 0 ? minus + std::to_string(-e) : std::to_string(e);
+            t.labels.push_back("10<sup>" + exponent + "</sup>");
+        } else {
+            t.minor.push_back(v);
+        }
+        if (every == 1 && eb - ea <= 8 && e < eb) {
+            for (int m = 2; m <= 9; ++m) t.minor.push_back(m * v);
+        }
+    }
+    return t;
+}
+
+}  // namespace plot

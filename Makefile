@@ -14,7 +14,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 DEB_PACKAGES := g++ cmake make pkgconf libgsl-dev libcairo2-dev libpango1.0-dev libcli11-dev \
 	libpng-dev libgtest-dev libbenchmark-dev fonts-cmu poppler-utils
 
-.PHONY: all deps build test bench figures clean
+.PHONY: all deps build test bench figures update-baselines clean
 
 all: build
 
@@ -46,6 +46,17 @@ test: build
 bench: build
 	$(BUILD)/bench_pendulum --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
 	  --benchmark_min_time=0.2
+
+figures: build
+	mkdir -p figures
+	$(BUILD)/pendulum-figures render --all -o figures -f pdf,png
+
+# Regenerates the images the tests compare renders to; run it after a deliberate change
+# to the figures, look at the new images, and commit them.
+update-baselines: build
+	mkdir -p tests/baselines/paper tests/baselines/slides
+	$(BUILD)/pendulum-figures render --all -o tests/baselines/paper -f png --dpi 100
+	$(BUILD)/pendulum-figures render --all -o tests/baselines/slides -f png --dpi 50 --theme slides
 
 clean:
 	rm -rf $(BUILD)

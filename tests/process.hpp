@@ -25,15 +25,14 @@ inline std::string slurp(const std::filesystem::path& p) {
     return s.str();
 }
 
-/// Runs PENDULUM_EXE with `args` (shell syntax) in `cwd`, capturing both streams.
-inline run_result run_cli(const std::string& args, const std::filesystem::path& cwd = ".") {
+/// Runs a shell command line, capturing both streams.
+inline run_result run_command(const std::string& command) {
     const auto dir = std::filesystem::temp_directory_path() /
-                     ("pendulum-cli-" + std::to_string(::getpid()));
+                     ("pendulum-run-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const auto out = dir / "out";
     const auto err = dir / "err";
-    const std::string cmd = "cd '" + cwd.string() + "' && '" + std::string(PENDULUM_EXE) + "' " +
-                            args + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
+    const std::string cmd = "{ " + command + " ; } >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
     const int raw = std::system(cmd.c_str());
     run_result r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -41,6 +40,11 @@ inline run_result run_cli(const std::string& args, const std::filesystem::path& 
     r.err = slurp(err);
     std::filesystem::remove_all(dir);
     return r;
+}
+
+/// Runs PENDULUM_EXE with `args` (shell syntax) in `cwd`, capturing both streams.
+inline run_result run_cli(const std::string& args, const std::filesystem::path& cwd = ".") {
+    return run_command("cd '" + cwd.string() + "' && '" + std::string(PENDULUM_EXE) + "' " + args);
 }
 
 }  // namespace test_support

@@ -358,7 +358,10 @@ std::string csv_field(const std::string& text) {
 std::string figure_data(const std::string& id, const std::string& theta0) {
     const auto& e = figures::find(id);
     figures::build_options build;
-    if (!theta0.empty()) build.amplitudes = parse_amplitudes(theta0);
+    if (!theta0.empty()) {
+        if (!e.takes_amplitudes) throw usage_error("--theta0 applies to trajectory figures, not to " + e.id);
+        build.amplitudes = parse_amplitudes(theta0);
+    }
     const auto f = figures::build(e, build);
     std::ostringstream out;
     out << "panel,series,x,y\n";

@@ -27,6 +27,13 @@ namespace plot {
 
 namespace {
 
+/// strerror, lowercased to match the project's messages ("no such file or directory").
+std::string error_text(int e) {
+    std::string s = std::strerror(e);
+    if (!s.empty() && s[0] >= 'A' && s[0] <= 'Z') s[0] = static_cast<char>(s[0] - 'A' + 'a');
+    return s;
+}
+
 /// SOURCE_DATE_EPOCH as a UTC time, if set and valid.
 std::optional<std::tm> source_date() {
     const char* text = std::getenv("SOURCE_DATE_EPOCH");
@@ -266,7 +273,7 @@ void write_atomically(const std::filesystem::path& path, const std::string& byte
     std::string temp = (dir / ("." + path.filename().string() + ".XXXXXX")).string();
     const int fd = ::mkstemp(temp.data());
     if (fd < 0) {
-        throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
+        throw std::runtime_error("cannot write " + path.string() + ": " + error_text(errno));
     }
     std::size_t done = 0;
     while (done < bytes.size()) {
@@ -276,7 +283,7 @@ void write_atomically(const std::filesystem::path& path, const std::string& byte
             const int e = errno;
             ::close(fd);
             ::unlink(temp.c_str());
-            throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(e));
+            throw std::runtime_error("cannot write " + path.string() + ": " + error_text(e));
         }
         done += static_cast<std::size_t>(n);
     }
@@ -291,7 +298,7 @@ void write_atomically(const std::filesystem::path& path, const std::string& byte
     if (::close(fd) != 0 || std::rename(temp.c_str(), path.c_str()) != 0) {
         const int e = errno;
         ::unlink(temp.c_str());
-        throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(e));
+        throw std::runtime_error("cannot write " + path.string() + ": " + error_text(e));
     }
 }
 

@@ -55,7 +55,7 @@ std::vector<std::string> format_linear_labels(const std::vector<double>& ticks, 
     double largest = 0.0;
     for (double t : ticks) largest = std::max(largest, std::fabs(t));
     std::vector<std::string> labels;
-    const bool scientific = largest >= 1e5 || (largest > 0 && largest < 1e-3);
+    const bool scientific = largest >= 1e5 || (largest > 0 && largest < 1e-2);
     int exponent = 0;
     double scaled_step = step;
     if (scientific) {
@@ -117,7 +117,12 @@ tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
     int den = 1;
     for (const auto& s : steps) {
         const auto [a, b] = index_range(lo, hi, pi * s[0] / s[1], true);
-        if (b - a + 1 <= std::max(max_ticks, 2)) {
+        // Eighths of pi only where quarters would leave fewer than three ticks.
+        const bool too_fine = s[1] == 8 && [&] {
+            const auto [qa, qb] = index_range(lo, hi, pi / 4, true);
+            return qb - qa + 1 >= 3;
+        }();
+        if (!too_fine && b - a + 1 <= std::max(max_ticks, 2)) {
             num = s[0];
             den = s[1];
             break;

@@ -1,0 +1,274 @@
+// Tests of the figure catalog and of the render, list and data commands: the figures hold
+// the right data, match the committed baseline images, and bad input touches no file.
+#include "figures/catalog.hpp"
+#include "pendulum/approximants.hpp"
+#include "pendulum/exact.hpp"
+#include "plot/output.hpp"
+#include "plot/theme.hpp"
+#include "process.hpp"
+
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <set>
+
+using std::numbers::pi;
+namespace fs = std::filesystem;
+using test_support::run_cli;
+
+namespace {
+
+fs::path temp_dir(const std::string& name) {
+    const auto dir = fs::temp_directory_path() / ("pendulum-figures-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::set<std::string> files_in(const fs::path& dir) {
+    std::set<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+    return names;
+}
+
+/// A decoded 8-bit grey image.
+struct grey_image {
+    unsigned width = 0;
+    unsigned height = 0;
+    std::vector<unsigned char> pixels;
+};
+
+grey_image decode(const std::string& png) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    grey_image out;
+    if (!png_image_begin_read_from_memory(&image, png.data(), png.size())) return out;
+    image.format = PNG_FORMAT_GRAY;
+    out.pixels.resize(PNG_IMAGE_SIZE(image));
+    if (!png_image_finish_read(&image, nullptr, out.pixels.data(), 0, nullptr)) return {};
+    out.width = image.width;
+    out.height = image.height;
+    return out;
+}
+
+}  // namespace
+
+TEST(Catalog, EveryFigureOfThePaperAndItsAliases) {
+    const auto& c = figures::catalog();
+    ASSERT_EQ(c.size(), 8u);
+    const char* ids[] = {"c1-lowest", "trajectory-lowest", "coefficients-first", "trajectory-first",
+                         "coefficients-second", "trajectory-second", "period", "convergence"};
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        EXPECT_EQ(c[i].id, ids[i]);
+        if (i < 7) EXPECT_EQ(&figures::find("fig" + std::to_string(i + 1)), &c[i]);
+    }
+    EXPECT_THROW(figures::find("fig8"), std::invalid_argument);
+    for (const auto& e : c) {
+        const auto f = figures::build(e);
+        EXPECT_EQ(f.panels.size(), e.paper_files.empty() ? 1u : e.paper_files.size()) << e.id;
+        EXPECT_LE(f.panels.size(), static_cast<std::size_t>(f.rows * f.cols));
+        for (const auto& p : f.panels) {
+            EXPECT_FALSE(p.x.label.empty());
+            EXPECT_FALSE(p.y.label.empty());
+            EXPECT_FALSE(p.data.empty());
+        }
+    }
+}
+
+TEST(Catalog, PanelsHaveThePapersSizes) {
+    EXPECT_EQ(figures::build(figures::find("fig1")).panel_width_cm, 6.0);
+    EXPECT_EQ(figures::find("fig5").paper_width_cm, 4.3);
+    EXPECT_EQ(figures::find("fig6").paper_width_cm, 4.2);
+    EXPECT_EQ(figures::find("fig2").paper_files.back(), "Fig.Comparison.LowestD");
+    EXPECT_EQ(figures::find("fig6").paper_files.front(), "Fig.Lamb.4a");
+}
+
+TEST(Catalog, DataComeFromTheCore) {
+    // Fig. 1: exact c1 by the paper's quadrature, lowest order c1 = theta0.
+    const auto f1 = figures::build(figures::find("c1-lowest"));
+    const auto& exact = f1.panels[0].data[0];
+    ASSERT_FALSE(exact.x.empty());
+    for (std::size_t i = 0; i < exact.x.size(); ++i) {
+        EXPECT_NEAR(exact.y[i], pendulum::exact_solution(exact.x[i]).coefficient(0), 1e-12);
+    }
+    const auto& lowest = f1.panels[0].data[1];
+    for (std::size_t i = 0; i < lowest.x.size(); ++i) EXPECT_EQ(lowest.y[i], lowest.x[i]);
+
+    // Fig. 7(b): relative error in percent, -0.273 % for lowest order at pi/2.
+    const auto f7 = figures::build(figures::find("period"));
+    const auto& err = f7.panels[1].data[0];
+    EXPECT_EQ(err.label, "lowest order");
+    double at_half_pi = 0;
+    double closest = 10;
+    for (std::size_t i = 0; i < err.x.size(); ++i) {
+        if (std::fabs(err.x[i] - pi / 2) < closest) {
+            closest = std::fabs(err.x[i] - pi / 2);
+            at_half_pi = err.y[i];
+        }
+    }
+    EXPECT_NEAR(at_half_pi, -0.273, 0.01);
+
+    // Trajectories: the exact motion at t/T, and theta(0) = theta0 for every curve.
+    const auto f2 = figures::build(figures::find("fig2"));
+    ASSERT_EQ(f2.panels.size(), 4u);
+    EXPECT_EQ(f2.rows, 2);
+    EXPECT_EQ(f2.cols, 2);
+    for (const auto& s : f2.panels[3].data) EXPECT_NEAR(s.y.front(), 9 * pi / 10, 1e-14);
+    EXPECT_NE(f2.panels[3].label.find("9\u03c0/10"), std::string::npos);
+}
+
+TEST(Catalog, AmplitudesCanBeReplaced) {
+    figures::build_options o;
+    o.amplitudes = {170 * pi / 180};
+    const auto f = figures::build(figures::find("trajectory-first"), o);
+    ASSERT_EQ(f.panels.size(), 1u);
+    EXPECT_EQ(f.rows, 1);
+    EXPECT_EQ(f.cols, 1);
+    EXPECT_NE(f.panels[0].label.find("17\u03c0/18"), std::string::npos);
+    o.amplitudes = {0.5, 1, 1.5, 2, 2.5};
+    const auto g = figures::build(figures::find("trajectory-second"), o);
+    EXPECT_EQ(g.rows, 2);
+    EXPECT_EQ(g.cols, 3);
+}
+
+TEST(Catalog, AmplitudeLabels) {
+    EXPECT_EQ(figures::amplitude_label(pi / 2), "\u03c0/2");
+    EXPECT_EQ(figures::amplitude_label(9 * pi / 10), "9\u03c0/10");
+    EXPECT_EQ(figures::amplitude_label(0.99 * pi), "99\u03c0/100");
+    EXPECT_EQ(figures::amplitude_label(1.0), "1");
+    EXPECT_EQ(figures::amplitude_label(2.5), "2.5");
+}
+
+TEST(Baselines, RenderedFiguresMatchTheCommittedImages) {
+    const std::pair<plot::theme, double> variants[] = {{plot::paper_theme(), 100}, {plot::slides_theme(), 50}};
+    for (const auto& [theme, dpi] : variants) {
+        for (const auto& e : figures::catalog()) {
+            const auto path = fs::path(PENDULUM_BASELINES) / theme.name / (e.id + ".png");
+            ASSERT_TRUE(fs::exists(path)) << path << " (make update-baselines writes it)";
+            const grey_image want = decode(test_support::slurp(path));
+            const grey_image got = decode(plot::render(figures::build(e), theme, "png", {dpi}));
+            ASSERT_GT(want.width, 0u);
+            ASSERT_EQ(got.width, want.width) << e.id;
+            ASSERT_EQ(got.height, want.height) << e.id;
+            // Anti-aliasing may differ between library versions; the drawing may not.
+            std::size_t different = 0;
+            double total = 0;
+            for (std::size_t i = 0; i < want.pixels.size(); ++i) {
+                const int d = std::abs(int(want.pixels[i]) - int(got.pixels[i]));
+                total += d;
+                if (d > 64) ++different;
+            }
+            EXPECT_LT(double(different) / want.pixels.size(), 0.002) << theme.name << " " << e.id;
+            EXPECT_LT(total / want.pixels.size(), 1.0) << theme.name << " " << e.id;
+        }
+    }
+}
+
+TEST(Baselines, ComparisonCanFail) {
+    // The comparison above must notice a changed figure.
+    const auto& e = figures::find("period");
+    auto f = figures::build(e);
+    f.panels[0].data[1].line = plot::line_style::solid;
+    for (double& y : f.panels[0].data[1].y) y *= 1.1;
+    const grey_image want = decode(test_support::slurp(fs::path(PENDULUM_BASELINES) / "paper" / "period.png"));
+    const grey_image got = decode(plot::render(f, plot::paper_theme(), "png", {100}));
+    ASSERT_EQ(got.pixels.size(), want.pixels.size());
+    std::size_t different = 0;
+    for (std::size_t i = 0; i < want.pixels.size(); ++i) different += std::abs(int(want.pixels[i]) - int(got.pixels[i])) > 64;
+    EXPECT_GT(double(different) / want.pixels.size(), 0.002);
+}
+
+TEST(RenderCommand, WritesEveryRequestedFile) {
+    const auto dir = temp_dir("render");
+    auto r = run_cli("render fig1 period -o '" + dir.string() + "' -f png,pdf,svg,eps --dpi 72");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(files_in(dir), (std::set<std::string>{"c1-lowest.eps", "c1-lowest.pdf", "c1-lowest.png", "c1-lowest.svg",
+                                                    "period.eps", "period.pdf", "period.png", "period.svg"}));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    r = run_cli("render --all --paper-files -f eps -o '" + dir.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::set<std::string> expected;
+    for (const auto& e : figures::catalog()) {
+        for (const auto& name : e.paper_files) expected.insert(name + ".eps");
+    }
+    EXPECT_EQ(expected.size(), 19u);
+    EXPECT_EQ(files_in(dir), expected);
+    // Each panel at the width the LaTeX gives it: 4.2 cm for Fig.Lamb.4a.
+    const std::string eps = test_support::slurp(dir / "Fig.Lamb.4a.eps");
+    EXPECT_NE(eps.find("%%BoundingBox: 0 0 120 "), std::string::npos) << eps.substr(0, 300);
+    fs::remove_all(dir);
+}
+
+TEST(RenderCommand, TeacherAmplitude) {
+    const auto dir = temp_dir("teacher");
+    const auto r = run_cli("render fig2 --theta0 170deg --theme slides -f png --dpi 40 -o '" + dir.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(files_in(dir), (std::set<std::string>{"trajectory-lowest.png"}));
+    fs::remove_all(dir);
+}
+
+TEST(RenderCommand, BadInputTouchesNoFile) {
+    const auto dir = temp_dir("bad");
+    // A previous good figure that a failed run must leave alone.
+    ASSERT_EQ(run_cli("render fig1 -f png --dpi 30 -o '" + dir.string() + "'").status, 0);
+    const std::string before = test_support::slurp(dir / "c1-lowest.png");
+    const std::string d = " -o '" + dir.string() + "'";
+    const std::string cases[] = {
+        "render nosuch" + d,
+        "render fig1 nosuch" + d,
+        "render fig1 -f png,gif" + d,
+        "render fig1 -f ''" + d,
+        "render fig1 --theme dark" + d,
+        "render fig1 --dpi 0" + d,
+        "render fig1 --dpi 5000" + d,
+        "render fig1 --dpi abc" + d,
+        "render fig1 --theta0 pi" + d,
+        "render fig1 --theta0 abc" + d,
+        "render fig1 -o '" + (dir / "missing").string() + "'",
+        "render fig1 -o '" + (dir / "c1-lowest.png").string() + "'",
+        "render" + d,
+        "render --all fig1" + d,
+        "render convergence --paper-files" + d,
+        "data nosuch",
+        "data fig1 --theta0 1",
+        "data fig2 --theta0 0",
+    };
+    for (const auto& args : cases) {
+        const auto r = run_cli(args);
+        EXPECT_NE(r.status, 0) << args;
+        EXPECT_EQ(r.out, "") << args;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+        EXPECT_EQ(r.err.rfind("pendulum-figures: error: ", 0), 0u) << r.err;
+    }
+    EXPECT_EQ(files_in(dir), (std::set<std::string>{"c1-lowest.png"}));
+    EXPECT_EQ(test_support::slurp(dir / "c1-lowest.png"), before);
+    const auto missing = run_cli("render fig1 -o '" + (dir / "missing").string() + "'");
+    EXPECT_NE(missing.err.find((dir / "missing").string()), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(ListAndData, ListEveryFigure) {
+    const auto r = run_cli("list");
+    ASSERT_EQ(r.status, 0);
+    for (const auto& e : figures::catalog()) EXPECT_NE(r.out.find(e.id), std::string::npos);
+    EXPECT_NE(r.out.find("Fig. 7"), std::string::npos);
+}
+
+TEST(ListAndData, DataIsCsvOfEverySeries) {
+    const auto r = run_cli("data fig6");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("panel,series,x,y\n", 0), 0u);
+    EXPECT_NE(r.out.find("\na,exact,0,2.827433388230814\n"), std::string::npos);
+    EXPECT_NE(r.out.find("\nc,second order,"), std::string::npos);
+    const auto dir = temp_dir("data");
+    const auto w = run_cli("data period -o '" + (dir / "p.csv").string() + "'");
+    ASSERT_EQ(w.status, 0) << w.err;
+    EXPECT_EQ(w.out, "");
+    EXPECT_EQ(test_support::slurp(dir / "p.csv").rfind("panel,series,x,y\n", 0), 0u);
+    fs::remove_all(dir);
+}

@@ -1,0 +1,261 @@
+// Tests of the plot layer: tick location and labels, output formats, reproducible bytes,
+// atomic writes, and errors.
+#include "plot/figure.hpp"
+#include "plot/output.hpp"
+#include "plot/render.hpp"
+#include "plot/theme.hpp"
+#include "plot/ticks.hpp"
+#include "process.hpp"
+
+#include <glib.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <numbers>
+
+using namespace plot;
+using std::numbers::pi;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A small figure with every kind of series, used by the format tests.
+figure sample_figure() {
+    figure f;
+    f.cols = 2;
+    for (int k = 0; k < 2; ++k) {
+        panel p;
+        p.label = k == 0 ? "(a)" : "(b)";
+        p.x.label = "<i>\u03d1</i><sub>0</sub>";
+        p.y.label = "<i>c</i>\u2032<sub>1</sub>";
+        p.x.ticks = tick_kind::multiples_of_pi;
+        series s{"curve", {}, {}, line_style::dashed, marker_style::none, 1};
+        series m{"points", {}, {}, line_style::none, marker_style::open_circle, 0};
+        for (int i = 0; i <= 50; ++i) {
+            s.x.push_back(pi * i / 50);
+            s.y.push_back(std::sin(pi * i / 50));
+        }
+        for (int i = 0; i <= 10; ++i) {
+            m.x.push_back(pi * i / 10);
+            m.y.push_back(std::sin(pi * i / 10));
+        }
+        p.data = {s, m};
+        f.panels.push_back(p);
+    }
+    return f;
+}
+
+fs::path temp_dir(const std::string& name) {
+    const auto dir = fs::temp_directory_path() / ("pendulum-plot-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+}  // namespace
+
+TEST(Ticks, NiceStepsOnUglyRanges) {
+    auto t = linear_ticks(0, pi, 6, true);
+    EXPECT_EQ(t.major, (std::vector<double>{0, 1, 2, 3, 4}));
+    EXPECT_EQ(t.labels, (std::vector<std::string>{"0", "1", "2", "3", "4"}));
+    t = linear_ticks(-1e-3, 1e-3, 5, true);
+    ASSERT_EQ(t.major.size(), 5u);
+    EXPECT_EQ(t.major[2], 0.0);
+    EXPECT_FALSE(std::signbit(t.major[2]));
+    EXPECT_EQ(t.labels[0], "\u22121.0\u00d710<sup>\u22123</sup>");
+    EXPECT_EQ(t.labels[1], "\u22120.5\u00d710<sup>\u22123</sup>");  // one shared exponent
+    t = linear_ticks(1, 1, 5, true);
+    EXPECT_GE(t.major.size(), 2u);
+    EXPECT_LT(t.lo, 1.0);
+    EXPECT_GT(t.hi, 1.0);
+    t = linear_ticks(0, 1e6, 6, true);
+    EXPECT_EQ(t.major.back(), 1e6);
+    EXPECT_EQ(t.labels.back(), "1.0\u00d710<sup>6</sup>");
+    EXPECT_EQ(t.labels.front(), "0");
+}
+
+TEST(Ticks, MultiplesOfTheStepNeverAccumulated) {
+    const auto t = linear_ticks(0, 1, 11, true);
+    ASSERT_EQ(t.major.size(), 11u);
+    EXPECT_EQ(t.major[3], 3 * 0.1);  // i * step, so 0.30000000000000004 is never summed up
+    EXPECT_EQ(t.labels[3], "0.3");
+    EXPECT_EQ(t.labels[0], "0.0");  // shared precision
+    EXPECT_EQ(t.labels[10], "1.0");
+}
+
+TEST(Ticks, SharedPrecisionAndMinusSign) {
+    const auto t = linear_ticks(-0.5, 1, 4, true);
+    EXPECT_EQ(t.labels, (std::vector<std::string>{"\u22120.5", "0.0", "0.5", "1.0"}));
+    const auto q = linear_ticks(0, 1, 5, true);
+    EXPECT_EQ(q.labels, (std::vector<std::string>{"0.00", "0.25", "0.50", "0.75", "1.00"}));
+    EXPECT_EQ(nice_step(0, 10, 6), 2.0);
+    EXPECT_EQ(nice_step(0, 1, 5), 0.25);
+}
+
+TEST(Ticks, WithoutExpansionStayInsideTheRange) {
+    const auto t = linear_ticks(-0.14, 3.74, 5, false);
+    EXPECT_EQ(t.lo, -0.14);
+    EXPECT_EQ(t.hi, 3.74);
+    EXPECT_EQ(t.major, (std::vector<double>{0, 1, 2, 3}));
+    for (double m : t.minor) {
+        EXPECT_GE(m, t.lo);
+        EXPECT_LE(m, t.hi);
+    }
+}
+
+TEST(Ticks, MultiplesOfPi) {
+    auto t = pi_ticks(0, pi, 5, false);
+    EXPECT_EQ(t.labels, (std::vector<std::string>{"0", "\u03c0/4", "\u03c0/2", "3\u03c0/4", "\u03c0"}));
+    EXPECT_EQ(t.major[2], pi / 2);
+    t = pi_ticks(-2.9, 2.9, 7, true);
+    EXPECT_EQ(t.labels, (std::vector<std::string>{"\u2212\u03c0", "\u2212\u03c0/2", "0", "\u03c0/2", "\u03c0"}));
+    EXPECT_EQ(t.lo, -pi);
+    t = pi_ticks(0, 4 * pi, 5, false);
+    EXPECT_EQ(t.labels.back(), "4\u03c0");
+    t = pi_ticks(-pi / 3, pi / 3, 7, true);  // quarters, not eighths
+    EXPECT_EQ(t.labels.front(), "\u2212\u03c0/2");
+}
+
+TEST(Ticks, Logarithmic) {
+    auto t = log_ticks(1e-16, 1, 9, false);
+    EXPECT_EQ(t.major.size(), 9u);
+    EXPECT_EQ(t.labels.front(), "10<sup>\u221216</sup>");
+    EXPECT_EQ(t.labels.back(), "10<sup>0</sup>");
+    t = log_ticks(2e-3, 0.5, 6, true);
+    EXPECT_EQ(t.lo, 1e-3);
+    EXPECT_EQ(t.hi, 1.0);
+    EXPECT_FALSE(t.minor.empty());
+    EXPECT_THROW(log_ticks(0, 1, 5, true), std::invalid_argument);
+    EXPECT_THROW(linear_ticks(0, std::nan(""), 5, true), std::invalid_argument);
+}
+
+TEST(Markup, Escaped) {
+    EXPECT_EQ(escape_markup("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
+}
+
+TEST(Output, FormatTable) {
+    EXPECT_EQ(format_names(), (std::vector<std::string>{"png", "pdf", "svg", "eps"}));
+    EXPECT_THROW(check_format("gif"), std::invalid_argument);
+    try {
+        check_format("jpg");
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "unknown format 'jpg'; formats: png, pdf, svg, eps");
+    }
+    EXPECT_THROW(theme_by_name("dark"), std::invalid_argument);
+    EXPECT_THROW(render(sample_figure(), paper_theme(), "png", {5}), std::invalid_argument);
+}
+
+TEST(Output, PngHasSignatureSizeAndResolution) {
+    const auto fig = sample_figure();
+    const std::string png = render(fig, paper_theme(), "png", {150});
+    ASSERT_GT(png.size(), 33u);
+    EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+    auto be32 = [&](std::size_t at) {
+        return (static_cast<unsigned>(static_cast<unsigned char>(png[at])) << 24) |
+               (static_cast<unsigned>(static_cast<unsigned char>(png[at + 1])) << 16) |
+               (static_cast<unsigned>(static_cast<unsigned char>(png[at + 2])) << 8) |
+               static_cast<unsigned>(static_cast<unsigned char>(png[at + 3]));
+    };
+    // Two 6 cm panels side by side at 150 dpi, 0.75 as high.
+    const double width_px = 12.0 / 2.54 * 150;
+    EXPECT_NEAR(be32(16), width_px, 1.0);
+    EXPECT_NEAR(be32(20), 0.75 * width_px / 2, 1.0);
+    EXPECT_EQ(png[25], 0);  // colour type 0: the paper theme is pure grey
+    EXPECT_NE(png.find("pHYs"), std::string::npos);
+    const std::string colour = render(fig, slides_theme(), "png", {72});
+    EXPECT_NE(colour[25], 0);  // palette or RGB for colour
+}
+
+TEST(Output, PdfIsReadByPopplerWithEmbeddedFonts) {
+    const auto dir = temp_dir("pdf");
+    save(sample_figure(), paper_theme(), dir / "f.pdf", {});
+    const auto info = test_support::run_command("pdfinfo '" + (dir / "f.pdf").string() + "'");
+    ASSERT_EQ(info.status, 0) << info.err;
+    EXPECT_NE(info.out.find("Pages:           1\n"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("340.157 x 127.559 pts"), std::string::npos) << info.out;
+    EXPECT_EQ(info.out.find("CreationDate"), std::string::npos);
+    const auto fonts = test_support::run_command("pdffonts '" + (dir / "f.pdf").string() + "'");
+    ASSERT_EQ(fonts.status, 0);
+    EXPECT_NE(fonts.out.find("CMUSerif"), std::string::npos);
+    EXPECT_EQ(fonts.out.find("Type 3"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(Output, PdfDateFromSourceDateEpoch) {
+    ::setenv("SOURCE_DATE_EPOCH", "1363824000", 1);  // 2013-03-21
+    const std::string a = render(sample_figure(), paper_theme(), "pdf", {});
+    const std::string eps = render(sample_figure(), paper_theme(), "eps", {});
+    ::unsetenv("SOURCE_DATE_EPOCH");
+    EXPECT_NE(a.find("/CreationDate ("), std::string::npos);
+    EXPECT_NE(a.find("20130321000000"), std::string::npos);
+    EXPECT_NE(eps.find("%%CreationDate: Thu Mar 21 00:00:00 2013"), std::string::npos);
+    const std::string b = render(sample_figure(), paper_theme(), "pdf", {});
+    EXPECT_EQ(b.find("/CreationDate"), std::string::npos);
+}
+
+TEST(Output, SvgParses) {
+    const std::string svg = render(sample_figure(), paper_theme(), "svg", {});
+    GMarkupParser parser{};
+    int elements = 0;
+    parser.start_element = [](GMarkupParseContext*, const gchar*, const gchar**, const gchar**, gpointer data,
+                              GError**) { ++*static_cast<int*>(data); };
+    GMarkupParseContext* ctx = g_markup_parse_context_new(&parser, G_MARKUP_TREAT_CDATA_AS_TEXT, &elements, nullptr);
+    GError* error = nullptr;
+    const bool ok = g_markup_parse_context_parse(ctx, svg.data(), static_cast<gssize>(svg.size()), &error) &&
+                    g_markup_parse_context_end_parse(ctx, &error);
+    g_markup_parse_context_free(ctx);
+    EXPECT_TRUE(ok) << (error ? error->message : "");
+    if (error) g_error_free(error);
+    EXPECT_GT(elements, 10);
+    EXPECT_NE(svg.find("<svg"), std::string::npos);
+    EXPECT_NE(svg.find("width=\"340.15748pt\""), std::string::npos);
+}
+
+TEST(Output, EpsHasBoundingBoxAndNoClockDate) {
+    ::unsetenv("SOURCE_DATE_EPOCH");
+    const std::string eps = render(sample_figure(), paper_theme(), "eps", {});
+    EXPECT_EQ(eps.rfind("%!PS-Adobe-3.0 EPSF-3.0\n", 0), 0u);
+    EXPECT_NE(eps.find("%%BoundingBox: 0 0 341 128"), std::string::npos);
+    EXPECT_EQ(eps.find("%%CreationDate"), std::string::npos);
+}
+
+TEST(Output, SameInputSameBytesInEveryFormat) {
+    for (const auto& th : {paper_theme(), slides_theme()}) {
+        for (const auto& f : format_names()) {
+            // A figure drawn in between must not change the next file (no global counters).
+            const std::string a = render(sample_figure(), th, f, {100});
+            render(sample_figure(), th, "svg", {100});
+            const std::string b = render(sample_figure(), th, f, {100});
+            EXPECT_EQ(a, b) << th.name << " " << f;
+        }
+    }
+}
+
+TEST(Output, WritesAtomicallyAndKeepsTheOldFileOnFailure) {
+    const auto dir = temp_dir("atomic");
+    const auto path = dir / "f.png";
+    save(sample_figure(), paper_theme(), path, {72});
+    const std::string good = test_support::slurp(path);
+    EXPECT_FALSE(good.empty());
+    // A render that fails before writing leaves the previous file alone.
+    EXPECT_THROW(save(sample_figure(), paper_theme(), dir / "f.gif", {72}), std::invalid_argument);
+    EXPECT_THROW(save(sample_figure(), paper_theme(), path, {1e6}), std::invalid_argument);
+    EXPECT_EQ(test_support::slurp(path), good);
+    std::size_t files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) {
+        ++files;
+        EXPECT_EQ(e.path().filename(), "f.png");  // no temporary left behind
+    }
+    EXPECT_EQ(files, 1u);
+    EXPECT_THROW(write_atomically(dir / "missing" / "x.pdf", "x"), std::runtime_error);
+    fs::remove_all(dir);
+}
+
+TEST(Output, MissingFontIsAnError) {
+    theme th = paper_theme();
+    th.font_family = "No Such Font Family";
+    EXPECT_THROW(render(sample_figure(), th, "pdf", {}), std::runtime_error);
+}

@@ -46,6 +46,7 @@ test: build
 bench: build
 	$(BUILD)/bench_pendulum --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
 	  --benchmark_min_time=0.2
+	bench/time_render.sh $(BUILD)/pendulum-figures 11
 
 figures: build
 	mkdir -p figures

@@ -281,41 +281,35 @@ int run_render(const render_options& o) {
     }
     if (jobs.empty()) throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
 
-    // Figures are independent: build and write them on every core. Each file is complete or
-    // absent; the first error is reported once all workers stop.
-    std::vector<const figures::entry*> unique(chosen);
-    std::vector<plot::figure> built(unique.size());
+    // Figures are independent: each worker takes the next figure, builds it and writes all
+    // its files, so no core waits for another between building and drawing. The catalog
+    // ends with its costliest figures (the iteration to order 40, the period sweep): they
+    // go first, so that no long task is left for the end. Each file is complete or absent;
+    // the first error is reported once all workers stop.
+    std::vector<const figures::entry*> order(chosen.rbegin(), chosen.rend());
     std::atomic<std::size_t> next{0};
     std::mutex error_mutex;
     std::string first_error;
-    auto work = [&](auto&& task, std::size_t count) {
-        next = 0;
-        auto loop = [&] {
-            for (std::size_t i = next++; i < count; i = next++) {
-                try {
-                    task(i);
-                } catch (const std::exception& e) {
-                    std::lock_guard lock(error_mutex);
-                    if (first_error.empty()) first_error = e.what();
+    auto loop = [&] {
+        for (std::size_t i = next++; i < order.size(); i = next++) {
+            try {
+                const plot::figure f = figures::build(*order[i], build);
+                for (const auto& job : jobs) {
+                    if (job.entry != order[i]) continue;
+                    plot::save(job.panel < 0 ? f : single_panel(f, job.panel, job.entry->paper_width_cm), theme,
+                               job.path, plot::output_options{o.dpi});
                 }
+            } catch (const std::exception& e) {
+                std::lock_guard lock(error_mutex);
+                if (first_error.empty()) first_error = e.what();
             }
-        };
-        const unsigned n = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), count));
-        std::vector<std::thread> threads;
-        for (unsigned t = 1; t < n; ++t) threads.emplace_back(loop);
-        loop();
-        for (auto& t : threads) t.join();
+        }
     };
-    work([&](std::size_t i) { built[i] = figures::build(*unique[i], build); }, unique.size());
-    if (first_error.empty()) {
-        work([&](std::size_t i) {
-            const auto& job = jobs[i];
-            const auto at = std::find(unique.begin(), unique.end(), job.entry) - unique.begin();
-            const plot::figure& f = built[at];
-            plot::save(job.panel < 0 ? f : single_panel(f, job.panel, job.entry->paper_width_cm), theme, job.path,
-                       plot::output_options{o.dpi});
-        }, jobs.size());
-    }
+    const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), order.size()));
+    std::vector<std::thread> threads;
+    for (unsigned t = 1; t < workers; ++t) threads.emplace_back(loop);
+    loop();
+    for (auto& t : threads) t.join();
     if (!first_error.empty()) {
         std::cerr << "pendulum-figures: error: " << first_error << "\n";
         return 1;

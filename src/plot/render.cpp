@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -63,9 +64,8 @@ public:
 
     /// Logical width and height of the markup at `size` points.
     std::pair<double, double> measure(const std::string& markup, double size) const {
-        const auto layout = make(markup, size);
         PangoRectangle logical;
-        pango_layout_get_extents(layout.get(), nullptr, &logical);
+        pango_layout_get_extents(layout(markup, size), nullptr, &logical);
         return {logical.width / double(PANGO_SCALE), logical.height / double(PANGO_SCALE)};
     }
 
@@ -73,22 +73,29 @@ public:
     /// anchor (left/centre/right, top/middle/bottom). `rotate` turns it by -90 degrees.
     void draw(const std::string& markup, double size, double x, double y, double ax, double ay,
               bool rotate = false) const {
-        const auto layout = make(markup, size);
+        PangoLayout* shaped = layout(markup, size);
         PangoRectangle logical;
-        pango_layout_get_extents(layout.get(), nullptr, &logical);
+        pango_layout_get_extents(shaped, nullptr, &logical);
         const double w = logical.width / double(PANGO_SCALE);
         const double h = logical.height / double(PANGO_SCALE);
         cairo_save(cr_);
         cairo_translate(cr_, x, y);
         if (rotate) cairo_rotate(cr_, -M_PI / 2);
         cairo_move_to(cr_, -ax * w - logical.x / double(PANGO_SCALE), -ay * h - logical.y / double(PANGO_SCALE));
-        pango_cairo_update_context(cr_, context_.get());
-        pango_layout_context_changed(layout.get());
-        pango_cairo_show_layout(cr_, layout.get());
+        // Metrics are unhinted, so the layout made for measuring draws unchanged here.
+        pango_cairo_show_layout(cr_, shaped);
         cairo_restore(cr_);
     }
 
 private:
+    /// The shaped layout of markup at size; each text is shaped once per figure.
+    PangoLayout* layout(const std::string& markup, double size) const {
+        auto key = std::make_pair(markup, size);
+        auto it = layouts_.find(key);
+        if (it == layouts_.end()) it = layouts_.emplace(std::move(key), make(markup, size)).first;
+        return it->second.get();
+    }
+
     gobject_ptr<PangoLayout> make(const std::string& markup, double size) const {
         gobject_ptr<PangoLayout> layout(pango_layout_new(context_.get()));
         font_description_ptr font(pango_font_description_new());
@@ -134,6 +141,7 @@ private:
     cairo_t* cr_;
     std::string family_;
     gobject_ptr<PangoContext> context_;
+    mutable std::map<std::pair<std::string, double>, gobject_ptr<PangoLayout>> layouts_;
 };
 
 /// Maps data values of one axis to device coordinates.
@@ -298,21 +306,56 @@ void set_line_style(cairo_t* cr, const theme& th, line_style style) {
     }
 }
 
+double distance_to_segment(double px, double py, double ax, double ay, double bx, double by) {
+    const double dx = bx - ax;
+    const double dy = by - ay;
+    const double len2 = dx * dx + dy * dy;
+    double t = len2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / len2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+}
+
+/// Drops the points of a polyline that lie within `tolerance` of the line drawn without
+/// them, as matplotlib's path simplification does: invisible, but it keeps vector files
+/// small and fast to draw.
+void simplify(std::vector<std::pair<double, double>>& run, double tolerance) {
+    if (run.size() < 3) return;
+    std::vector<std::pair<double, double>> out{run.front()};
+    std::size_t first_pending = 1;  // run[first_pending .. i-1] are not yet emitted
+    for (std::size_t i = 2; i < run.size(); ++i) {
+        const auto [ax, ay] = out.back();
+        const auto [bx, by] = run[i];
+        bool fits = i - first_pending < 64;
+        for (std::size_t j = first_pending; fits && j < i; ++j) {
+            fits = distance_to_segment(run[j].first, run[j].second, ax, ay, bx, by) <= tolerance;
+        }
+        if (!fits) {
+            out.push_back(run[i - 1]);
+            first_pending = i;
+        }
+    }
+    out.push_back(run.back());
+    run = std::move(out);
+}
+
 void stroke_polyline(cairo_t* cr, const device_series& d, const rect& clip) {
+    // Visible runs of the clipped polyline, each simplified, then stroked as one path.
+    std::vector<std::vector<std::pair<double, double>>> runs;
     bool open = false;
-    double last_x = 0;
-    double last_y = 0;
     for (std::size_t i = 1; i < d.x.size(); ++i) {
         double x0 = d.x[i - 1], y0 = d.y[i - 1], x1 = d.x[i], y1 = d.y[i];
         if (std::isnan(x0 + y0 + x1 + y1) || !clip_segment(x0, y0, x1, y1, clip)) {
             open = false;
             continue;
         }
-        if (!open || x0 != last_x || y0 != last_y) cairo_move_to(cr, x0, y0);
-        cairo_line_to(cr, x1, y1);
+        if (!open || runs.back().back() != std::pair{x0, y0}) runs.push_back({{x0, y0}});
+        runs.back().emplace_back(x1, y1);
         open = true;
-        last_x = x1;
-        last_y = y1;
+    }
+    for (auto& run : runs) {
+        simplify(run, 0.05);
+        cairo_move_to(cr, run.front().first, run.front().second);
+        for (std::size_t i = 1; i < run.size(); ++i) cairo_line_to(cr, run[i].first, run[i].second);
     }
     cairo_stroke(cr);
 }

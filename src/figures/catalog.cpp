@@ -140,38 +140,20 @@ pendulum::fourier_solution solve(const std::string& name, double theta0) {
     return pendulum::harmonic(theta0);
 }
 
-plot::figure c1_lowest() {
+/// Coefficient panels c1, c3, ... of one approximant against the exact values, one panel
+/// per harmonic, labelled (a), (b), ... when there is more than one.
+plot::figure coefficient_figure(int harmonics, int primes, const std::string& order_name,
+                                const std::function<pendulum::fourier_solution(double)>& approximant,
+                                double width_cm, double aspect) {
     plot::figure f;
-    f.panels.push_back(coefficient_panel(0, "lowest order", coefficient_label(1, 0),
-                                         [](double t) { return pendulum::lowest_order(t); }));
-    return f;
-}
-
-plot::figure coefficients_first() {
-    plot::figure f;
-    f.cols = 2;
+    f.cols = harmonics;
+    f.panel_width_cm = width_cm;
+    f.panel_aspect = aspect;
     f.shared_legend = true;
-    for (int n = 0; n < 2; ++n) {
-        auto p = coefficient_panel(n, "first order", coefficient_label(2 * n + 1, 1),
-                                   [](double t) { return pendulum::first_order(t); });
-        p.label = panel_letter(n);
-        f.panels.push_back(std::move(p));
-    }
-    return f;
-}
-
-plot::figure coefficients_second() {
-    plot::figure f;
-    f.cols = 3;
-    f.panel_width_cm = 4.3;
-    f.panel_aspect = 0.85;
-    f.shared_legend = true;
-    for (int n = 0; n < 3; ++n) {
-        auto p = coefficient_panel(n, "second order", coefficient_label(2 * n + 1, 2),
-                                   [](double t) { return pendulum::second_order(t); });
-        p.label = panel_letter(n);
-        p.x.max_ticks = 3;
-        p.y.max_ticks = 5;
+    for (int n = 0; n < harmonics; ++n) {
+        auto p = coefficient_panel(n, order_name, coefficient_label(2 * n + 1, primes), approximant);
+        if (harmonics > 1) p.label = panel_letter(n);
+        if (width_cm < 5) p.x.max_ticks = 3;
         f.panels.push_back(std::move(p));
     }
     return f;
@@ -311,14 +293,20 @@ const entry& find(std::string_view id) {
 
 plot::figure build(const entry& e, const build_options& options) {
     const auto& amps = options.amplitudes;
-    if (e.id == "c1-lowest") return c1_lowest();
+    if (e.id == "c1-lowest") {
+        return coefficient_figure(1, 0, "lowest order", [](double t) { return pendulum::lowest_order(t); }, 6.0, 0.75);
+    }
     if (e.id == "trajectory-lowest" || e.id == "trajectory-first") {
         const std::string order = e.id == "trajectory-lowest" ? "lowest order" : "first order";
         return trajectory_figure(or_default(amps, {pi / 3, pi / 2, 3 * pi / 4, 9 * pi / 10}), 2, 6.0,
                                  {{order, line_style::solid}, {"harmonic", line_style::dotted}}, solve);
     }
-    if (e.id == "coefficients-first") return coefficients_first();
-    if (e.id == "coefficients-second") return coefficients_second();
+    if (e.id == "coefficients-first") {
+        return coefficient_figure(2, 1, "first order", [](double t) { return pendulum::first_order(t); }, 6.0, 0.75);
+    }
+    if (e.id == "coefficients-second") {
+        return coefficient_figure(3, 2, "second order", [](double t) { return pendulum::second_order(t); }, 4.3, 0.85);
+    }
     if (e.id == "trajectory-second") {
         auto f = trajectory_figure(or_default(amps, {9 * pi / 10, 95 * pi / 100, 99 * pi / 100}), 3, 4.2,
                                    {{"second order", line_style::solid}}, solve);

@@ -88,8 +88,12 @@ plot::panel coefficient_panel(int n, const std::string& order_name, const std::s
 }
 
 std::string coefficient_label(int harmonic, int primes) {
+    // Computer Modern Unicode has no prime: the glyph comes from the fallback font, whose
+    // wide advance is pulled in so that the subscript sits under the primes as in TeX.
     const std::string prime_marks[] = {"", "\u2032", "\u2033"};
-    return "<i>c</i>" + prime_marks[primes] + "<sub>" + std::to_string(harmonic) + "</sub>";
+    const std::string primes_markup =
+        primes == 0 ? "" : "<span letter_spacing=\"-" + std::to_string(primes == 1 ? 1500 : 1600) + "\">" + prime_marks[primes] + "</span>";
+    return "<i>c</i>" + std::string(primes == 1 ? "\u200a" : "") + primes_markup + "<sub>" + std::to_string(harmonic) + "</sub>";
 }
 
 /// A grid of trajectory panels, one per amplitude, each comparing the exact motion (circles)

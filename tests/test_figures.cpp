@@ -5,10 +5,10 @@
 #include "pendulum/exact.hpp"
 #include "plot/output.hpp"
 #include "plot/theme.hpp"
+#include "png_image.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
-#include <png.h>
 
 #include <cmath>
 #include <filesystem>
@@ -34,26 +34,6 @@ std::set<std::string> files_in(const fs::path& dir) {
     return names;
 }
 
-/// A decoded 8-bit grey image.
-struct grey_image {
-    unsigned width = 0;
-    unsigned height = 0;
-    std::vector<unsigned char> pixels;
-};
-
-grey_image decode(const std::string& png) {
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    grey_image out;
-    if (!png_image_begin_read_from_memory(&image, png.data(), png.size())) return out;
-    image.format = PNG_FORMAT_GRAY;
-    out.pixels.resize(PNG_IMAGE_SIZE(image));
-    if (!png_image_finish_read(&image, nullptr, out.pixels.data(), 0, nullptr)) return {};
-    out.width = image.width;
-    out.height = image.height;
-    return out;
-}
-
 }  // namespace
 
 TEST(Catalog, EveryFigureOfThePaperAndItsAliases) {
@@ -63,7 +43,9 @@ TEST(Catalog, EveryFigureOfThePaperAndItsAliases) {
                          "coefficients-second", "trajectory-second", "period", "convergence"};
     for (std::size_t i = 0; i < c.size(); ++i) {
         EXPECT_EQ(c[i].id, ids[i]);
-        if (i < 7) EXPECT_EQ(&figures::find("fig" + std::to_string(i + 1)), &c[i]);
+        if (i < 7) {
+            EXPECT_EQ(&figures::find("fig" + std::to_string(i + 1)), &c[i]);
+        }
     }
     EXPECT_THROW(figures::find("fig8"), std::invalid_argument);
     for (const auto& e : c) {
@@ -148,8 +130,8 @@ TEST(Baselines, RenderedFiguresMatchTheCommittedImages) {
         for (const auto& e : figures::catalog()) {
             const auto path = fs::path(PENDULUM_BASELINES) / theme.name / (e.id + ".png");
             ASSERT_TRUE(fs::exists(path)) << path << " (make update-baselines writes it)";
-            const grey_image want = decode(test_support::slurp(path));
-            const grey_image got = decode(plot::render(figures::build(e), theme, "png", {dpi}));
+            const test_support::grey_image want = test_support::decode(test_support::slurp(path));
+            const test_support::grey_image got = test_support::decode(plot::render(figures::build(e), theme, "png", {dpi}));
             ASSERT_GT(want.width, 0u);
             ASSERT_EQ(got.width, want.width) << e.id;
             ASSERT_EQ(got.height, want.height) << e.id;
@@ -173,8 +155,8 @@ TEST(Baselines, ComparisonCanFail) {
     auto f = figures::build(e);
     f.panels[0].data[1].line = plot::line_style::solid;
     for (double& y : f.panels[0].data[1].y) y *= 1.1;
-    const grey_image want = decode(test_support::slurp(fs::path(PENDULUM_BASELINES) / "paper" / "period.png"));
-    const grey_image got = decode(plot::render(f, plot::paper_theme(), "png", {100}));
+    const test_support::grey_image want = test_support::decode(test_support::slurp(fs::path(PENDULUM_BASELINES) / "paper" / "period.png"));
+    const test_support::grey_image got = test_support::decode(plot::render(f, plot::paper_theme(), "png", {100}));
     ASSERT_EQ(got.pixels.size(), want.pixels.size());
     std::size_t different = 0;
     for (std::size_t i = 0; i < want.pixels.size(); ++i) different += std::abs(int(want.pixels[i]) - int(got.pixels[i])) > 64;

@@ -5,11 +5,13 @@
 #include "plot/render.hpp"
 #include "plot/theme.hpp"
 #include "plot/ticks.hpp"
+#include "png_image.hpp"
 #include "process.hpp"
 
 #include <glib.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -258,4 +260,79 @@ TEST(Output, MissingFontIsAnError) {
     theme th = paper_theme();
     th.font_family = "No Such Font Family";
     EXPECT_THROW(render(sample_figure(), th, "pdf", {}), std::runtime_error);
+}
+
+TEST(Legend, NeverCoversData) {
+    // A parabola leaves only some corners free. The legend's ink is what differs between
+    // renders with and without labels; no data may lie under it.
+    figure with;
+    panel p;
+    series s{"a parabola", {}, {}, line_style::solid, marker_style::none, 0};
+    series m{"its points", {}, {}, line_style::none, marker_style::open_circle, 0};
+    for (int i = 0; i <= 200; ++i) {
+        const double x = -1 + i / 100.0;
+        s.x.push_back(x);
+        s.y.push_back(x * x);
+        if (i % 20 == 0) {
+            m.x.push_back(x);
+            m.y.push_back(x * x);
+        }
+    }
+    p.data = {s, m};
+    p.x.min = -1.0;
+    p.x.max = 1.0;
+    p.y.min = 0.0;
+    p.y.max = 1.0;
+    with.panels.push_back(p);
+    figure without = with;
+    for (auto& d : without.panels[0].data) d.label.clear();
+    const auto a = test_support::decode(render(with, paper_theme(), "png", {200}));
+    const auto b = test_support::decode(render(without, paper_theme(), "png", {200}));
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    unsigned x0 = a.width, y0 = a.height, x1 = 0, y1 = 0;
+    for (unsigned y = 0; y < a.height; ++y) {
+        for (unsigned x = 0; x < a.width; ++x) {
+            if (a.at(x, y) != b.at(x, y)) {
+                x0 = std::min(x0, x);
+                y0 = std::min(y0, y);
+                x1 = std::max(x1, x);
+                y1 = std::max(y1, y);
+            }
+        }
+    }
+    ASSERT_LT(x0, x1) << "no legend was drawn";
+    std::size_t data_under_legend = 0;
+    for (unsigned y = y0; y <= y1; ++y) {
+        for (unsigned x = x0; x <= x1; ++x) data_under_legend += b.at(x, y) < 200;
+    }
+    EXPECT_EQ(data_under_legend, 0u) << "legend box " << x0 << "," << y0 << " - " << x1 << "," << y1;
+}
+
+TEST(Legend, GoesAboveWhenNoCornerIsFree) {
+    // Data everywhere: the legend takes a band above the axes, which therefore shrink.
+    figure with;
+    panel p;
+    series s{"zigzag", {}, {}, line_style::solid, marker_style::none, 0};
+    for (int i = 0; i <= 400; ++i) {
+        s.x.push_back(i / 400.0);
+        s.y.push_back(i % 2);
+    }
+    p.data = {s};
+    with.panels.push_back(p);
+    figure without = with;
+    without.panels[0].data[0].label.clear();
+    const auto a = test_support::decode(render(with, paper_theme(), "png", {100}));
+    const auto b = test_support::decode(render(without, paper_theme(), "png", {100}));
+    // The frame's top edge: the first row, scanning down the middle column, that is dark
+    // across most of the width.
+    auto frame_top = [](const test_support::grey_image& im) {
+        for (unsigned y = 0; y < im.height; ++y) {
+            unsigned dark = 0;
+            for (unsigned x = 0; x < im.width; ++x) dark += im.at(x, y) < 128;
+            if (dark > im.width / 2) return y;
+        }
+        return im.height;
+    };
+    EXPECT_GT(frame_top(a), frame_top(b) + 5);
 }

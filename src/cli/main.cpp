@@ -443,7 +443,7 @@ int main(int argc, char** argv) {
 
     render_options ro;
     auto* render = app.add_subcommand("render", "Draw figures of the catalog into files (PNG, PDF, SVG, EPS).");
-    render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), e.g. period fig2")->type_name("ID...");
+    render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), e.g. period fig2")->type_name("ID");
     render->add_flag("--all", ro.all, "Render every figure of the catalog");
     render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR");
     render->add_option("-f,--formats", ro.formats, "Comma-separated formats: png, pdf, svg, eps (default: pdf,png)")
@@ -466,6 +466,7 @@ int main(int argc, char** argv) {
                    "  pendulum-figures render --all --paper-files -f eps -o paper/");
 
     auto* list = app.add_subcommand("list", "List the figures: id, figure of the paper, description.");
+    list->footer("\nExample:\n  pendulum-figures list\n  pendulum-figures render fig7 -f pdf");
 
     std::string data_id;
     std::string data_file;

@@ -182,6 +182,7 @@ TEST(Output, PdfIsReadByPopplerWithEmbeddedFonts) {
     const auto fonts = test_support::run_command("pdffonts '" + (dir / "f.pdf").string() + "'");
     ASSERT_EQ(fonts.status, 0);
     EXPECT_NE(fonts.out.find("CMUSerif"), std::string::npos);
+    EXPECT_NE(fonts.out.find("DejaVuMathTeXGyre"), std::string::npos);  // the prime
     EXPECT_EQ(fonts.out.find("Type 3"), std::string::npos);
     fs::remove_all(dir);
 }

@@ -3,6 +3,9 @@
 #include "plot/handles.hpp"
 #include "plot/ticks.hpp"
 
+#include <fontconfig/fontconfig.h>
+#include <pango/pangofc-fontmap.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -47,11 +50,43 @@ struct rect {
     double h = 0;
 };
 
+/// The fonts figures may use: the system's font directories with their caches, and none
+/// of the machine's or the user's font configuration (substitutions, hinting, subpixel
+/// order), which would otherwise change the pictures from one machine to the next.
+FcConfig* private_font_config() {
+    static FcConfig* const config = [] {
+        FcConfig* c = FcConfigCreate();
+        static const char* const xml =
+            "<?xml version=\"1.0\"?><!DOCTYPE fontconfig SYSTEM \"urn:fontconfig:fonts.dtd\">"
+            "<fontconfig><dir>/usr/share/fonts</dir><cachedir>/var/cache/fontconfig</cachedir>"
+            "<cachedir prefix=\"xdg\">fontconfig</cachedir></fontconfig>";
+        if (!c || !FcConfigParseAndLoadFromMemory(c, reinterpret_cast<const FcChar8*>(xml), FcTrue) ||
+            !FcConfigBuildFonts(c)) {
+            throw std::runtime_error("cannot set up the font configuration");
+        }
+        return c;
+    }();
+    return config;
+}
+
+/// This thread's Pango font map over private_font_config(). Font maps are not shared
+/// between threads; one per thread keeps loaded fonts across figures.
+PangoFontMap* thread_font_map() {
+    thread_local const gobject_ptr<PangoFontMap> map = [] {
+        gobject_ptr<PangoFontMap> m(pango_cairo_font_map_new_for_font_type(CAIRO_FONT_TYPE_FT));
+        if (!m.get()) throw std::runtime_error("cannot create a Pango font map");
+        pango_fc_font_map_set_config(PANGO_FC_FONT_MAP(m.get()), private_font_config());
+        return m;
+    }();
+    return map.get();
+}
+
 /// Text set with Pango in one font family, measured and drawn in points.
 class text_engine {
 public:
     text_engine(cairo_t* cr, const std::string& family) : cr_(cr), family_(family) {
-        context_ = gobject_ptr<PangoContext>(pango_cairo_create_context(cr));
+        context_ = gobject_ptr<PangoContext>(pango_font_map_create_context(thread_font_map()));
+        pango_cairo_update_context(cr, context_.get());
         // Points as user units, and no hinting: the layout is the same in every format.
         pango_cairo_context_set_resolution(context_.get(), 72.0);
         font_options_ptr options(cairo_font_options_create());
@@ -125,16 +160,19 @@ private:
         return out;
     }
 
+    /// The first family must be installed: without it every figure would change.
     void check_font_installed() const {
-        font_description_ptr font(pango_font_description_from_string(family_.c_str()));
+        const std::string first = family_.substr(0, family_.find(','));
+        font_description_ptr font(pango_font_description_new());
+        pango_font_description_set_family(font.get(), first.c_str());
         gobject_ptr<PangoFont> loaded(pango_context_load_font(context_.get(), font.get()));
         std::string got;
         if (loaded.get()) {
             font_description_ptr d(pango_font_describe(loaded.get()));
             if (const char* f = pango_font_description_get_family(d.get())) got = f;
         }
-        if (got != family_) {
-            throw std::runtime_error("font '" + family_ + "' is not installed (Debian package fonts-cmu)");
+        if (got != first) {
+            throw std::runtime_error("font '" + first + "' is not installed (Debian package fonts-cmu)");
         }
     }
 

@@ -7,7 +7,8 @@ namespace plot {
 theme paper_theme() {
     theme t;
     t.name = "paper";
-    t.font_family = "CMU Serif";
+    // Computer Modern Unicode lacks a few symbols (the prime); they come from the next family.
+    t.font_family = "CMU Serif, DejaVu Math TeX Gyre";
     t.palette = {{0, 0, 0}};
     return t;
 }
@@ -15,7 +16,7 @@ theme paper_theme() {
 theme slides_theme() {
     theme t;
     t.name = "slides";
-    t.font_family = "CMU Sans Serif";
+    t.font_family = "CMU Sans Serif, DejaVu Sans";
     t.tick_font_pt = 14;
     t.label_font_pt = 16;
     t.legend_font_pt = 13;

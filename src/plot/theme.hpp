@@ -17,7 +17,7 @@ struct rgb {
 /// How figures look: fonts, sizes in points, line widths, colours, figure size.
 struct theme {
     std::string name;                 ///< theme name
-    std::string font_family;          ///< Pango font family
+    std::string font_family;          ///< Pango font families, the first preferred, comma-separated
     double tick_font_pt = 7.5;        ///< tick labels
     double label_font_pt = 8.5;       ///< axis labels and panel labels
     double legend_font_pt = 7.0;      ///< legend entries

@@ -1,6 +1,7 @@
 // pendulum-figures: the command line. Parsing and validation only; the work is in the libraries.
 #include "cli/angle.hpp"
 #include "cli/table.hpp"
+#include "figures/batch.hpp"
 #include "figures/catalog.hpp"
 #include "plot/output.hpp"
 #include "plot/theme.hpp"
@@ -11,12 +12,9 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <mutex>
-#include <thread>
 #include <unistd.h>
 #include <sstream>
 #include <stdexcept>
@@ -206,14 +204,6 @@ struct render_options {
     bool paper_files = false;
 };
 
-/// One file to write: a figure (or one panel of it, for --paper-files) in one format.
-struct render_job {
-    const figures::entry* entry;
-    int panel;  // -1: the whole figure
-    std::filesystem::path path;
-    std::string format;
-};
-
 /// Checks that dir exists and can be written to, naming it otherwise.
 void check_output_dir(const std::string& dir) {
     std::error_code ec;
@@ -239,18 +229,6 @@ std::vector<const figures::entry*> selected_figures(const std::vector<std::strin
     return chosen;
 }
 
-/// A figure with one of its panels alone, sized as the paper's LaTeX includes it.
-plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
-    plot::figure one;
-    one.panel_width_cm = width_cm;
-    one.panel_aspect = f.panel_aspect;
-    one.panels.push_back(f.panels.at(panel));
-    one.panels.back().legend = f.panels.front().legend == plot::legend_place::none
-                                   ? plot::legend_place::none
-                                   : plot::legend_place::automatic;
-    return one;
-}
-
 int run_render(const render_options& o) {
     const auto chosen = selected_figures(o.ids, o.all);
     std::vector<std::string> formats;
@@ -267,51 +245,24 @@ int run_render(const render_options& o) {
     if (!o.theta0.empty()) build.amplitudes = parse_amplitudes(o.theta0);
     check_output_dir(o.dir);
 
-    std::vector<render_job> jobs;
+    std::vector<figures::figure_file> jobs;
     for (const auto* e : chosen) {
         if (o.paper_files) {
             for (std::size_t i = 0; i < e->paper_files.size(); ++i) {
                 for (const auto& f : formats) {
-                    jobs.push_back({e, static_cast<int>(i), std::filesystem::path(o.dir) / (e->paper_files[i] + "." + f), f});
+                    jobs.push_back({e, static_cast<int>(i), std::filesystem::path(o.dir) / (e->paper_files[i] + "." + f)});
                 }
             }
         } else {
-            for (const auto& f : formats) jobs.push_back({e, -1, std::filesystem::path(o.dir) / (e->id + "." + f), f});
+            for (const auto& f : formats) jobs.push_back({e, -1, std::filesystem::path(o.dir) / (e->id + "." + f)});
         }
     }
     if (jobs.empty()) throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
 
-    // Figures are independent: each worker takes the next figure, builds it and writes all
-    // its files, so no core waits for another between building and drawing. The catalog
-    // ends with its costliest figures (the iteration to order 40, the period sweep): they
-    // go first, so that no long task is left for the end. Each file is complete or absent;
-    // the first error is reported once all workers stop.
-    std::vector<const figures::entry*> order(chosen.rbegin(), chosen.rend());
-    std::atomic<std::size_t> next{0};
-    std::mutex error_mutex;
-    std::string first_error;
-    auto loop = [&] {
-        for (std::size_t i = next++; i < order.size(); i = next++) {
-            try {
-                const plot::figure f = figures::build(*order[i], build);
-                for (const auto& job : jobs) {
-                    if (job.entry != order[i]) continue;
-                    plot::save(job.panel < 0 ? f : single_panel(f, job.panel, job.entry->paper_width_cm), theme,
-                               job.path, plot::output_options{o.dpi});
-                }
-            } catch (const std::exception& e) {
-                std::lock_guard lock(error_mutex);
-                if (first_error.empty()) first_error = e.what();
-            }
-        }
-    };
-    const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), order.size()));
-    std::vector<std::thread> threads;
-    for (unsigned t = 1; t < workers; ++t) threads.emplace_back(loop);
-    loop();
-    for (auto& t : threads) t.join();
-    if (!first_error.empty()) {
-        std::cerr << "pendulum-figures: error: " << first_error << "\n";
+    try {
+        figures::write_figures(jobs, build, theme, plot::output_options{o.dpi});
+    } catch (const std::exception& e) {
+        std::cerr << "pendulum-figures: error: " << e.what() << "\n";
         return 1;
     }
     return 0;

@@ -1,0 +1,94 @@
+#include "figures/batch.hpp"
+
+#include <algorithm>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+namespace figures {
+
+plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
+    plot::figure one;
+    one.panel_width_cm = width_cm;
+    one.panel_aspect = f.panel_aspect;
+    one.panels.push_back(f.panels.at(panel));
+    one.panels.back().legend = plot::legend_place::automatic;
+    return one;
+}
+
+namespace {
+
+/// Work for the pool: build a figure, or write one file of a built figure.
+struct task {
+    std::size_t figure;  // index into the distinct figures
+    std::size_t file;    // index into the files, or npos to build
+};
+
+}  // namespace
+
+void write_figures(const std::vector<figure_file>& files, const build_options& options, const plot::theme& theme,
+                   const plot::output_options& output) {
+    constexpr std::size_t build_it = static_cast<std::size_t>(-1);
+    std::vector<const entry*> distinct;
+    for (const auto& f : files) {
+        if (std::find(distinct.begin(), distinct.end(), f.figure) == distinct.end()) distinct.push_back(f.figure);
+    }
+    // Building comes first, costliest first (the catalog ends with the iteration to order
+    // 40 and the period sweep); a built figure's files go to the front of the queue, so
+    // any free core draws them and no core waits at a barrier.
+    std::deque<task> queue;
+    for (std::size_t i = distinct.size(); i-- > 0;) queue.push_back({i, build_it});
+    std::vector<std::shared_ptr<const plot::figure>> built(distinct.size());
+    std::mutex mutex;
+    std::condition_variable changed;
+    std::size_t busy = 0;
+    std::exception_ptr first_error;
+
+    auto worker = [&] {
+        std::unique_lock lock(mutex);
+        for (;;) {
+            changed.wait(lock, [&] { return !queue.empty() || busy == 0; });
+            if (queue.empty()) return;
+            const task t = queue.front();
+            queue.pop_front();
+            ++busy;
+            lock.unlock();
+            std::shared_ptr<const plot::figure> figure;
+            std::exception_ptr error;
+            try {
+                if (t.file == build_it) {
+                    figure = std::make_shared<const plot::figure>(build(*distinct[t.figure], options));
+                } else {
+                    const figure_file& f = files[t.file];
+                    const plot::figure& whole = *built[t.figure];
+                    plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, f.figure->paper_width_cm), theme,
+                               f.path, output);
+                }
+            } catch (...) {
+                error = std::current_exception();
+            }
+            lock.lock();
+            --busy;
+            if (error && !first_error) first_error = error;
+            if (figure) {
+                built[t.figure] = figure;
+                for (std::size_t k = files.size(); k-- > 0;) {
+                    if (files[k].figure == distinct[t.figure]) queue.push_front({t.figure, k});
+                }
+            }
+            changed.notify_all();
+        }
+    };
+    const unsigned workers =
+        std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), static_cast<unsigned>(files.size())));
+    std::vector<std::thread> threads;
+    for (unsigned i = 1; i < workers; ++i) threads.emplace_back(worker);
+    worker();
+    for (auto& t : threads) t.join();
+    if (first_error) std::rethrow_exception(first_error);
+}
+
+}  // namespace figures

@@ -1,0 +1,28 @@
+#pragma once
+
+#include "figures/catalog.hpp"
+#include "plot/output.hpp"
+#include "plot/theme.hpp"
+
+#include <filesystem>
+#include <vector>
+
+namespace figures {
+
+/// One file to write: a figure of the catalog, or one of its panels alone, in the format
+/// of the path's extension.
+struct figure_file {
+    const entry* figure = nullptr;  ///< the catalog entry
+    int panel = -1;                 ///< -1 for the whole figure, else the panel alone at the paper's width
+    std::filesystem::path path;     ///< where to write it
+};
+
+/// A figure's panel on its own, sized as the paper's LaTeX includes it.
+plot::figure single_panel(const plot::figure& f, int panel, double width_cm);
+
+/// Builds each figure once and writes every file, on all cores. Each file is complete or
+/// absent (see plot::write_atomically); after all work stops, the first error is thrown.
+void write_figures(const std::vector<figure_file>& files, const build_options& options, const plot::theme& theme,
+                   const plot::output_options& output);
+
+}  // namespace figures

@@ -289,6 +289,12 @@ TEST(PaperClaims, PeriodErrors) {
     // First order is worse than lowest order below about 1.7 rad.
     EXPECT_GT(std::fabs(err(first_order(1.0), 1.0)), std::fabs(err(lowest_order(1.0), 1.0)));
     EXPECT_LT(std::fabs(err(first_order(2.0), 2.0)), std::fabs(err(lowest_order(2.0), 2.0)));
+    // The conclusion's 0.2 % bound is crossed near 84 degrees.
+    EXPECT_LT(std::fabs(err(lowest_order(82 * pi / 180), 82 * pi / 180)), 2e-3);
+    EXPECT_GT(std::fabs(err(lowest_order(86 * pi / 180), 86 * pi / 180)), 2e-3);
+    // Second order: 0.13 % at 9 pi/10, -7 % at 99 pi/100.
+    EXPECT_NEAR(100 * err(second_order(9 * pi / 10), 9 * pi / 10), 0.132, 0.001);
+    EXPECT_NEAR(100 * err(second_order(0.99 * pi), 0.99 * pi), -6.99, 0.01);
     // Second order: within 0.03 % up to 3 pi/4.
     for (double t = 0.05; t <= 3 * pi / 4; t += 0.05) {
         EXPECT_LT(std::fabs(err(second_order(t), t)), 3e-4) << t;
@@ -314,6 +320,14 @@ TEST(BadInput, LibraryThrowsNamingTheValue) {
     EXPECT_THROW(s.theta(nan), domain_error);
     EXPECT_THROW(s.theta_at_fraction(inf), domain_error);
     EXPECT_THROW(s.coefficient(-1), domain_error);
+    EXPECT_THROW(s.coefficient_by_quadrature(-1), domain_error);
+    EXPECT_THROW(lowest_order(1.0).theta(nan), domain_error);
+    EXPECT_THROW(besinc(inf), domain_error);
+    EXPECT_THROW(agm(1.0, 0.0), domain_error);
+    EXPECT_THROW(agm(nan, 1.0), domain_error);
+    EXPECT_THROW(jacobi(nan, 0.5), domain_error);
+    EXPECT_THROW(jacobi(1.0, 1.5), domain_error);
+    EXPECT_THROW(jacobi(1.0, -0.1), domain_error);
     try {
         exact_solution{-0.5};
         FAIL();

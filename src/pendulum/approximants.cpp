@@ -14,6 +14,7 @@ namespace pendulum {
 using std::numbers::pi;
 
 double fourier_solution::theta(double w0_t) const {
+    if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
     const double x = frequency_ratio * w0_t;
     double sum = 0.0;
     for (std::size_t k = 0; k < coefficients.size(); ++k) {
@@ -23,6 +24,7 @@ double fourier_solution::theta(double w0_t) const {
 }
 
 double besinc(double x) {
+    if (!std::isfinite(x)) throw domain_error("besinc needs a finite argument, got " + format_double(x));
     if (x == 0.0) return 1.0;
     return 2.0 * bessel_j(1, x) / x;
 }

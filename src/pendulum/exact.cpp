@@ -16,6 +16,9 @@ namespace pendulum {
 using std::numbers::pi;
 
 double agm(double a, double b) {
+    if (!(a > 0 && b > 0 && std::isfinite(a) && std::isfinite(b))) {
+        throw domain_error("agm needs positive finite arguments, got " + format_double(a) + " and " + format_double(b));
+    }
     // Quadratic convergence: the loop ends within a handful of steps even for b ~ 1e-300.
     for (int i = 0; i < 64 && std::fabs(a - b) > 2e-16 * a; ++i) {
         const double next = 0.5 * (a + b);
@@ -26,6 +29,10 @@ double agm(double a, double b) {
 }
 
 jacobi_values jacobi(double u, double kp) {
+    if (!std::isfinite(u)) throw domain_error("jacobi needs a finite argument, got " + format_double(u));
+    if (!(kp >= 0.0 && kp <= 1.0)) {
+        throw domain_error("complementary modulus must be in [0, 1], got " + format_double(kp));
+    }
     // Descending Landen transformation seeded with k' itself (the AGM of 1 and k'), so a
     // parameter m = 1 - k'^2 that rounds to 1 in double precision still gives exact values.
     if (kp == 0.0) {

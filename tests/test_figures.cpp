@@ -254,3 +254,21 @@ TEST(ListAndData, DataIsCsvOfEverySeries) {
     EXPECT_EQ(test_support::slurp(dir / "p.csv").rfind("panel,series,x,y\n", 0), 0u);
     fs::remove_all(dir);
 }
+
+TEST(RenderCommand, SameBytesAloneOrInABatch) {
+    // Nothing in a file depends on what else the process drew, or on which core drew it.
+    const auto all = temp_dir("batch-all");
+    const auto one = temp_dir("batch-one");
+    ASSERT_EQ(run_cli("render --all -f png,pdf,svg,eps --dpi 60 -o '" + all.string() + "'").status, 0);
+    for (const char* id : {"period", "convergence"}) {
+        ASSERT_EQ(run_cli(std::string("render ") + id + " -f png,pdf,svg,eps --dpi 60 -o '" + one.string() + "'").status, 0);
+    }
+    std::size_t compared = 0;
+    for (const auto& name : files_in(one)) {
+        EXPECT_EQ(test_support::slurp(one / name), test_support::slurp(all / name)) << name;
+        ++compared;
+    }
+    EXPECT_EQ(compared, 8u);
+    fs::remove_all(all);
+    fs::remove_all(one);
+}

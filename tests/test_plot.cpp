@@ -137,6 +137,14 @@ TEST(Markup, Escaped) {
     EXPECT_EQ(escape_markup("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
 }
 
+TEST(Markup, InvalidMarkupIsAnErrorNotAWarning) {
+    figure f = sample_figure();
+    f.panels[0].x.label = "<i>unclosed";
+    EXPECT_THROW(render(f, paper_theme(), "svg", {}), std::invalid_argument);
+    f.panels[0].x.label = escape_markup("a < b & c");
+    EXPECT_NO_THROW(render(f, paper_theme(), "svg", {}));
+}
+
 TEST(Output, FormatTable) {
     EXPECT_EQ(format_names(), (std::vector<std::string>{"png", "pdf", "svg", "eps"}));
     EXPECT_THROW(check_format("gif"), std::invalid_argument);

@@ -137,7 +137,15 @@ private:
         pango_font_description_set_family(font.get(), family_.c_str());
         pango_font_description_set_size(font.get(), static_cast<gint>(std::lround(size * PANGO_SCALE)));
         pango_layout_set_font_description(layout.get(), font.get());
-        pango_layout_set_markup(layout.get(), scripts_as_spans(markup, size).c_str(), -1);
+        const std::string spans = scripts_as_spans(markup, size);
+        // Checked first: Pango would only print a warning and show nothing.
+        GError* error = nullptr;
+        if (!pango_parse_markup(spans.c_str(), -1, 0, nullptr, nullptr, nullptr, &error)) {
+            const std::string why = error ? error->message : "not valid";
+            g_clear_error(&error);
+            throw std::invalid_argument("invalid text markup '" + markup + "': " + why);
+        }
+        pango_layout_set_markup(layout.get(), spans.c_str(), -1);
         return layout;
     }
 

@@ -1,5 +1,6 @@
 // Tests of the figure catalog and of the render, list and data commands: the figures hold
 // the right data, match the committed baseline images, and bad input touches no file.
+#include "figures/batch.hpp"
 #include "figures/catalog.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
@@ -216,6 +217,7 @@ TEST(RenderCommand, BadInputTouchesNoFile) {
         "render" + d,
         "render --all fig1" + d,
         "render convergence --paper-files" + d,
+        "render fig1 period --theta0 1" + d,
         "data nosuch",
         "data fig1 --theta0 1",
         "data fig2 --theta0 0",
@@ -271,4 +273,29 @@ TEST(RenderCommand, SameBytesAloneOrInABatch) {
     EXPECT_EQ(compared, 8u);
     fs::remove_all(all);
     fs::remove_all(one);
+}
+
+TEST(ListAndData, CsvQuotesAndPlainText) {
+    plot::figure f;
+    plot::panel p;
+    p.data.push_back(plot::series{"<i>a</i>, &amp; \"b\"", {1, 2}, {0.5, 0.25}});
+    p.data.push_back(plot::series{"c", {3}, {std::nan("")}});
+    f.panels = {p, p};
+    EXPECT_EQ(figures::figure_csv(f),
+              "panel,series,x,y\n"
+              "a,\"a, & \"\"b\"\"\",1,0.5\na,\"a, & \"\"b\"\"\",2,0.25\na,c,3,nan\n"
+              "b,\"a, & \"\"b\"\"\",1,0.5\nb,\"a, & \"\"b\"\"\",2,0.25\nb,c,3,nan\n");
+}
+
+TEST(ListAndData, FilesForPaperNames) {
+    const std::vector<const figures::entry*> chosen = {&figures::find("fig7"), &figures::find("convergence")};
+    const auto files = figures::files_for(chosen, {"eps", "pdf"}, "out", true);
+    ASSERT_EQ(files.size(), 4u);
+    EXPECT_EQ(files[0].path, fs::path("out/Fig.Comparison.PeriodA.eps"));
+    EXPECT_EQ(files[3].path, fs::path("out/Fig.Comparison.PeriodB.pdf"));
+    EXPECT_EQ(files[3].panel, 1);
+    const auto whole = figures::files_for(chosen, {"png"}, "out", false);
+    ASSERT_EQ(whole.size(), 2u);
+    EXPECT_EQ(whole[1].path, fs::path("out/convergence.png"));
+    EXPECT_EQ(whole[1].panel, -1);
 }

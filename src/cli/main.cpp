@@ -15,10 +15,10 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <unistd.h>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -242,21 +242,15 @@ int run_render(const render_options& o) {
                           " and " + format_double(plot::max_dpi));
     }
     figures::build_options build;
-    if (!o.theta0.empty()) build.amplitudes = parse_amplitudes(o.theta0);
+    if (!o.theta0.empty()) {
+        if (std::none_of(chosen.begin(), chosen.end(), [](const auto* e) { return e->takes_amplitudes; })) {
+            throw usage_error("--theta0 applies to trajectory figures, and none was chosen");
+        }
+        build.amplitudes = parse_amplitudes(o.theta0);
+    }
     check_output_dir(o.dir);
 
-    std::vector<figures::figure_file> jobs;
-    for (const auto* e : chosen) {
-        if (o.paper_files) {
-            for (std::size_t i = 0; i < e->paper_files.size(); ++i) {
-                for (const auto& f : formats) {
-                    jobs.push_back({e, static_cast<int>(i), std::filesystem::path(o.dir) / (e->paper_files[i] + "." + f)});
-                }
-            }
-        } else {
-            for (const auto& f : formats) jobs.push_back({e, -1, std::filesystem::path(o.dir) / (e->id + "." + f)});
-        }
-    }
+    const auto jobs = figures::files_for(chosen, formats, o.dir, o.paper_files);
     if (jobs.empty()) throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
 
     try {
@@ -278,28 +272,6 @@ std::string list_text() {
     return out.str();
 }
 
-/// Series labels are markup; CSV wants plain text.
-std::string plain_text(const std::string& markup) {
-    std::string out;
-    bool in_tag = false;
-    for (char c : markup) {
-        if (c == '<') in_tag = true;
-        else if (c == '>') in_tag = false;
-        else if (!in_tag) out += c;
-    }
-    for (const auto& [from, to] : {std::pair<std::string, std::string>{"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}}) {
-        for (std::size_t pos; (pos = out.find(from)) != std::string::npos;) out.replace(pos, from.size(), to);
-    }
-    return out;
-}
-
-std::string csv_field(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string out = "\"";
-    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
 std::string figure_data(const std::string& id, const std::string& theta0) {
     const auto& e = figures::find(id);
     figures::build_options build;
@@ -307,19 +279,7 @@ std::string figure_data(const std::string& id, const std::string& theta0) {
         if (!e.takes_amplitudes) throw usage_error("--theta0 applies to trajectory figures, not to " + e.id);
         build.amplitudes = parse_amplitudes(theta0);
     }
-    const auto f = figures::build(e, build);
-    std::ostringstream out;
-    out << "panel,series,x,y\n";
-    for (std::size_t p = 0; p < f.panels.size(); ++p) {
-        const std::string panel(1, static_cast<char>('a' + p));
-        for (const auto& s : f.panels[p].data) {
-            const std::string name = csv_field(plain_text(s.label));
-            for (std::size_t i = 0; i < s.x.size(); ++i) {
-                out << panel << ',' << name << ',' << format_double(s.x[i]) << ',' << format_double(s.y[i]) << '\n';
-            }
-        }
-    }
-    return out.str();
+    return figures::figure_csv(figures::build(e, build));
 }
 
 const char* const angle_help =

@@ -1,14 +1,82 @@
 #include "figures/batch.hpp"
 
+#include "pendulum/amplitude.hpp"
+
 #include <algorithm>
 #include <condition_variable>
 #include <deque>
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <sstream>
 #include <thread>
 
 namespace figures {
+
+std::vector<figure_file> files_for(const std::vector<const entry*>& figures, const std::vector<std::string>& formats,
+                                   const std::filesystem::path& dir, bool paper_files) {
+    std::vector<figure_file> files;
+    for (const auto* e : figures) {
+        if (!paper_files) {
+            for (const auto& f : formats) files.push_back({e, -1, dir / (e->id + "." + f)});
+            continue;
+        }
+        for (std::size_t i = 0; i < e->paper_files.size(); ++i) {
+            for (const auto& f : formats) files.push_back({e, static_cast<int>(i), dir / (e->paper_files[i] + "." + f)});
+        }
+    }
+    return files;
+}
+
+namespace {
+
+/// Legend text is Pango markup; CSV wants plain text.
+std::string plain_text(const std::string& markup) {
+    std::string out;
+    bool in_tag = false;
+    for (char c : markup) {
+        if (c == '<') {
+            in_tag = true;
+        } else if (c == '>') {
+            in_tag = false;
+        } else if (!in_tag) {
+            out += c;
+        }
+    }
+    const std::pair<std::string, std::string> entities[] = {
+        {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}};
+    for (const auto& [from, to] : entities) {
+        for (std::size_t pos = 0; (pos = out.find(from, pos)) != std::string::npos; pos += to.size()) {
+            out.replace(pos, from.size(), to);
+        }
+    }
+    return out;
+}
+
+std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+}  // namespace
+
+std::string figure_csv(const plot::figure& f) {
+    std::ostringstream out;
+    out << "panel,series,x,y\n";
+    for (std::size_t p = 0; p < f.panels.size(); ++p) {
+        const char panel = static_cast<char>('a' + p);
+        for (const auto& s : f.panels[p].data) {
+            const std::string name = csv_field(plain_text(s.label));
+            for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+                out << panel << ',' << name << ',' << pendulum::format_double(s.x[i]) << ','
+                    << pendulum::format_double(s.y[i]) << '\n';
+            }
+        }
+    }
+    return out.str();
+}
 
 plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
     plot::figure one;

@@ -5,6 +5,7 @@
 #include "plot/theme.hpp"
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace figures {
@@ -16,6 +17,15 @@ struct figure_file {
     int panel = -1;                 ///< -1 for the whole figure, else the panel alone at the paper's width
     std::filesystem::path path;     ///< where to write it
 };
+
+/// The files for figures in formats (file extensions) under dir: DIR/ID.EXT, or with
+/// paper_files one per panel under the names of the paper's LaTeX source.
+std::vector<figure_file> files_for(const std::vector<const entry*>& figures, const std::vector<std::string>& formats,
+                                   const std::filesystem::path& dir, bool paper_files);
+
+/// Every series of the figure as CSV with the header panel,series,x,y; panels are a, b, ...
+/// and series are named by their legend text without markup.
+std::string figure_csv(const plot::figure& f);
 
 /// A figure's panel on its own, sized as the paper's LaTeX includes it.
 plot::figure single_panel(const plot::figure& f, int panel, double width_cm);

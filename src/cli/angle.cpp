@@ -59,7 +59,8 @@ private:
     bool starts_primary() {
         skip_space();
         if (pos_ >= text_.size()) return false;
-        return text_[pos_] == '(' || text_.substr(pos_, 2) == "pi" || text_.substr(pos_, 2) == "\u03c0";
+        const std::string_view rest = text_.substr(pos_);
+        return rest.starts_with("(") || rest.starts_with("pi") || rest.starts_with("\u03c0");
     }
 
     double sum() {

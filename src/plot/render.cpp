@@ -84,8 +84,8 @@ PangoFontMap* thread_font_map() {
 /// Text set with Pango in one font family, measured and drawn in points.
 class text_engine {
 public:
-    text_engine(cairo_t* cr, const std::string& family) : cr_(cr), family_(family) {
-        context_ = gobject_ptr<PangoContext>(pango_font_map_create_context(thread_font_map()));
+    text_engine(cairo_t* cr, const std::string& family)
+        : cr_(cr), family_(family), context_(pango_font_map_create_context(thread_font_map())) {
         pango_cairo_update_context(cr, context_.get());
         // Points as user units, and no hinting: the layout is the same in every format.
         pango_cairo_context_set_resolution(context_.get(), 72.0);

@@ -83,7 +83,6 @@ plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
     one.panel_width_cm = width_cm;
     one.panel_aspect = f.panel_aspect;
     one.panels.push_back(f.panels.at(panel));
-    one.panels.back().legend = plot::legend_place::automatic;
     return one;
 }
 

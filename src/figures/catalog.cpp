@@ -96,11 +96,17 @@ std::string coefficient_label(int harmonic, int primes) {
     return "<i>c</i>" + std::string(primes == 1 ? "\u200a" : "") + primes_markup + "<sub>" + std::to_string(harmonic) + "</sub>";
 }
 
+/// An approximant as the figures show it: legend text, line style and how to compute it.
+struct method {
+    std::string label;
+    line_style style;
+    pendulum::fourier_solution (*solve)(double theta0);
+};
+
 /// A grid of trajectory panels, one per amplitude, each comparing the exact motion (circles)
 /// with approximants at the same physical time, over one exact period.
 plot::figure trajectory_figure(const std::vector<double>& amplitudes, int max_cols, double width_cm,
-                               const std::vector<std::pair<std::string, line_style>>& methods,
-                               const std::function<pendulum::fourier_solution(const std::string&, double)>& solve) {
+                               const std::vector<method>& methods) {
     plot::figure f;
     f.cols = std::min<int>(max_cols, static_cast<int>(amplitudes.size()));
     f.rows = (static_cast<int>(amplitudes.size()) + f.cols - 1) / f.cols;
@@ -126,22 +132,15 @@ plot::figure trajectory_figure(const std::vector<double>& amplitudes, int max_co
                                      [&](double s) { return exact.theta_at_fraction(s); }, line_style::none,
                                      marker_style::open_circle, 0));
         int color = 1;
-        for (const auto& [name, style] : methods) {
-            const auto solution = solve(name, theta0);
-            p.data.push_back(make_series(name, grid(0, 1, 300),
-                                         [&](double s) { return solution.theta(s * period); }, style,
+        for (const auto& m : methods) {
+            const auto solution = m.solve(theta0);
+            p.data.push_back(make_series(m.label, grid(0, 1, 300),
+                                         [&](double s) { return solution.theta(s * period); }, m.style,
                                          marker_style::none, color++));
         }
         f.panels.push_back(std::move(p));
     }
     return f;
-}
-
-pendulum::fourier_solution solve(const std::string& name, double theta0) {
-    if (name == "lowest order") return pendulum::lowest_order(theta0);
-    if (name == "first order") return pendulum::first_order(theta0);
-    if (name == "second order") return pendulum::second_order(theta0);
-    return pendulum::harmonic(theta0);
 }
 
 /// Coefficient panels c1, c3, ... of one approximant against the exact values, one panel
@@ -166,8 +165,9 @@ plot::figure coefficient_figure(int harmonics, int primes, const std::string& or
 plot::figure period() {
     plot::figure f;
     f.cols = 2;
-    const std::vector<std::pair<std::string, line_style>> methods = {
-        {"lowest order", line_style::dashed}, {"first order", line_style::dotted}, {"second order", line_style::solid}};
+    const method methods[] = {{"lowest order", line_style::dashed, pendulum::lowest_order},
+                              {"first order", line_style::dotted, pendulum::first_order},
+                              {"second order", line_style::solid, pendulum::second_order}};
     plot::panel a;
     a.label = panel_letter(0);
     a.x = amplitude_axis();
@@ -183,16 +183,21 @@ plot::figure period() {
     // Near pi every approximant's error grows without bound; show the range that tells them apart.
     b.y.min = -20.0;
     b.y.max = 2.0;
+    // Each period is computed once and shown twice: as T/T0 in (a), as an error in (b).
+    const auto& t = curve_amplitudes();
+    std::vector<double> exact;
+    for (double x : t) exact.push_back(pendulum::period_ratio(x));
     int color = 1;
-    for (const auto& [name, style] : methods) {
-        a.data.push_back(make_series(name, curve_amplitudes(),
-                                     [&](double t) { return solve(name, t).period_ratio(); }, style,
-                                     marker_style::none, color));
-        b.data.push_back(make_series(
-            name, curve_amplitudes(),
-            [&](double t) { return 100 * (solve(name, t).period_ratio() / pendulum::period_ratio(t) - 1); }, style,
-            marker_style::none, color));
-        ++color;
+    for (const auto& m : methods) {
+        plot::series ratio{m.label, t, {}, m.style, marker_style::none, color++};
+        plot::series error = ratio;
+        error.y.clear();
+        for (std::size_t i = 0; i < t.size(); ++i) {
+            ratio.y.push_back(m.solve(t[i]).period_ratio());
+            error.y.push_back(100 * (ratio.y[i] / exact[i] - 1));
+        }
+        a.data.push_back(std::move(ratio));
+        b.data.push_back(std::move(error));
     }
     f.panels = {std::move(a), std::move(b)};
     return f;
@@ -301,9 +306,11 @@ plot::figure build(const entry& e, const build_options& options) {
         return coefficient_figure(1, 0, "lowest order", [](double t) { return pendulum::lowest_order(t); }, 6.0, 0.75);
     }
     if (e.id == "trajectory-lowest" || e.id == "trajectory-first") {
-        const std::string order = e.id == "trajectory-lowest" ? "lowest order" : "first order";
+        const method order = e.id == "trajectory-lowest"
+                                 ? method{"lowest order", line_style::solid, pendulum::lowest_order}
+                                 : method{"first order", line_style::solid, pendulum::first_order};
         return trajectory_figure(or_default(amps, {pi / 3, pi / 2, 3 * pi / 4, 9 * pi / 10}), 2, 6.0,
-                                 {{order, line_style::solid}, {"harmonic", line_style::dotted}}, solve);
+                                 {order, {"harmonic", line_style::dotted, pendulum::harmonic}});
     }
     if (e.id == "coefficients-first") {
         return coefficient_figure(2, 1, "first order", [](double t) { return pendulum::first_order(t); }, 6.0, 0.75);
@@ -313,7 +320,7 @@ plot::figure build(const entry& e, const build_options& options) {
     }
     if (e.id == "trajectory-second") {
         auto f = trajectory_figure(or_default(amps, {9 * pi / 10, 95 * pi / 100, 99 * pi / 100}), 3, 4.2,
-                                   {{"second order", line_style::solid}}, solve);
+                                   {{"second order", line_style::solid, pendulum::second_order}});
         f.panel_aspect = 0.85;
         return f;
     }

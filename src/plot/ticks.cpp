@@ -71,12 +71,10 @@ std::vector<std::string> format_linear_labels(const std::vector<double>& ticks, 
     }
     for (double t : ticks) {
         char buf[64];
-        if (t == 0.0) {
-            labels.emplace_back(scientific ? "0" : (std::snprintf(buf, sizeof buf, "%.*f", decimals, 0.0), buf));
-            continue;
-        }
-        if (!scientific) {
-            std::snprintf(buf, sizeof buf, "%.*f", decimals, t);
+        if (t == 0.0 && scientific) {
+            labels.emplace_back("0");
+        } else if (!scientific) {
+            std::snprintf(buf, sizeof buf, "%.*f", decimals, t == 0.0 ? 0.0 : t);  // never "-0.0"
             labels.push_back(with_minus(buf));
         } else {
             std::snprintf(buf, sizeof buf, "%.*f", decimals, t / std::pow(10.0, exponent));

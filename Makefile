@@ -11,8 +11,10 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 # Debian packages needed to build and test. GoogleTest and Google Benchmark are listed too,
 # so that a machine without them gets them the same way.
-DEB_PACKAGES := g++ cmake make pkgconf libgsl-dev libcairo2-dev libpango1.0-dev libcli11-dev \
-	libpng-dev libgtest-dev libbenchmark-dev fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
+DEB_PACKAGES := g++ cmake make pkgconf
+DEB_PACKAGES += libgsl-dev libcairo2-dev libpango1.0-dev libcli11-dev libpng-dev
+DEB_PACKAGES += libgtest-dev libbenchmark-dev
+DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
 
 .PHONY: all deps build test bench figures update-baselines clean
 

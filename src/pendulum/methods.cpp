@@ -1,0 +1,116 @@
+#include "pendulum/methods.hpp"
+
+#include "pendulum/amplitude.hpp"
+#include "pendulum/exact.hpp"
+#include "pendulum/period_formulas.hpp"
+
+#include <array>
+#include <charconv>
+
+namespace pendulum {
+
+namespace {
+
+/// The Fourier solution of a motion method, as a table entry.
+template <fourier_solution (*f)(double)>
+fourier_solution solution_of(double theta0, int) {
+    return f(theta0);
+}
+
+/// The period of a motion method, from its Fourier solution.
+template <fourier_solution (*f)(double)>
+double period_of(double theta0, int) {
+    return f(theta0).period_ratio();
+}
+
+/// The period of a formula without N, as a table entry.
+template <double (*f)(double)>
+double formula(double theta0, int) {
+    return f(theta0);
+}
+
+constexpr std::array<method_row, 14> rows = {{
+    {"exact", method_kind::motion, -1, 0, "the exact solution (Jacobi elliptic functions)", formula<period_ratio>,
+     nullptr},
+    {"harmonic", method_kind::motion, -1, 0, "small-amplitude motion theta0 cos(w0 t)", period_of<harmonic>,
+     solution_of<harmonic>},
+    {"lowest", method_kind::motion, -1, 0, "the paper's lowest order: c1 = theta0, besinc frequency",
+     period_of<lowest_order>, solution_of<lowest_order>},
+    {"first", method_kind::motion, -1, 0, "the paper's first order: c1', c3'", period_of<first_order>,
+     solution_of<first_order>},
+    {"second", method_kind::motion, -1, 0, "the paper's second order (appendix): c1'', c3'', c5''",
+     period_of<second_order>, solution_of<second_order>},
+    {"polynomial", method_kind::motion, -1, 0, "Taylor polynomials through theta0^5 (Fulcher and Davis)",
+     period_of<polynomial>, solution_of<polynomial>},
+    {"order", method_kind::motion, 0, max_order, "the paper's iteration to order N (N + 1 harmonics)",
+     [](double t, int n) { return iterated(t, n).period_ratio(); }, [](double t, int n) { return iterated(t, n); }},
+    {"kidd-fogg", method_kind::period_only, -1, 0, "period 1/sqrt(k') (Kidd and Fogg 2002)",
+     formula<period_kidd_fogg>, nullptr},
+    {"lima-arun", method_kind::period_only, -1, 0, "period -ln(k')/(1 - k') (Lima and Arun 2006)",
+     formula<period_lima_arun>, nullptr},
+    {"ganley", method_kind::period_only, -1, 0, "period sqrt(F theta0/sin(F theta0)), F = sqrt(3)/2 (Ganley 1985)",
+     formula<period_ganley>, nullptr},
+    {"agm", method_kind::period_only, 1, max_agm_steps, "period after N AGM steps (Carvalhaes and Suppes 2008)",
+     period_agm, nullptr},
+    {"denman", method_kind::period_only, -1, 0, "period 1/(1 - theta0^2/16) (Denman 1959)", formula<period_denman>,
+     nullptr},
+    {"series", method_kind::period_only, 1, max_series_terms, "Taylor series of the period through theta0^(2N)",
+     period_series, nullptr},
+    {"log-asymptote", method_kind::period_only, -1, 0, "large-amplitude asymptote (2/pi) ln(4/k')",
+     formula<period_log_asymptote>, nullptr},
+}};
+
+}  // namespace
+
+std::span<const method_row> method_table() { return rows; }
+
+std::string method_choice::text() const {
+    return n < 0 ? std::string(row->name) : std::string(row->name) + ":" + std::to_string(n);
+}
+
+std::string method_names() {
+    std::string out;
+    for (const auto& r : rows) out += (out.empty() ? "" : ", ") + std::string(r.name) + (r.min_n < 0 ? "" : ":N");
+    return out;
+}
+
+method_choice parse_method(std::string_view text) {
+    const auto colon = text.find(':');
+    const std::string_view name = text.substr(0, colon);
+    for (const auto& r : rows) {
+        if (r.name != name) continue;
+        if (r.min_n < 0) {
+            if (colon != std::string_view::npos) {
+                throw domain_error("method '" + std::string(text) + "': " + std::string(name) + " takes no :N");
+            }
+            return {&r, -1};
+        }
+        const std::string range = std::to_string(r.min_n) + ".." + std::to_string(r.max_n);
+        if (colon == std::string_view::npos) {
+            throw domain_error("method '" + std::string(text) + "' needs N, as in " + std::string(name) + ":" +
+                               std::to_string(r.min_n + 1) + " (N in " + range + ")");
+        }
+        const std::string_view digits = text.substr(colon + 1);
+        int n = -1;
+        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+        if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size() || n < r.min_n ||
+            n > r.max_n) {
+            throw domain_error("method '" + std::string(text) + "': N must be a whole number in " + range);
+        }
+        return {&r, n};
+    }
+    throw domain_error("unknown method '" + std::string(text) + "'; methods: " + method_names());
+}
+
+double method_period(const method_choice& m, double theta0) { return m.row->period(theta0, m.n); }
+
+fourier_solution method_solution(const method_choice& m, double theta0) {
+    if (!m.row->solution) {
+        throw domain_error("method " + m.text() + " gives " +
+                           (m.has_motion() ? std::string("the exact motion, not a Fourier approximant")
+                                           : std::string("a period only, not a law of motion")));
+    }
+    return m.row->solution(theta0, m.n);
+}
+
+}  // namespace pendulum

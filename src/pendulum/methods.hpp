@@ -1,0 +1,52 @@
+#pragma once
+
+#include "pendulum/approximants.hpp"
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace pendulum {
+
+/// What a method gives: a whole law of motion theta(t), or only the period.
+enum class method_kind { motion, period_only };
+
+/// One row of the method table: everything a user can choose by name.
+struct method_row {
+    std::string_view name;         ///< "exact", "order", "agm", ...; written NAME or NAME:N
+    method_kind kind;              ///< law of motion or period only
+    int min_n;                     ///< smallest N, or -1 when the method takes none
+    int max_n;                     ///< largest N
+    std::string_view description;  ///< one line for help and lists
+    double (*period)(double theta0, int n);                ///< T/T0
+    fourier_solution (*solution)(double theta0, int n);    ///< the Fourier solution, or null
+};
+
+/// Every method, in the order help and lists show them.
+std::span<const method_row> method_table();
+
+/// A method chosen by name, with its N where it takes one.
+struct method_choice {
+    const method_row* row = nullptr;  ///< the table row
+    int n = -1;                       ///< N, or -1
+
+    /// The name as written: "lowest", "order:6".
+    std::string text() const;
+    /// True for methods with a law of motion.
+    bool has_motion() const { return row->kind == method_kind::motion; }
+};
+
+/// Parses NAME or NAME:N; throws domain_error naming the text and listing the methods.
+method_choice parse_method(std::string_view text);
+
+/// The period ratio T/T0 of the method at amplitude theta0.
+double method_period(const method_choice& m, double theta0);
+
+/// The truncated Fourier solution of a motion method other than "exact"; throws
+/// domain_error for exact and for period-only methods.
+fourier_solution method_solution(const method_choice& m, double theta0);
+
+/// The names of the table as one line, "exact, harmonic, ..., order:N, agm:N, ...".
+std::string method_names();
+
+}  // namespace pendulum

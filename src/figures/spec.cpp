@@ -1,0 +1,587 @@
+#include "figures/spec.hpp"
+
+#include "cli/angle.hpp"
+#include "pendulum/amplitude.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace figures {
+
+std::string spec_problem::text() const {
+    std::string out = where.file;
+    if (where.line > 0) out += ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
+    return out + ": " + what;
+}
+
+namespace {
+
+std::string join_problems(const std::vector<spec_problem>& problems) {
+    std::string out;
+    for (const auto& p : problems) out += (out.empty() ? "" : "\n") + p.text();
+    return out;
+}
+
+constexpr std::array<plot_row, 6> plots = {{
+    {"trajectory", plot_kind::trajectory, "time", "theta(t)", "theta0 methods time range angle_unit",
+     "the law of motion theta(t) at one amplitude"},
+    {"phase", plot_kind::phase, "theta", "theta'/w0", "theta0 methods separatrix angle_unit",
+     "orbits in the phase plane, one per amplitude"},
+    {"period", plot_kind::period, "theta0", "T/T0", "methods range y angle_unit",
+     "the period against the amplitude: value, error in %, or log |error|"},
+    {"coefficient", plot_kind::coefficient, "theta0", "c_{2k+1}", "harmonic methods range angle_unit",
+     "one Fourier coefficient against the amplitude"},
+    {"convergence", plot_kind::convergence, "N", "|T_N/T - 1|", "theta0 orders",
+     "the period error of the iteration against its order N"},
+    {"spectrum", plot_kind::spectrum, "2k+1", "|c_{2k+1}|", "theta0 methods harmonics",
+     "the Fourier coefficients' magnitudes, on a log axis"},
+}};
+
+/// Keys every panel takes.
+constexpr std::string_view common_panel_keys = "plot title x_label y_label paper_file line";
+constexpr std::string_view figure_keys = "columns panel_width_cm panel_aspect legend title";
+constexpr std::string_view pendulum_keys = "length_m g";
+constexpr std::string_view top_keys = "figure pendulum panel";
+constexpr std::string_view line_keys = "x y label style";
+constexpr std::string_view method_keys = "method label style color marker";
+
+std::vector<std::string> words(std::string_view text) {
+    std::vector<std::string> out;
+    std::istringstream in{std::string(text)};
+    for (std::string w; in >> w;) out.push_back(w);
+    return out;
+}
+
+bool contains(const std::vector<std::string>& names, std::string_view name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string listed(const std::vector<std::string>& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out;
+}
+
+/// Collects problems while a spec is read.
+class reader {
+public:
+    explicit reader(std::string file) : file_(std::move(file)) {}
+
+    const std::string& file() const { return file_; }
+    std::vector<spec_problem>& problems() { return problems_; }
+
+    source_position at(const toml::source_region& r) const {
+        return {file_, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
+    }
+
+    void problem(const toml::node& n, std::string what) { problems_.push_back({at(n.source()), std::move(what)}); }
+    void problem(const source_position& where, std::string what) { problems_.push_back({where, std::move(what)}); }
+
+    /// Reports keys of `table` outside `allowed`, with a suggestion; `context` names the table.
+    void check_keys(const toml::table& table, const std::vector<std::string>& allowed, const std::string& context,
+                    const std::vector<std::string>& elsewhere = {}, const std::string& elsewhere_why = {}) {
+        for (const auto& [key, value] : table) {
+            const std::string name(key.str());
+            if (contains(allowed, name)) continue;
+            std::string what = "unknown key '" + name + "' in " + context;
+            if (contains(elsewhere, name)) {
+                what = "key '" + name + "' " + elsewhere_why;
+            } else if (const auto guess = suggest(name, allowed); !guess.empty()) {
+                what += "; did you mean " + guess + "?";
+            } else {
+                what += "; keys: " + listed(allowed);
+            }
+            problems_.push_back({at(key.source()), what});
+        }
+    }
+
+    std::optional<std::string> string(const toml::table& t, std::string_view key) {
+        const toml::node* n = t.get(key);
+        if (!n) return std::nullopt;
+        if (const auto* s = n->as_string()) return s->get();
+        problem(*n, "'" + std::string(key) + "' must be a string");
+        return std::nullopt;
+    }
+
+    std::optional<double> number(const toml::table& t, std::string_view key, double lo, double hi,
+                                 bool open_lo = false) {
+        const toml::node* n = t.get(key);
+        if (!n) return std::nullopt;
+        double v = 0;
+        if (const auto* i = n->as_integer()) {
+            v = static_cast<double>(i->get());
+        } else if (const auto* f = n->as_floating_point()) {
+            v = f->get();
+        } else {
+            problem(*n, "'" + std::string(key) + "' must be a number");
+            return std::nullopt;
+        }
+        if (!std::isfinite(v) || (open_lo ? v <= lo : v < lo) || v > hi) {
+            problem(*n, "'" + std::string(key) + "' = " + pendulum::format_double(v) + " is out of range; allowed " +
+                            (open_lo ? "above " : "from ") + pendulum::format_double(lo) + " to " +
+                            pendulum::format_double(hi));
+            return std::nullopt;
+        }
+        return v;
+    }
+
+    std::optional<int> integer(const toml::table& t, std::string_view key, int lo, int hi) {
+        const toml::node* n = t.get(key);
+        if (!n) return std::nullopt;
+        const auto* i = n->as_integer();
+        if (!i) {
+            problem(*n, "'" + std::string(key) + "' must be a whole number");
+            return std::nullopt;
+        }
+        if (i->get() < lo || i->get() > hi) {
+            problem(*n, "'" + std::string(key) + "' = " + std::to_string(i->get()) + " is out of range; allowed " +
+                            std::to_string(lo) + " to " + std::to_string(hi));
+            return std::nullopt;
+        }
+        return static_cast<int>(i->get());
+    }
+
+    std::optional<bool> boolean(const toml::table& t, std::string_view key) {
+        const toml::node* n = t.get(key);
+        if (!n) return std::nullopt;
+        if (const auto* b = n->as_boolean()) return b->get();
+        problem(*n, "'" + std::string(key) + "' must be true or false");
+        return std::nullopt;
+    }
+
+    /// A value from a fixed set of names, reported with the names and a suggestion.
+    template <class T, std::size_t N>
+    std::optional<T> choice(const toml::table& t, std::string_view key,
+                            const std::array<std::pair<std::string_view, T>, N>& options) {
+        const toml::node* n = t.get(key);
+        if (!n) return std::nullopt;
+        return choice_of(*n, key, options);
+    }
+
+    template <class T, std::size_t N>
+    std::optional<T> choice_of(const toml::node& n, std::string_view key,
+                               const std::array<std::pair<std::string_view, T>, N>& options) {
+        std::vector<std::string> names;
+        for (const auto& [name, value] : options) names.emplace_back(name);
+        const auto* s = n.as_string();
+        if (!s) {
+            problem(n, "'" + std::string(key) + "' must be one of " + listed(names));
+            return std::nullopt;
+        }
+        for (const auto& [name, value] : options) {
+            if (name == s->get()) return value;
+        }
+        std::string what = "'" + std::string(key) + "' = \"" + s->get() + "\" is not one of " + listed(names);
+        if (const auto guess = suggest(s->get(), names); !guess.empty()) what += "; did you mean " + guess + "?";
+        problem(n, what);
+        return std::nullopt;
+    }
+
+    /// An angle expression given as a string or a number.
+    std::optional<amplitude> angle(const toml::node& n, std::string_view key, bool amplitude_range) {
+        amplitude a;
+        if (const auto* s = n.as_string()) {
+            a.text = s->get();
+        } else if (const auto* i = n.as_integer()) {
+            a.text = std::to_string(i->get());
+        } else if (const auto* f = n.as_floating_point()) {
+            a.text = pendulum::format_double(f->get());
+        } else {
+            problem(n, "'" + std::string(key) + "' must be an angle such as \"9pi/10\" or \"170deg\"");
+            return std::nullopt;
+        }
+        try {
+            a.value = pendulum::cli::parse_angle(a.text);
+            if (!amplitude_range) pendulum::check_amplitude(a.value, std::string(key));
+            if (amplitude_range && !(a.value >= 0 && a.value <= std::acos(-1.0))) {
+                throw std::invalid_argument(std::string(key) + " must lie in [0, pi], got " +
+                                            pendulum::format_double(a.value));
+            }
+        } catch (const std::invalid_argument& e) {
+            problem(n, "'" + std::string(key) + "': " + e.what());
+            return std::nullopt;
+        }
+        return a;
+    }
+
+private:
+    std::string file_;
+    std::vector<spec_problem> problems_;
+};
+
+constexpr std::array<std::pair<std::string_view, plot::line_style>, 5> line_styles = {{
+    {"solid", plot::line_style::solid},
+    {"dashed", plot::line_style::dashed},
+    {"dotted", plot::line_style::dotted},
+    {"dash-dot", plot::line_style::dash_dot},
+    {"none", plot::line_style::none},
+}};
+
+constexpr std::array<std::pair<std::string_view, plot::marker_style>, 2> markers = {{
+    {"none", plot::marker_style::none},
+    {"circle", plot::marker_style::open_circle},
+}};
+
+constexpr std::array<std::pair<std::string_view, legend_mode>, 3> legend_modes = {{
+    {"first", legend_mode::first},
+    {"each", legend_mode::each},
+    {"none", legend_mode::none},
+}};
+
+constexpr std::array<std::pair<std::string_view, time_unit>, 3> time_units = {{
+    {"t/T", time_unit::period},
+    {"t/T0", time_unit::small_period},
+    {"t/s", time_unit::seconds},
+}};
+
+constexpr std::array<std::pair<std::string_view, period_axis>, 3> period_axes = {{
+    {"value", period_axis::value},
+    {"error-percent", period_axis::error_percent},
+    {"error-log", period_axis::error_log},
+}};
+
+constexpr std::array<std::pair<std::string_view, bool>, 2> angle_units = {{
+    {"rad", false},
+    {"deg", true},
+}};
+
+std::optional<plot::rgb> parse_color(std::string_view text) {
+    if (text.size() != 7 || text[0] != '#') return std::nullopt;
+    int v[3];
+    for (int i = 0; i < 3; ++i) {
+        const std::string part(text.substr(1 + 2 * i, 2));
+        if (!std::isxdigit(static_cast<unsigned char>(part[0])) || !std::isxdigit(static_cast<unsigned char>(part[1]))) {
+            return std::nullopt;
+        }
+        v[i] = std::stoi(part, nullptr, 16);
+    }
+    return plot::rgb{v[0] / 255.0, v[1] / 255.0, v[2] / 255.0};
+}
+
+std::optional<method_spec> read_method(reader& r, const toml::node& n, const plot_row& plot) {
+    method_spec m;
+    const toml::node* name_node = &n;
+    if (const auto* t = n.as_table()) {
+        r.check_keys(*t, words(method_keys), "a method table");
+        name_node = t->get("method");
+        if (!name_node) {
+            r.problem(n, "a method table needs method = \"NAME\"");
+            return std::nullopt;
+        }
+        if (auto label = r.string(*t, "label")) m.label = *label;
+        m.style = r.choice(*t, "style", line_styles);
+        m.marker = r.choice(*t, "marker", markers);
+        if (auto color = r.string(*t, "color")) {
+            m.color = parse_color(*color);
+            if (!m.color) r.problem(*t->get("color"), "'color' = \"" + *color + "\" is not a colour #rrggbb");
+        }
+    }
+    const auto* s = name_node->as_string();
+    if (!s) {
+        r.problem(*name_node, "a method is a name such as \"exact\" or \"order:6\", or a table with method = NAME");
+        return std::nullopt;
+    }
+    try {
+        m.method = pendulum::parse_method(s->get());
+    } catch (const pendulum::domain_error& e) {
+        std::vector<std::string> names;
+        for (const auto& row : pendulum::method_table()) names.emplace_back(row.name);
+        std::string what = e.what();
+        const std::string base = s->get().substr(0, s->get().find(':'));
+        if (!contains(names, base)) {
+            if (const auto guess = suggest(base, names); !guess.empty()) what += "; did you mean " + guess + "?";
+        }
+        r.problem(*name_node, what);
+        return std::nullopt;
+    }
+    const bool wants_motion = plot.kind != plot_kind::period;
+    if (wants_motion && !m.method.has_motion()) {
+        r.problem(*name_node, "method " + m.method.text() + " gives a period only; plot '" + std::string(plot.name) +
+                                  "' needs a law of motion (use it in a period panel)");
+        return std::nullopt;
+    }
+    return m;
+}
+
+std::vector<std::string> panel_keys_of(const plot_row& plot) {
+    auto keys = words(common_panel_keys);
+    for (auto& k : words(plot.keys)) keys.push_back(std::move(k));
+    return keys;
+}
+
+std::vector<std::string> all_panel_keys() {
+    std::vector<std::string> keys = words(common_panel_keys);
+    for (const auto& p : plots) {
+        for (auto& k : words(p.keys)) {
+            if (!contains(keys, k)) keys.push_back(std::move(k));
+        }
+    }
+    return keys;
+}
+
+void read_range(reader& r, const toml::table& t, const plot_row& plot, panel_spec& p) {
+    const toml::node* n = t.get("range");
+    if (!n) return;
+    const auto* a = n->as_array();
+    if (!a || a->size() != 2) {
+        r.problem(*n, "'range' must be a list of two values, [from, to]");
+        return;
+    }
+    std::array<double, 2> v{};
+    for (std::size_t i = 0; i < 2; ++i) {
+        const toml::node& e = *a->get(i);
+        if (plot.kind == plot_kind::trajectory) {
+            if (e.is_number()) {
+                v[i] = e.is_integer() ? static_cast<double>(e.as_integer()->get()) : e.as_floating_point()->get();
+            } else {
+                r.problem(e, "a time range is two numbers in the time unit, e.g. [0, 3]");
+                return;
+            }
+            if (!std::isfinite(v[i]) || std::fabs(v[i]) > 1e6) {
+                r.problem(e, "a time in 'range' must be finite and at most 1e6 in size");
+                return;
+            }
+        } else {
+            const auto angle = r.angle(e, "range", true);
+            if (!angle) return;
+            v[i] = angle->value;
+        }
+    }
+    if (!(v[0] < v[1])) {
+        r.problem(*n, "'range' must go from a smaller to a larger value");
+        return;
+    }
+    p.range = v;
+}
+
+std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figure_spec& f) {
+    panel_spec p;
+    p.where = r.at(t.source());
+    const toml::node* plot_node = t.get("plot");
+    if (!plot_node || !plot_node->is_string()) {
+        r.problem(plot_node ? r.at(plot_node->source()) : p.where,
+                  "a panel needs plot = one of trajectory, phase, period, coefficient, convergence, spectrum");
+        return std::nullopt;
+    }
+    const plot_row* plot = nullptr;
+    std::vector<std::string> plot_names;
+    for (const auto& row : plots) {
+        plot_names.emplace_back(row.name);
+        if (row.name == plot_node->as_string()->get()) plot = &row;
+    }
+    if (!plot) {
+        const std::string given = plot_node->as_string()->get();
+        std::string what = "unknown plot '" + given + "'; plots: " + listed(plot_names);
+        if (const auto guess = suggest(given, plot_names); !guess.empty()) what += "; did you mean " + guess + "?";
+        r.problem(*plot_node, what);
+        return std::nullopt;
+    }
+    p.plot = plot->kind;
+    const auto keys = panel_keys_of(*plot);
+    r.check_keys(t, keys, "a " + std::string(plot->name) + " panel", all_panel_keys(),
+                 "does not apply to plot '" + std::string(plot->name) + "'");
+
+    // Amplitudes: one for a trajectory, a list for the plots that draw several.
+    if (contains(keys, "theta0")) {
+        const toml::node* n = t.get("theta0");
+        if (!n) {
+            r.problem(p.where, "a " + std::string(plot->name) + " panel needs theta0");
+        } else if (const auto* a = n->as_array()) {
+            if (plot->kind == plot_kind::trajectory && a->size() != 1) {
+                r.problem(*n, "a trajectory panel takes one theta0");
+            } else if (a->empty()) {
+                r.problem(*n, "'theta0' lists no amplitude");
+            }
+            for (const auto& e : *a) {
+                if (auto v = r.angle(e, "theta0", false)) p.theta0.push_back(*v);
+            }
+        } else if (auto v = r.angle(*n, "theta0", false)) {
+            p.theta0.push_back(*v);
+        }
+    }
+    if (contains(keys, "methods")) {
+        const toml::node* n = t.get("methods");
+        if (!n) {
+            r.problem(p.where, "a " + std::string(plot->name) + " panel needs methods, e.g. [\"exact\", \"lowest\"]");
+        } else if (const auto* a = n->as_array(); !a || a->empty()) {
+            r.problem(*n, "'methods' must be a non-empty list, e.g. [\"exact\", \"lowest\"]");
+        } else {
+            for (const auto& e : *a) {
+                if (auto m = read_method(r, e, *plot)) p.methods.push_back(std::move(*m));
+            }
+        }
+    }
+    if (auto v = r.choice(t, "time", time_units)) {
+        p.time = *v;
+        if (p.time == time_unit::seconds && !f.pendulum) {
+            r.problem(*t.get("time"), "time = \"t/s\" needs a [pendulum] table with length_m");
+        }
+    }
+    read_range(r, t, *plot, p);
+    p.title = r.string(t, "title");
+    p.x_label = r.string(t, "x_label");
+    p.y_label = r.string(t, "y_label");
+    if (auto v = r.string(t, "paper_file")) {
+        if (v->empty() || v->find_first_of("/\\") != std::string::npos || (*v)[0] == '.') {
+            r.problem(*t.get("paper_file"), "'paper_file' must be a plain file name without a directory");
+        } else {
+            p.paper_file = *v;
+        }
+    }
+    if (auto v = r.choice(t, "y", period_axes)) p.y = *v;
+    if (auto v = r.integer(t, "harmonic", 1, 99)) {
+        if (*v % 2 == 0) {
+            r.problem(*t.get("harmonic"), "'harmonic' must be odd (1, 3, 5, ...): the even coefficients vanish");
+        } else {
+            p.harmonic = *v;
+        }
+    }
+    if (auto v = r.integer(t, "harmonics", 1, 100)) p.harmonics = *v;
+    if (const toml::node* n = t.get("orders")) {
+        const auto* a = n->as_array();
+        if (!a || a->size() != 2 || !a->get(0)->is_integer() || !a->get(1)->is_integer()) {
+            r.problem(*n, "'orders' must be two whole numbers, [first, last]");
+        } else {
+            const auto lo = a->get(0)->as_integer()->get();
+            const auto hi = a->get(1)->as_integer()->get();
+            if (lo < 0 || hi > pendulum::max_order || lo >= hi) {
+                r.problem(*n, "'orders' must satisfy 0 <= first < last <= " + std::to_string(pendulum::max_order));
+            } else {
+                p.orders = {static_cast<int>(lo), static_cast<int>(hi)};
+            }
+        }
+    }
+    if (auto v = r.boolean(t, "separatrix")) p.separatrix = *v;
+    if (auto v = r.choice(t, "angle_unit", angle_units)) p.degrees = *v;
+    if (const toml::node* n = t.get("line")) {
+        const auto* a = n->as_array();
+        if (!a || !a->is_array_of_tables()) {
+            r.problem(*n, "reference lines are [[panel.line]] tables");
+        } else {
+            for (const auto& e : *a) {
+                const auto& lt = *e.as_table();
+                r.check_keys(lt, words(line_keys), "a [[panel.line]]");
+                reference_line line;
+                line.x = r.number(lt, "x", -1e300, 1e300);
+                line.y = r.number(lt, "y", -1e300, 1e300);
+                if (line.x.has_value() == line.y.has_value() && (lt.contains("x") == lt.contains("y"))) {
+                    r.problem(e, "a reference line has either x = ... or y = ...");
+                }
+                if (auto label = r.string(lt, "label")) line.label = *label;
+                if (auto style = r.choice(lt, "style", line_styles)) line.style = *style;
+                p.lines.push_back(line);
+            }
+        }
+    }
+    return p;
+}
+
+}  // namespace
+
+spec_error::spec_error(std::vector<spec_problem> problems)
+    : std::invalid_argument(join_problems(problems)), problems_(std::move(problems)) {}
+
+std::span<const plot_row> plot_table() { return plots; }
+
+std::string suggest(std::string_view word, const std::vector<std::string>& names) {
+    // Edit distance with transpositions (optimal string alignment); a name within a third of
+    // the word's length (at least 1) is a likely typo.
+    std::string best;
+    std::size_t best_d = std::max<std::size_t>(1, word.size() / 3) + 1;
+    for (const auto& name : names) {
+        const std::size_t m = word.size();
+        const std::size_t n = name.size();
+        std::vector<std::vector<std::size_t>> d(m + 1, std::vector<std::size_t>(n + 1));
+        for (std::size_t i = 0; i <= m; ++i) d[i][0] = i;
+        for (std::size_t j = 0; j <= n; ++j) d[0][j] = j;
+        for (std::size_t i = 1; i <= m; ++i) {
+            for (std::size_t j = 1; j <= n; ++j) {
+                const std::size_t cost = word[i - 1] == name[j - 1] ? 0 : 1;
+                d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+                if (i > 1 && j > 1 && word[i - 1] == name[j - 2] && word[i - 2] == name[j - 1]) {
+                    d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+                }
+            }
+        }
+        if (d[m][n] < best_d) {
+            best_d = d[m][n];
+            best = name;
+        }
+    }
+    return best;
+}
+
+figure_spec parse_spec(std::string_view text, const std::string& file) {
+    reader r(file);
+    figure_spec f;
+    f.id = std::filesystem::path(file).stem().string();
+    toml::table doc;
+    try {
+        doc = toml::parse(text, file);
+    } catch (const toml::parse_error& e) {
+        throw spec_error({{r.at(e.source()), "not valid TOML: " + std::string(e.description())}});
+    }
+    r.check_keys(doc, words(top_keys), "the spec (tables: [figure], [pendulum], [[panel]])");
+
+    if (const toml::node* n = doc.get("figure")) {
+        if (const auto* t = n->as_table()) {
+            r.check_keys(*t, words(figure_keys), "[figure]");
+            f.columns = r.integer(*t, "columns", 1, 6);
+            f.panel_width_cm = r.number(*t, "panel_width_cm", 1.0, 100.0);
+            f.panel_aspect = r.number(*t, "panel_aspect", 0.1, 10.0);
+            if (auto v = r.choice(*t, "legend", legend_modes)) f.legend = *v;
+            if (auto v = r.string(*t, "title")) f.title = *v;
+        } else {
+            r.problem(*n, "'figure' must be a table: [figure]");
+        }
+    }
+    if (const toml::node* n = doc.get("pendulum")) {
+        if (const auto* t = n->as_table()) {
+            r.check_keys(*t, words(pendulum_keys), "[pendulum]");
+            pendulum_spec p;
+            if (!t->contains("length_m")) r.problem(*n, "[pendulum] needs length_m");
+            if (auto v = r.number(*t, "length_m", 0.0, 1e6, true)) p.length_m = *v;
+            if (auto v = r.number(*t, "g", 0.0, 1e4, true)) p.g = *v;
+            f.pendulum = p;
+        } else {
+            r.problem(*n, "'pendulum' must be a table: [pendulum]");
+        }
+    }
+    const toml::node* panels = doc.get("panel");
+    const auto* list = panels ? panels->as_array() : nullptr;
+    if (!panels) {
+        r.problem(source_position{file, 0, 0}, "the spec has no [[panel]]");
+    } else if (!list || !list->is_array_of_tables()) {
+        r.problem(*panels, "panels are [[panel]] tables");
+    } else if (list->size() > 26) {
+        r.problem(*panels, "a figure has at most 26 panels, (a) to (z)");
+    } else {
+        for (const auto& e : *list) {
+            if (auto p = read_panel(r, *e.as_table(), f)) f.panels.push_back(std::move(*p));
+        }
+    }
+    auto& problems = r.problems();
+    if (!problems.empty()) {
+        std::stable_sort(problems.begin(), problems.end(), [](const spec_problem& a, const spec_problem& b) {
+            return std::tie(a.where.line, a.where.column) < std::tie(b.where.line, b.where.column);
+        });
+        throw spec_error(std::move(problems));
+    }
+    return f;
+}
+
+figure_spec load_spec(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read spec '" + path.string() + "'");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in.good() && !in.eof()) throw std::runtime_error("cannot read spec '" + path.string() + "'");
+    return parse_spec(text.str(), path.string());
+}
+
+}  // namespace figures

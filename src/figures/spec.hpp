@@ -1,0 +1,143 @@
+#pragma once
+
+#include "pendulum/methods.hpp"
+#include "plot/figure.hpp"
+#include "plot/theme.hpp"
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace figures {
+
+/// A place in a spec file, for messages.
+struct source_position {
+    std::string file;  ///< the spec's file name (or the built-in spec's id)
+    int line = 0;      ///< 1-based line, 0 when unknown
+    int column = 0;    ///< 1-based column, 0 when unknown
+};
+
+/// One problem in a spec.
+struct spec_problem {
+    source_position where;  ///< where it is
+    std::string what;       ///< what is wrong, and what is allowed
+
+    /// "FILE:LINE:COLUMN: what".
+    std::string text() const;
+};
+
+/// Thrown for a spec with problems; what() lists every problem, one per line.
+class spec_error : public std::invalid_argument {
+public:
+    /// Collects the problems; there is at least one.
+    explicit spec_error(std::vector<spec_problem> problems);
+    /// The problems, in the order of the file.
+    const std::vector<spec_problem>& problems() const { return problems_; }
+
+private:
+    std::vector<spec_problem> problems_;
+};
+
+/// What a panel plots; one row of plot_table() each.
+enum class plot_kind { trajectory, phase, period, coefficient, convergence, spectrum };
+
+/// One row of the plot-kind table.
+struct plot_row {
+    std::string_view name;         ///< the spec's `plot` value
+    plot_kind kind;                ///< the kind
+    std::string_view x;            ///< what the x axis shows
+    std::string_view y;            ///< what the y axis shows
+    std::string_view keys;         ///< the panel keys it takes besides the common ones, space-separated
+    std::string_view description;  ///< one line for help and lists
+};
+
+/// Every plot kind, in the order help and lists show them.
+std::span<const plot_row> plot_table();
+
+/// An amplitude as written in the spec and its value in radians.
+struct amplitude {
+    std::string text;  ///< as written: "170deg", "95pi/100"
+    double value = 0;  ///< radians
+};
+
+/// A method of a panel, with the theme's style overridden where given.
+struct method_spec {
+    pendulum::method_choice method;            ///< the method
+    std::string label;                         ///< legend label; empty for the default
+    std::optional<plot::line_style> style;     ///< line style
+    std::optional<plot::rgb> color;            ///< colour
+    std::optional<plot::marker_style> marker;  ///< marker
+};
+
+/// A horizontal or vertical reference line with its legend label.
+struct reference_line {
+    std::optional<double> x;                       ///< vertical line at x
+    std::optional<double> y;                       ///< horizontal line at y
+    std::string label;                             ///< legend label; empty for none
+    plot::line_style style = plot::line_style::dashed;  ///< line style
+};
+
+/// The time axis of trajectory and phase panels.
+enum class time_unit { period, small_period, seconds };
+
+/// What a period panel's y axis shows.
+enum class period_axis { value, error_percent, error_log };
+
+/// Which panels carry a legend.
+enum class legend_mode { first, each, none };
+
+/// One panel of a spec.
+struct panel_spec {
+    plot_kind plot = plot_kind::trajectory;      ///< what it plots
+    source_position where;                       ///< the [[panel]] header
+    std::vector<amplitude> theta0;               ///< amplitudes, where the plot takes them
+    std::vector<method_spec> methods;            ///< methods, where the plot takes them
+    time_unit time = time_unit::period;          ///< trajectory and phase time unit
+    std::optional<std::array<double, 2>> range;  ///< x range: times, or amplitudes in radians
+    std::optional<std::string> title;            ///< title; default "(a) ϑ0 = ..."
+    std::optional<std::string> x_label;          ///< x axis label; default from the plot kind
+    std::optional<std::string> y_label;          ///< y axis label; default from the plot kind
+    std::string paper_file;                      ///< file name for --paper-files; empty for none
+    period_axis y = period_axis::value;          ///< period panels: value, error in %, log |error|
+    int harmonic = 1;                            ///< coefficient panels: 2k + 1
+    int harmonics = 15;                          ///< spectrum panels: how many odd harmonics
+    std::array<int, 2> orders{0, 40};            ///< convergence panels: first and last N
+    bool separatrix = false;                     ///< phase panels: draw the separatrix
+    bool degrees = false;                        ///< angle axes in degrees
+    std::vector<reference_line> lines;           ///< reference lines
+};
+
+/// The physical pendulum, when a spec gives one.
+struct pendulum_spec {
+    double length_m = 1.0;  ///< length in metres
+    double g = 9.80665;     ///< gravity in m/s^2
+};
+
+/// A figure described as data.
+struct figure_spec {
+    std::string id;                             ///< file name without .toml, or the built-in id
+    std::optional<int> columns;                 ///< panels per row
+    std::optional<double> panel_width_cm;       ///< default: the theme's
+    std::optional<double> panel_aspect;         ///< height / width; default: the theme's
+    legend_mode legend = legend_mode::first;    ///< which panels carry a legend
+    std::string title;                          ///< document metadata, not drawn
+    std::optional<pendulum_spec> pendulum;      ///< physical units
+    std::vector<panel_spec> panels;             ///< at least one
+};
+
+/// Reads a spec from TOML text; `file` names it in messages and gives the id (its stem).
+/// Throws spec_error listing every problem found.
+figure_spec parse_spec(std::string_view text, const std::string& file);
+
+/// Reads a spec file; throws spec_error for a bad spec, std::runtime_error if unreadable.
+figure_spec load_spec(const std::filesystem::path& path);
+
+/// The closest of `names` to `word` when it is a likely misspelling, else empty.
+std::string suggest(std::string_view word, const std::vector<std::string>& names);
+
+}  // namespace figures

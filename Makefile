@@ -14,7 +14,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 DEB_PACKAGES := g++ cmake make pkgconf
 DEB_PACKAGES += libgsl-dev libcairo2-dev libpango1.0-dev libcli11-dev libpng-dev
 DEB_PACKAGES += libgtest-dev libbenchmark-dev
-DEB_PACKAGES += libtomlplusplus-dev
+DEB_PACKAGES += libtomlplusplus-dev libgif-dev
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
 
 .PHONY: all deps build test bench figures update-baselines clean

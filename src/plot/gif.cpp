@@ -1,0 +1,214 @@
+#include "plot/gif.hpp"
+
+#include <gif_lib.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace plot {
+
+namespace {
+
+std::uint8_t to_byte(double v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
+
+rgb8 blend(const rgb& ink, const rgb& bg, double a) {
+    return {to_byte(ink.r * a + bg.r * (1 - a)), to_byte(ink.g * a + bg.g * (1 - a)), to_byte(ink.b * a + bg.b * (1 - a))};
+}
+
+bool same(const rgb8& a, const rgb8& b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+
+/// Deleter for a giflib colour map.
+struct color_map_deleter {
+    void operator()(ColorMapObject* m) const { GifFreeMapObject(m); }
+};
+
+[[noreturn]] void fail(const char* what, int error) {
+    throw std::runtime_error(std::string("GIF encoding failed (") + what + "): " +
+                             (GifErrorString(error) ? GifErrorString(error) : "unknown error"));
+}
+
+}  // namespace
+
+std::vector<rgb8> gif_palette(const std::vector<rgb>& inks, const rgb& background, int shades) {
+    std::vector<rgb8> palette{blend(background, background, 1.0)};
+    auto add = [&](const rgb8& c) {
+        if (palette.size() < 256 && std::none_of(palette.begin(), palette.end(), [&](const rgb8& p) { return same(p, c); })) {
+            palette.push_back(c);
+        }
+    };
+    for (const auto& ink : inks) add(blend(ink, background, 1.0));
+    for (int s = 1; s < shades; ++s) {
+        for (const auto& ink : inks) add(blend(ink, background, static_cast<double>(s) / shades));
+    }
+    // Where two inks cross, their anti-aliased edges mix.
+    for (std::size_t i = 0; i < inks.size(); ++i) {
+        for (std::size_t j = i + 1; j < inks.size(); ++j) add(blend(inks[i], inks[j], 0.5));
+    }
+    return palette;
+}
+
+struct gif_encoder::state {
+    int width = 0;
+    int height = 0;
+    double fps = 30;
+    std::vector<rgb8> palette;
+    std::array<std::uint8_t, 32768> nearest{};  // 5 bits per channel -> palette index
+    std::vector<GifPixelType> previous;
+    std::vector<GifPixelType> current;
+    std::string bytes;
+    GifFileType* gif = nullptr;
+
+    static int write(GifFileType* g, const GifByteType* data, int n) {
+        static_cast<state*>(g->UserData)->bytes.append(reinterpret_cast<const char*>(data), static_cast<std::size_t>(n));
+        return n;
+    }
+
+    std::uint8_t index_of(std::uint32_t pixel) const {
+        // Cairo's ARGB32 is premultiplied; frames are opaque, so alpha is 255 and the
+        // channels are the colour.
+        const std::uint32_t r = (pixel >> 16) & 0xff;
+        const std::uint32_t g = (pixel >> 8) & 0xff;
+        const std::uint32_t b = pixel & 0xff;
+        return nearest[(r >> 3) << 10 | (g >> 3) << 5 | (b >> 3)];
+    }
+};
+
+gif_encoder::gif_encoder(int width, int height, std::vector<rgb8> palette, double fps) : state_(std::make_unique<state>()) {
+    if (width < 1 || height < 1 || width > 65535 || height > 65535) {
+        throw std::invalid_argument("GIF size must be 1 to 65535 pixels each way");
+    }
+    if (palette.empty() || palette.size() > 256) throw std::invalid_argument("a GIF palette has 1 to 256 colours");
+    if (!(fps > 0 && fps <= 100)) throw std::invalid_argument("GIF frame rate must be above 0 and at most 100");
+    auto& s = *state_;
+    s.width = width;
+    s.height = height;
+    s.fps = fps;
+    s.palette = std::move(palette);
+    for (std::uint32_t key = 0; key < s.nearest.size(); ++key) {
+        // The centre of the 5-bit cell: a palette colour is always nearest to itself.
+        const int r = static_cast<int>((key >> 10) << 3 | 4);
+        const int g = static_cast<int>(((key >> 5) & 31) << 3 | 4);
+        const int b = static_cast<int>((key & 31) << 3 | 4);
+        int best = 0;
+        int best_d = std::numeric_limits<int>::max();
+        for (std::size_t i = 0; i < s.palette.size(); ++i) {
+            const int dr = r - s.palette[i].r;
+            const int dg = g - s.palette[i].g;
+            const int db = b - s.palette[i].b;
+            // Weighted towards green, as the eye is.
+            const int d = 2 * dr * dr + 4 * dg * dg + 3 * db * db;
+            if (d < best_d) {
+                best_d = d;
+                best = static_cast<int>(i);
+            }
+        }
+        s.nearest[key] = static_cast<std::uint8_t>(best);
+    }
+    int error = 0;
+    s.gif = EGifOpen(&s, &state::write, &error);
+    if (!s.gif) fail("open", error);
+    EGifSetGifVersion(s.gif, true);
+    int bits = 1;
+    while ((1 << bits) < static_cast<int>(s.palette.size())) ++bits;
+    std::unique_ptr<ColorMapObject, color_map_deleter> map(GifMakeMapObject(1 << bits, nullptr));
+    if (!map) throw std::bad_alloc();
+    for (std::size_t i = 0; i < s.palette.size(); ++i) {
+        map->Colors[i] = GifColorType{s.palette[i].r, s.palette[i].g, s.palette[i].b};
+    }
+    if (EGifPutScreenDesc(s.gif, width, height, bits, 0, map.get()) == GIF_ERROR) fail("screen", s.gif->Error);
+    // NETSCAPE2.0: loop forever.
+    const GifByteType app[] = {'N', 'E', 'T', 'S', 'C', 'A', 'P', 'E', '2', '.', '0'};
+    const GifByteType loop[] = {1, 0, 0};
+    if (EGifPutExtensionLeader(s.gif, APPLICATION_EXT_FUNC_CODE) == GIF_ERROR ||
+        EGifPutExtensionBlock(s.gif, sizeof app, app) == GIF_ERROR ||
+        EGifPutExtensionBlock(s.gif, sizeof loop, loop) == GIF_ERROR || EGifPutExtensionTrailer(s.gif) == GIF_ERROR) {
+        fail("loop", s.gif->Error);
+    }
+    s.current.resize(static_cast<std::size_t>(width) * height);
+}
+
+gif_encoder::~gif_encoder() {
+    if (state_ && state_->gif) {
+        int error = 0;
+        EGifCloseFile(state_->gif, &error);
+    }
+}
+
+void gif_encoder::add_frame(const unsigned char* argb, int stride) {
+    auto& s = *state_;
+    if (!s.gif) throw std::logic_error("GIF already finished");
+    const int w = s.width;
+    const int h = s.height;
+    for (int y = 0; y < h; ++y) {
+        const auto* row = reinterpret_cast<const std::uint32_t*>(argb + static_cast<std::ptrdiff_t>(y) * stride);
+        GifPixelType* out = s.current.data() + static_cast<std::ptrdiff_t>(y) * w;
+        std::uint32_t last_pixel = row[0] + 1;
+        GifPixelType last_index = 0;
+        for (int x = 0; x < w; ++x) {
+            if (row[x] != last_pixel) {
+                last_pixel = row[x];
+                last_index = s.index_of(last_pixel);
+            }
+            out[x] = last_index;
+        }
+    }
+    // The rectangle that changed since the previous frame (the whole frame at first).
+    int x0 = 0, y0 = 0, x1 = w - 1, y1 = h - 1;
+    if (!s.previous.empty()) {
+        x0 = w;
+        y0 = h;
+        x1 = -1;
+        y1 = -1;
+        for (int y = 0; y < h; ++y) {
+            const auto* a = s.current.data() + static_cast<std::ptrdiff_t>(y) * w;
+            const auto* b = s.previous.data() + static_cast<std::ptrdiff_t>(y) * w;
+            if (std::memcmp(a, b, static_cast<std::size_t>(w)) == 0) continue;
+            y0 = std::min(y0, y);
+            y1 = y;
+            int left = 0;
+            while (a[left] == b[left]) ++left;
+            int right = w - 1;
+            while (a[right] == b[right]) --right;
+            x0 = std::min(x0, left);
+            x1 = std::max(x1, right);
+        }
+        if (x1 < 0) x0 = y0 = x1 = y1 = 0;  // unchanged: one pixel keeps the frame's delay
+    }
+    // Delays in hundredths of a second, rounded so that they add up to the true time.
+    const auto centiseconds = [&](int n) { return static_cast<int>(std::lround(100.0 * n / s.fps)); };
+    GraphicsControlBlock gcb{};
+    gcb.DisposalMode = DISPOSE_DO_NOT;
+    gcb.UserInputFlag = false;
+    gcb.DelayTime = centiseconds(frames_ + 1) - centiseconds(frames_);
+    gcb.TransparentColor = NO_TRANSPARENT_COLOR;
+    GifByteType ext[4];
+    EGifGCBToExtension(&gcb, ext);
+    if (EGifPutExtension(s.gif, GRAPHICS_EXT_FUNC_CODE, sizeof ext, ext) == GIF_ERROR) fail("delay", s.gif->Error);
+    const int rw = x1 - x0 + 1;
+    const int rh = y1 - y0 + 1;
+    if (EGifPutImageDesc(s.gif, x0, y0, rw, rh, false, nullptr) == GIF_ERROR) fail("frame", s.gif->Error);
+    for (int y = y0; y <= y1; ++y) {
+        if (EGifPutLine(s.gif, s.current.data() + static_cast<std::ptrdiff_t>(y) * w + x0, rw) == GIF_ERROR) {
+            fail("pixels", s.gif->Error);
+        }
+    }
+    s.previous.swap(s.current);
+    if (s.current.empty()) s.current.resize(s.previous.size());
+    ++frames_;
+}
+
+std::string gif_encoder::finish() {
+    auto& s = *state_;
+    if (!s.gif) throw std::logic_error("GIF already finished");
+    int error = 0;
+    const int status = EGifCloseFile(s.gif, &error);
+    s.gif = nullptr;
+    if (status == GIF_ERROR) fail("close", error);
+    return std::move(s.bytes);
+}
+
+}  // namespace plot

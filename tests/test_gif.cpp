@@ -1,0 +1,135 @@
+// The GIF encoder: frames, delays, looping, palette mapping and reproducible bytes,
+// checked by decoding the file with giflib.
+#include "plot/gif.hpp"
+#include "plot/handles.hpp"
+
+#include <cairo.h>
+#include <gif_lib.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+
+namespace {
+
+using namespace plot;
+
+/// A white frame with a black bar at x and a blue disc.
+surface_ptr frame(int x) {
+    surface_ptr s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 64, 48));
+    context_ptr cr(cairo_create(s.get()));
+    cairo_set_source_rgb(cr.get(), 1, 1, 1);
+    cairo_paint(cr.get());
+    cairo_set_source_rgb(cr.get(), 0, 0, 0);
+    cairo_rectangle(cr.get(), x, 10, 4, 20);
+    cairo_fill(cr.get());
+    cairo_set_source_rgb(cr.get(), 0.0, 0.447, 0.698);
+    cairo_arc(cr.get(), 40, 30, 6.3, 0, 6.3);
+    cairo_fill(cr.get());
+    cairo_surface_flush(s.get());
+    return s;
+}
+
+std::string encode(const std::vector<int>& xs, double fps) {
+    gif_encoder gif(64, 48, gif_palette({{0, 0, 0}, {0.0, 0.447, 0.698}}, {1, 1, 1}, 8), fps);
+    for (int x : xs) {
+        auto s = frame(x);
+        gif.add_frame(cairo_image_surface_get_data(s.get()), cairo_image_surface_get_stride(s.get()));
+    }
+    EXPECT_EQ(gif.frames(), static_cast<int>(xs.size()));
+    return gif.finish();
+}
+
+/// A decoded GIF, freed on scope exit.
+struct decoded {
+    explicit decoded(const std::string& bytes) : data(bytes) {
+        int error = 0;
+        gif = DGifOpen(this, &decoded::read, &error);
+        if (!gif || DGifSlurp(gif) == GIF_ERROR) throw std::runtime_error("not a GIF");
+    }
+    ~decoded() {
+        int error = 0;
+        if (gif) DGifCloseFile(gif, &error);
+    }
+    static int read(GifFileType* g, GifByteType* buf, int n) {
+        auto* self = static_cast<decoded*>(g->UserData);
+        const int left = static_cast<int>(self->data.size() - self->pos);
+        n = std::min(n, left);
+        std::memcpy(buf, self->data.data() + self->pos, static_cast<std::size_t>(n));
+        self->pos += static_cast<std::size_t>(n);
+        return n;
+    }
+    int delay(int i) const {
+        GraphicsControlBlock gcb;
+        DGifSavedExtensionToGCB(gif, i, &gcb);
+        return gcb.DelayTime;
+    }
+    GifColorType pixel(int i, int x, int y) const {
+        const SavedImage& im = gif->SavedImages[i];
+        const auto& d = im.ImageDesc;
+        const int index = im.RasterBits[(y - d.Top) * d.Width + (x - d.Left)];
+        return gif->SColorMap->Colors[index];
+    }
+    std::string data;
+    std::size_t pos = 0;
+    GifFileType* gif = nullptr;
+};
+
+TEST(Gif, FramesDelaysAndLoop) {
+    const std::string bytes = encode({5, 9, 9, 13}, 30);
+    EXPECT_EQ(bytes.substr(0, 6), "GIF89a");
+    const decoded g(bytes);
+    ASSERT_EQ(g.gif->ImageCount, 4);
+    EXPECT_EQ(g.gif->SWidth, 64);
+    EXPECT_EQ(g.gif->SHeight, 48);
+    // 30 frames per second in hundredths: 3, 4, 3, 3 add up to the true 13.33.
+    EXPECT_EQ(g.delay(0) + g.delay(1) + g.delay(2), 10);
+    EXPECT_EQ(g.delay(0) + g.delay(1) + g.delay(2) + g.delay(3), 13);
+    // The loop extension, before the first frame.
+    EXPECT_NE(bytes.find("NETSCAPE2.0"), std::string::npos);
+    EXPECT_LT(bytes.find("NETSCAPE2.0"), bytes.find(','));
+    // The first frame is whole; later ones only what changed (the bar), an unchanged one a pixel.
+    EXPECT_EQ(g.gif->SavedImages[0].ImageDesc.Width, 64);
+    EXPECT_EQ(g.gif->SavedImages[1].ImageDesc.Left, 5);
+    EXPECT_EQ(g.gif->SavedImages[1].ImageDesc.Width, 8);
+    EXPECT_EQ(g.gif->SavedImages[2].ImageDesc.Width * g.gif->SavedImages[2].ImageDesc.Height, 1);
+}
+
+TEST(Gif, PixelsMapToThePalette) {
+    const decoded g(encode({5, 9}, 25));
+    const auto white = g.pixel(0, 1, 1);
+    EXPECT_EQ(white.Red + white.Green + white.Blue, 3 * 255);
+    const auto black = g.pixel(0, 6, 20);
+    EXPECT_EQ(black.Red + black.Green + black.Blue, 0);
+    const auto blue = g.pixel(0, 40, 30);
+    EXPECT_EQ(blue.Red, 0);
+    EXPECT_EQ(blue.Green, 114);
+    EXPECT_EQ(blue.Blue, 178);
+    // The second frame's bar.
+    const auto bar = g.pixel(1, 10, 20);
+    EXPECT_EQ(bar.Red + bar.Green + bar.Blue, 0);
+    EXPECT_EQ(g.delay(0), 4);
+}
+
+TEST(Gif, SameFramesSameBytes) { EXPECT_EQ(encode({1, 2, 3}, 30), encode({1, 2, 3}, 30)); }
+
+TEST(Gif, PaletteHasShadesAndStaysSmall) {
+    const auto p = gif_palette({{0, 0, 0}, {0.0, 0.447, 0.698}, {0.835, 0.369, 0.0}}, {1, 1, 1}, 16);
+    EXPECT_EQ(p[0].r, 255);
+    EXPECT_EQ(p[1].r + p[1].g + p[1].b, 0);
+    EXPECT_LE(p.size(), 256u);
+    EXPECT_GE(p.size(), 3u * 15);
+    const auto many = gif_palette(std::vector<rgb>(40, rgb{0.5, 0.2, 0.1}), {1, 1, 1}, 64);
+    EXPECT_LE(many.size(), 256u);
+}
+
+TEST(Gif, BadArguments) {
+    EXPECT_THROW(gif_encoder(0, 10, {{0, 0, 0}}, 30), std::invalid_argument);
+    EXPECT_THROW(gif_encoder(10, 10, {}, 30), std::invalid_argument);
+    EXPECT_THROW(gif_encoder(10, 10, {{0, 0, 0}}, 0), std::invalid_argument);
+    gif_encoder g(4, 4, {{0, 0, 0}}, 30);
+    g.finish();
+    EXPECT_THROW(g.finish(), std::logic_error);
+}
+
+}  // namespace

@@ -43,7 +43,7 @@ constexpr std::array<plot_row, 6> plots = {{
 }};
 
 /// Keys every panel takes.
-constexpr std::string_view common_panel_keys = "plot title x_label y_label paper_file line";
+constexpr std::string_view common_panel_keys = "plot title x_label y_label y_range paper_file line";
 constexpr std::string_view figure_keys = "columns panel_width_cm panel_aspect legend title";
 constexpr std::string_view pendulum_keys = "length_m g";
 constexpr std::string_view top_keys = "figure pendulum panel";
@@ -423,6 +423,23 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
         }
     }
     read_range(r, t, *plot, p);
+    if (const toml::node* n = t.get("y_range")) {
+        const auto* a = n->as_array();
+        if (!a || a->size() != 2 || !a->get(0)->is_number() || !a->get(1)->is_number()) {
+            r.problem(*n, "'y_range' must be two numbers, [from, to]");
+        } else {
+            const auto value = [](const toml::node& e) {
+                return e.is_integer() ? static_cast<double>(e.as_integer()->get()) : e.as_floating_point()->get();
+            };
+            const double lo = value(*a->get(0));
+            const double hi = value(*a->get(1));
+            if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi)) {
+                r.problem(*n, "'y_range' must go from a smaller to a larger finite value");
+            } else {
+                p.y_range = std::array<double, 2>{lo, hi};
+            }
+        }
+    }
     p.title = r.string(t, "title");
     p.x_label = r.string(t, "x_label");
     p.y_label = r.string(t, "y_label");

@@ -20,6 +20,7 @@ struct series {
     line_style line = line_style::solid;    ///< line style
     marker_style marker = marker_style::none;  ///< marker
     int color = 0;                          ///< index into the theme's palette
+    bool autoscale = true;                  ///< false: leaves the axis limits alone (reference lines)
 };
 
 /// Axis scale.

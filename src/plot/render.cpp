@@ -211,6 +211,7 @@ tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizon
     double lo = std::numeric_limits<double>::infinity();
     double hi = -lo;
     for (const auto& s : data) {
+        if (!s.autoscale) continue;
         const auto& v = horizontal ? s.x : s.y;
         for (double d : v) {
             if (!std::isfinite(d) || (a.kind == scale::log && !(d > 0))) continue;

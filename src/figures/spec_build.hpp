@@ -1,0 +1,31 @@
+#pragma once
+
+#include "figures/spec.hpp"
+#include "plot/figure.hpp"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace figures {
+
+/// Choices from the command line that change what a spec shows.
+struct spec_overrides {
+    std::vector<amplitude> theta0;  ///< replaces the amplitudes: one trajectory panel each, or the lists
+};
+
+/// The figure a spec describes, its data computed by the core library.
+plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrides = {});
+
+/// An angle expression as written, typeset as Pango markup: "95pi/100" -> 95π/100 (italic
+/// π), "170deg" -> 170°, "pi-1e-6" -> π − 10⁻⁶.
+std::string typeset_angle(std::string_view text);
+
+/// The legend label of a method where the spec gives none: "lowest order", "order 6", ...
+std::string method_label(const pendulum::method_choice& m);
+
+/// The default line style of a method: circles for the exact solution, dotted for the
+/// harmonic and polynomial approximants, solid for the paper's orders, dashed for formulas.
+plot::line_style method_line(const pendulum::method_choice& m);
+
+}  // namespace figures

@@ -2,6 +2,7 @@
 // the right data, match the committed baseline images, and bad input touches no file.
 #include "figures/batch.hpp"
 #include "figures/catalog.hpp"
+#include "figures/spec_build.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "plot/output.hpp"
@@ -39,9 +40,10 @@ std::set<std::string> files_in(const fs::path& dir) {
 
 TEST(Catalog, EveryFigureOfThePaperAndItsAliases) {
     const auto& c = figures::catalog();
-    ASSERT_EQ(c.size(), 8u);
-    const char* ids[] = {"c1-lowest", "trajectory-lowest", "coefficients-first", "trajectory-first",
-                         "coefficients-second", "trajectory-second", "period", "convergence"};
+    ASSERT_EQ(c.size(), 12u);
+    const char* ids[] = {"c1-lowest",         "trajectory-lowest", "coefficients-first", "trajectory-first",
+                         "coefficients-second", "trajectory-second", "period",            "convergence",
+                         "period-formulas",   "period-error",      "phase-portrait",     "spectrum"};
     for (std::size_t i = 0; i < c.size(); ++i) {
         EXPECT_EQ(c[i].id, ids[i]);
         if (i < 7) {
@@ -51,7 +53,7 @@ TEST(Catalog, EveryFigureOfThePaperAndItsAliases) {
     EXPECT_THROW(figures::find("fig8"), std::invalid_argument);
     for (const auto& e : c) {
         const auto f = figures::build(e);
-        EXPECT_EQ(f.panels.size(), e.paper_files.empty() ? 1u : e.paper_files.size()) << e.id;
+        EXPECT_EQ(f.panels.size(), e.spec.panels.size()) << e.id;
         EXPECT_LE(f.panels.size(), static_cast<std::size_t>(f.rows * f.cols));
         for (const auto& p : f.panels) {
             EXPECT_FALSE(p.x.label.empty());
@@ -63,10 +65,10 @@ TEST(Catalog, EveryFigureOfThePaperAndItsAliases) {
 
 TEST(Catalog, PanelsHaveThePapersSizes) {
     EXPECT_EQ(figures::build(figures::find("fig1")).panel_width_cm, 6.0);
-    EXPECT_EQ(figures::find("fig5").paper_width_cm, 4.3);
-    EXPECT_EQ(figures::find("fig6").paper_width_cm, 4.2);
-    EXPECT_EQ(figures::find("fig2").paper_files.back(), "Fig.Comparison.LowestD");
-    EXPECT_EQ(figures::find("fig6").paper_files.front(), "Fig.Lamb.4a");
+    EXPECT_EQ(figures::build(figures::find("fig5")).panel_width_cm, 4.3);
+    EXPECT_EQ(figures::build(figures::find("fig6")).panel_width_cm, 4.2);
+    EXPECT_EQ(figures::find("fig2").spec.panels.back().paper_file, "Fig.Comparison.LowestD");
+    EXPECT_EQ(figures::find("fig6").spec.panels.front().paper_file, "Fig.Lamb.4a");
 }
 
 TEST(Catalog, DataComeFromTheCore) {
@@ -100,29 +102,36 @@ TEST(Catalog, DataComeFromTheCore) {
     EXPECT_EQ(f2.rows, 2);
     EXPECT_EQ(f2.cols, 2);
     for (const auto& s : f2.panels[3].data) EXPECT_NEAR(s.y.front(), 9 * pi / 10, 1e-14);
-    EXPECT_NE(f2.panels[3].label.find("9\u03c0/10"), std::string::npos);
+    EXPECT_NE(f2.panels[3].label.find("9<i>\u03c0</i>/10"), std::string::npos);
+    // Amplitudes as the paper writes them.
+    EXPECT_NE(figures::build(figures::find("fig6")).panels[1].label.find("95<i>\u03c0</i>/100"), std::string::npos);
 }
 
 TEST(Catalog, AmplitudesCanBeReplaced) {
     figures::build_options o;
-    o.amplitudes = {170 * pi / 180};
+    o.amplitudes = {{"170deg", 170 * pi / 180}};
     const auto f = figures::build(figures::find("trajectory-first"), o);
     ASSERT_EQ(f.panels.size(), 1u);
     EXPECT_EQ(f.rows, 1);
     EXPECT_EQ(f.cols, 1);
-    EXPECT_NE(f.panels[0].label.find("17\u03c0/18"), std::string::npos);
-    o.amplitudes = {0.5, 1, 1.5, 2, 2.5};
+    // As typed, and no "(a)" on a figure of one panel.
+    EXPECT_EQ(f.panels[0].label, "<i>\u03d1</i><sub>0</sub> = 170\u00b0");
+    o.amplitudes = {{"0.5", 0.5}, {"1", 1}, {"1.5", 1.5}, {"2", 2}, {"2.5", 2.5}};
     const auto g = figures::build(figures::find("trajectory-second"), o);
     EXPECT_EQ(g.rows, 2);
     EXPECT_EQ(g.cols, 3);
 }
 
 TEST(Catalog, AmplitudeLabels) {
-    EXPECT_EQ(figures::amplitude_label(pi / 2), "\u03c0/2");
-    EXPECT_EQ(figures::amplitude_label(9 * pi / 10), "9\u03c0/10");
-    EXPECT_EQ(figures::amplitude_label(0.99 * pi), "99\u03c0/100");
-    EXPECT_EQ(figures::amplitude_label(1.0), "1");
-    EXPECT_EQ(figures::amplitude_label(2.5), "2.5");
+    EXPECT_EQ(figures::typeset_angle("pi/2"), "<i>\u03c0</i>/2");
+    EXPECT_EQ(figures::typeset_angle("95pi/100"), "95<i>\u03c0</i>/100");
+    EXPECT_EQ(figures::typeset_angle("0.999pi"), "0.999<i>\u03c0</i>");
+    EXPECT_EQ(figures::typeset_angle("170deg"), "170\u00b0");
+    EXPECT_EQ(figures::typeset_angle("pi-1e-6"), "<i>\u03c0</i> \u2212 10<sup>\u22126</sup>");
+    EXPECT_EQ(figures::typeset_angle("pi - 2.5e-6"), "<i>\u03c0</i> \u2212 2.5\u00d710<sup>\u22126</sup>");
+    EXPECT_EQ(figures::typeset_angle("9*pi/10"), "9<i>\u03c0</i>/10");
+    EXPECT_EQ(figures::typeset_angle("-1.5"), "\u22121.5");
+    EXPECT_EQ(figures::typeset_angle("1.2"), "1.2");
 }
 
 TEST(Baselines, RenderedFiguresMatchTheCommittedImages) {
@@ -177,7 +186,9 @@ TEST(RenderCommand, WritesEveryRequestedFile) {
     ASSERT_EQ(r.status, 0) << r.err;
     std::set<std::string> expected;
     for (const auto& e : figures::catalog()) {
-        for (const auto& name : e.paper_files) expected.insert(name + ".eps");
+        for (const auto& p : e.spec.panels) {
+            if (!p.paper_file.empty()) expected.insert(p.paper_file + ".eps");
+        }
     }
     EXPECT_EQ(expected.size(), 19u);
     EXPECT_EQ(files_in(dir), expected);
@@ -289,6 +300,10 @@ TEST(ListAndData, CsvQuotesAndPlainText) {
 
 TEST(ListAndData, FilesForPaperNames) {
     const std::vector<const figures::entry*> chosen = {&figures::find("fig7"), &figures::find("convergence")};
+    // Only some panels with paper files (more amplitudes than paper panels) is an error, before any work.
+    figures::build_options five;
+    for (int i = 1; i <= 5; ++i) five.amplitudes.push_back({std::to_string(i * 0.5), i * 0.5});
+    EXPECT_THROW(figures::files_for({&figures::find("fig2")}, {"pdf"}, "out", true, five), std::invalid_argument);
     const auto files = figures::files_for(chosen, {"eps", "pdf"}, "out", true);
     ASSERT_EQ(files.size(), 4u);
     EXPECT_EQ(files[0].path, fs::path("out/Fig.Comparison.PeriodA.eps"));

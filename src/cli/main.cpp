@@ -1,17 +1,21 @@
 // pendulum-figures: the command line. Parsing and validation only; the work is in the libraries.
 #include "cli/angle.hpp"
+#include "cli/eval_columns.hpp"
 #include "cli/table.hpp"
 #include "figures/batch.hpp"
 #include "figures/catalog.hpp"
+#include "figures/spec_build.hpp"
 #include "plot/output.hpp"
 #include "plot/theme.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
+#include "pendulum/methods.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -34,18 +38,28 @@ public:
 constexpr int max_samples = 10'000'000;
 constexpr double max_periods = 1e6;
 
-std::vector<double> parse_amplitudes(const std::string& text) {
-    std::vector<double> values;
+/// Amplitudes as typed and their values; figure titles show them as typed.
+std::vector<figures::amplitude> parse_amplitudes(const std::string& text) {
+    std::vector<figures::amplitude> values;
     for (const auto& item : cli::split_list(text)) {
         try {
             const double v = cli::parse_angle(item);
             check_amplitude(v);
-            values.push_back(v);
+            values.push_back({item, v});
         } catch (const std::invalid_argument& e) {
             throw usage_error("--theta0 '" + item + "': " + e.what());
         }
     }
     return values;
+}
+
+/// Parses a method name (NAME or NAME:N) for the option `option`.
+method_choice parse_method_option(const std::string& option, const std::string& text) {
+    try {
+        return parse_method(text);
+    } catch (const domain_error& e) {
+        throw usage_error(option + " '" + text + "': " + e.what());
+    }
 }
 
 void check_order(int order) {
@@ -83,6 +97,7 @@ std::string lowercase_first(std::string s) {
 struct eval_options {
     std::string theta0;
     std::vector<std::string> orders;
+    std::vector<std::string> methods;
     std::string format = "csv";
 };
 
@@ -90,36 +105,18 @@ cli::table eval_table(const eval_options& o) {
     const auto amplitudes = parse_amplitudes(o.theta0);
     std::vector<int> orders;
     for (const auto& text : o.orders) orders.push_back(parse_order(text));
+    std::vector<method_choice> methods;
+    for (const auto& text : o.methods) methods.push_back(parse_method_option("--method", text));
     cli::table t;
-    t.columns = {"theta0",    "period_exact", "period_lowest", "period_first", "period_second",
-                 "c1_exact",  "c3_exact",     "c5_exact",      "c1_lowest",    "c1_first",
-                 "c3_first",  "c1_second",    "c3_second",     "c5_second",    "c1_poly",
-                 "c3_poly",   "c5_poly"};
+    for (const auto& c : cli::eval_columns()) t.columns.emplace_back(c.name);
     for (int n : orders) t.columns.push_back("period_order" + std::to_string(n));
-    for (double theta0 : amplitudes) {
-        const exact_solution exact(theta0);
-        const auto low = lowest_order(theta0);
-        const auto first = first_order(theta0);
-        const auto second = second_order(theta0);
-        const auto poly = polynomial(theta0);
-        std::vector<double> row = {theta0,
-                                   exact.period_ratio(),
-                                   low.period_ratio(),
-                                   first.period_ratio(),
-                                   second.period_ratio(),
-                                   exact.coefficient(0),
-                                   exact.coefficient(1),
-                                   exact.coefficient(2),
-                                   low.coefficients[0],
-                                   first.coefficients[0],
-                                   first.coefficients[1],
-                                   second.coefficients[0],
-                                   second.coefficients[1],
-                                   second.coefficients[2],
-                                   poly.coefficients[0],
-                                   poly.coefficients[1],
-                                   poly.coefficients[2]};
-        for (int n : orders) row.push_back(iterated(theta0, n).period_ratio());
+    for (const auto& m : methods) t.columns.push_back("period_" + m.text());
+    for (const auto& a : amplitudes) {
+        const cli::eval_point point(a.value);
+        std::vector<double> row;
+        for (const auto& c : cli::eval_columns()) row.push_back(c.value(point));
+        for (int n : orders) row.push_back(iterated(a.value, n).period_ratio());
+        for (const auto& m : methods) row.push_back(method_period(m, a.value));
         t.rows.push_back(std::move(row));
     }
     return t;
@@ -135,19 +132,20 @@ struct trajectory_options {
     std::string format = "csv";
 };
 
-const std::vector<std::string> method_names = {"exact",  "harmonic",   "lowest", "first",
-                                               "second", "polynomial", "order"};
-
 cli::table trajectory_table(const trajectory_options& o, bool order_given, bool periods_given) {
     const auto amplitudes = parse_amplitudes(o.theta0);
     if (amplitudes.size() != 1) throw usage_error("--theta0 takes one amplitude for trajectory");
-    const double theta0 = amplitudes.front();
-    int order = -1;
+    const double theta0 = amplitudes.front().value;
+    std::string method_text = o.method;
     if (o.method == "order") {
-        if (!order_given) throw usage_error("--method order needs --order N");
-        order = parse_order(o.order);
+        if (!order_given) throw usage_error("--method order needs --order N (or write --method order:N)");
+        method_text = "order:" + std::to_string(parse_order(o.order));
     } else if (order_given) {
         throw usage_error("--order is only used with --method order, not --method " + o.method);
+    }
+    const method_choice method = parse_method_option("--method", method_text);
+    if (!method.has_motion()) {
+        throw usage_error("--method " + method.text() + " gives a period only, not a law of motion; see 'list'");
     }
     if (o.at.empty() == (o.samples == 0)) {
         throw usage_error("give either --at LIST or --samples N (with --periods P)");
@@ -175,19 +173,14 @@ cli::table trajectory_table(const trajectory_options& o, bool order_given, bool 
     }
 
     const exact_solution exact(theta0);
-    fourier_solution approx;
-    if (o.method == "harmonic") approx = harmonic(theta0);
-    if (o.method == "lowest") approx = lowest_order(theta0);
-    if (o.method == "first") approx = first_order(theta0);
-    if (o.method == "second") approx = second_order(theta0);
-    if (o.method == "polynomial") approx = polynomial(theta0);
-    if (o.method == "order") approx = iterated(theta0, order);
+    const bool is_exact = method.row->name == "exact";
+    const fourier_solution approx = is_exact ? fourier_solution{} : method_solution(method, theta0);
 
     cli::table t;
     t.columns = {"t_over_T", "theta"};
     const double period = 4.0 * exact.quarter_period();  // exact T in units of 1/w0
     for (double s : times) {
-        const double theta = o.method == "exact" ? exact.theta_at_fraction(s) : approx.theta(s * period);
+        const double theta = is_exact ? exact.theta_at_fraction(s) : approx.theta(s * period);
         t.rows.push_back({s, theta});
     }
     return t;
@@ -214,7 +207,21 @@ void check_output_dir(const std::string& dir) {
     }
 }
 
-std::vector<const figures::entry*> selected_figures(const std::vector<std::string>& ids, bool all) {
+/// Reads a figure id or spec file; a bad spec is bad input.
+figures::entry load_figure(const std::string& id) {
+    try {
+        return figures::load(id);
+    } catch (const figures::spec_error& e) {
+        throw usage_error(std::string("bad figure spec:\n") + e.what());
+    } catch (const std::runtime_error& e) {
+        throw usage_error(e.what());
+    }
+}
+
+/// The figures named on the command line (ids, aliases or spec files), each once; spec
+/// files are read into `loaded`, which must outlive the result.
+std::vector<const figures::entry*> selected_figures(const std::vector<std::string>& ids, bool all,
+                                                    std::deque<figures::entry>& loaded) {
     if (all && !ids.empty()) throw usage_error("give figure ids or --all, not both");
     if (!all && ids.empty()) throw usage_error("name the figures to render, or use --all (see 'list')");
     std::vector<const figures::entry*> chosen;
@@ -223,14 +230,27 @@ std::vector<const figures::entry*> selected_figures(const std::vector<std::strin
         return chosen;
     }
     for (const auto& id : ids) {
-        const auto* e = &figures::find(id);
-        if (std::find(chosen.begin(), chosen.end(), e) == chosen.end()) chosen.push_back(e);
+        const figures::entry* e = nullptr;
+        if (id.ends_with(".toml")) {
+            e = &loaded.emplace_back(load_figure(id));
+        } else {
+            e = &figures::find(id);
+        }
+        const auto same = std::find_if(chosen.begin(), chosen.end(), [&](const auto* c) { return c->id == e->id; });
+        if (same != chosen.end()) {
+            // The same figure twice is drawn once; two different ones cannot share file names.
+            if ((*same)->source != e->source) {
+                throw usage_error("two different figures are named '" + e->id + "' and would write the same files");
+            }
+            continue;
+        }
+        chosen.push_back(e);
     }
     return chosen;
 }
 
-int run_render(const render_options& o) {
-    const auto chosen = selected_figures(o.ids, o.all);
+/// Renders the chosen figures with the options of `o` other than the ids.
+int render_entries(const std::vector<const figures::entry*>& chosen, const render_options& o) {
     std::vector<std::string> formats;
     for (const auto& f : cli::split_list(o.formats)) {
         plot::check_format(f);
@@ -243,14 +263,20 @@ int run_render(const render_options& o) {
     }
     figures::build_options build;
     if (!o.theta0.empty()) {
-        if (std::none_of(chosen.begin(), chosen.end(), [](const auto* e) { return e->takes_amplitudes; })) {
-            throw usage_error("--theta0 applies to trajectory figures, and none was chosen");
+        if (std::none_of(chosen.begin(), chosen.end(), [](const auto* e) { return e->takes_amplitudes(); })) {
+            throw usage_error("--theta0 applies to figures with trajectory, phase, convergence or spectrum panels, "
+                              "and none was chosen");
         }
         build.amplitudes = parse_amplitudes(o.theta0);
     }
     check_output_dir(o.dir);
 
-    const auto jobs = figures::files_for(chosen, formats, o.dir, o.paper_files);
+    std::vector<figures::figure_file> jobs;
+    try {
+        jobs = figures::files_for(chosen, formats, o.dir, o.paper_files, build);
+    } catch (const std::invalid_argument& e) {
+        throw usage_error(e.what());
+    }
     if (jobs.empty()) throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
 
     try {
@@ -262,24 +288,136 @@ int run_render(const render_options& o) {
     return 0;
 }
 
+int run_render(const render_options& o) {
+    std::deque<figures::entry> loaded;
+    return render_entries(selected_figures(o.ids, o.all, loaded), o);
+}
+
+/// `text` padded with spaces to `width` (at least one space).
+std::string padded(const std::string& text, std::size_t width) {
+    return text + std::string(text.size() < width ? width - text.size() : 1, ' ');
+}
+
 std::string list_text() {
     std::ostringstream out;
+    out << "Figures (render ID, or a spec file NAME.toml; show ID prints a figure's spec):\n";
     for (const auto& e : figures::catalog()) {
-        std::string id = e.id + (e.alias.empty() ? "" : " (" + e.alias + ")");
-        out << id << std::string(id.size() < 28 ? 28 - id.size() : 1, ' ') << e.paper_figure
-            << std::string(e.paper_figure.size() < 8 ? 8 - e.paper_figure.size() : 1, ' ') << e.description << "\n";
+        out << "  " << padded(e.id + (e.alias.empty() ? "" : " (" + e.alias + ")"), 28) << padded(e.paper_figure, 8)
+            << e.description() << "\n";
+    }
+    out << "\nMethods (NAME, or NAME:N where marked):\n";
+    for (const auto& m : method_table()) {
+        const std::string name = std::string(m.name) +
+                                 (m.min_n < 0 ? "" : ":N (N = " + std::to_string(m.min_n) + ".." + std::to_string(m.max_n) + ")");
+        out << "  " << padded(name, 28) << padded(m.kind == method_kind::motion ? "motion" : "period", 8)
+            << m.description << "\n";
+    }
+    out << "\nPlot kinds (plot = KIND in a spec's [[panel]], or the plot command):\n";
+    for (const auto& p : figures::plot_table()) {
+        out << "  " << padded(std::string(p.name), 28) << p.description << "; keys: " << p.keys << "\n";
     }
     return out.str();
 }
 
 std::string figure_data(const std::string& id, const std::string& theta0) {
-    const auto& e = figures::find(id);
+    const figures::entry e = load_figure(id);
     figures::build_options build;
     if (!theta0.empty()) {
-        if (!e.takes_amplitudes) throw usage_error("--theta0 applies to trajectory figures, not to " + e.id);
+        if (!e.takes_amplitudes()) {
+            throw usage_error("--theta0 applies to figures with trajectory, phase, convergence or spectrum panels, "
+                              "not to " + e.id);
+        }
         build.amplitudes = parse_amplitudes(theta0);
     }
     return figures::figure_csv(figures::build(e, build));
+}
+
+std::string format_list() {
+    std::string out;
+    for (const auto& f : plot::format_names()) out += (out.empty() ? "" : ", ") + f;
+    return out;
+}
+
+struct plot_options {
+    std::string kind;
+    std::string theta0;
+    std::string methods;
+    std::string range;
+    std::string time;
+    int harmonic = 0;
+    std::string y;
+    std::string name;
+    std::string dir = ".";
+    std::string formats = "pdf,png";
+    std::string theme = "paper";
+    double dpi = 300;
+};
+
+/// A TOML string: the text in quotes, with backslashes and quotes escaped.
+std::string toml_string(const std::string& text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) throw usage_error("control character in an option");
+        out += c;
+    }
+    return out + "\"";
+}
+
+/// A TOML array of strings from a comma-separated list.
+std::string toml_list(const std::string& text) {
+    std::string out = "[";
+    for (const auto& item : cli::split_list(text)) out += (out.size() > 1 ? ", " : "") + toml_string(item);
+    return out + "]";
+}
+
+/// The plot command: a one-panel spec made from the options, checked like a spec file.
+int run_plot(const plot_options& o) {
+    std::string toml = "[[panel]]\nplot = " + toml_string(o.kind) + "\n";
+    if (!o.theta0.empty()) toml += "theta0 = " + toml_list(o.theta0) + "\n";
+    if (!o.methods.empty()) toml += "methods = " + toml_list(o.methods) + "\n";
+    if (!o.range.empty()) {
+        const auto parts = cli::split_list(o.range);
+        if (parts.size() != 2) throw usage_error("--range '" + o.range + "': give two values, A,B");
+        if (o.kind == "trajectory") {
+            double v[2];
+            for (int i = 0; i < 2; ++i) {
+                try {
+                    v[i] = cli::parse_expression(parts[static_cast<std::size_t>(i)]);
+                } catch (const std::invalid_argument& e) {
+                    throw usage_error(std::string("--range: ") + e.what());
+                }
+            }
+            toml += "range = [" + format_double(v[0]) + ", " + format_double(v[1]) + "]\n";
+        } else {
+            toml += "range = " + toml_list(o.range) + "\n";
+        }
+    }
+    if (!o.time.empty()) toml += "time = " + toml_string(o.time) + "\n";
+    if (o.harmonic != 0) toml += "harmonic = " + std::to_string(o.harmonic) + "\n";
+    if (!o.y.empty()) toml += "y = " + toml_string(o.y) + "\n";
+    figures::entry e;
+    try {
+        e.source = toml;
+        e.spec = figures::parse_spec(toml, "plot");
+    } catch (const figures::spec_error& err) {
+        std::string message;
+        for (const auto& p : err.problems()) {
+            // The spec is made from the options: name the option, not a line of it.
+            message += (message.empty() ? "" : "\n") + std::string("plot ") + o.kind + ": " + p.what;
+        }
+        throw usage_error(message);
+    }
+    e.id = o.name.empty() ? o.kind : o.name;
+    if (e.id.find('/') != std::string::npos || e.id.empty() || e.id[0] == '.') {
+        throw usage_error("--name '" + e.id + "': a file name without a directory");
+    }
+    render_options r;
+    r.dir = o.dir;
+    r.formats = o.formats;
+    r.theme = o.theme;
+    r.dpi = o.dpi;
+    return render_entries({&e}, r);
 }
 
 const char* const angle_help =
@@ -316,22 +454,28 @@ int main(int argc, char** argv) {
         ->type_name("N")
         ->take_all()
         ->delimiter(',');
+    eval->add_option("--method", ev.methods,
+                     "Add a column period_NAME for any method of 'list', e.g. kidd-fogg, agm:2, series:3; "
+                     "repeatable")
+        ->type_name("NAME")
+        ->take_all()
+        ->delimiter(',');
     eval->add_option("--format", ev.format, "Output format: csv (default) or json")
         ->type_name("csv|json");
-    eval->footer(std::string("\n") + angle_help +
-                 "\n\nColumns: theta0, period_exact, period_lowest, period_first, period_second "
-                 "(all T/T0), c1_exact, c3_exact, c5_exact, c1_lowest, c1_first, c3_first, "
-                 "c1_second, c3_second, c5_second, c1_poly, c3_poly, c5_poly, then period_orderN "
-                 "for each --order N. Numbers round-trip a double.\n\n"
-                 "Example:\n  pendulum-figures eval --theta0 'pi/2,9pi/10' --order 12");
+    eval->footer(std::string("\n") + angle_help + "\n\nColumns: " + cli::eval_columns_help() +
+                 "; then period_orderN for each --order N and period_NAME for each --method NAME. Periods are "
+                 "T/T0. Numbers round-trip a double.\n\n"
+                 "Examples:\n"
+                 "  pendulum-figures eval --theta0 'pi/2,9pi/10' --order 12\n"
+                 "  pendulum-figures eval --theta0 170deg --method kidd-fogg,lima-arun,ganley,agm:2");
 
     trajectory_options tr;
     auto* traj = app.add_subcommand(
         "trajectory", "Print theta(t) for one amplitude, exact or approximate, at times t/T.");
     traj->add_option("--theta0", tr.theta0, "Amplitude, one angle")->required()->type_name("ANGLE");
     traj->add_option("--method", tr.method,
-                     "exact (default), harmonic, lowest, first, second, polynomial, or order "
-                     "(with --order N)")
+                     "A method with a law of motion: exact (default), harmonic, lowest, first, second, "
+                     "polynomial, or order:N (or order with --order N); see 'list'")
         ->type_name("METHOD");
     auto* order_opt = traj->add_option("--order", tr.order, "Order N of --method order (0.." +
                                                                 std::to_string(max_order) + ")")
@@ -353,8 +497,8 @@ int main(int argc, char** argv) {
                  "  pendulum-figures trajectory --theta0 pi/2 --method order --order 8 --at 0,0.125,0.25");
 
     render_options ro;
-    auto* render = app.add_subcommand("render", "Draw figures of the catalog into files (PNG, PDF, SVG, EPS).");
-    render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), e.g. period fig2")->type_name("ID");
+    auto* render = app.add_subcommand("render", "Draw figures (built-in or spec files) into files (PNG, PDF, SVG, EPS).");
+    render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), or spec files NAME.toml")->type_name("ID");
     render->add_flag("--all", ro.all, "Render every figure of the catalog");
     render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR");
     render->add_option("-f,--formats", ro.formats, "Comma-separated formats: png, pdf, svg, eps (default: pdf,png)")
@@ -376,8 +520,42 @@ int main(int argc, char** argv) {
                    "  pendulum-figures render fig2 --theta0 170deg --theme slides -f png --dpi 150\n"
                    "  pendulum-figures render --all --paper-files -f eps -o paper/");
 
-    auto* list = app.add_subcommand("list", "List the figures: id, figure of the paper, description.");
-    list->footer("\nExample:\n  pendulum-figures list\n  pendulum-figures render fig7 -f pdf");
+    auto* list = app.add_subcommand("list", "List the figures, the methods and the plot kinds.");
+    list->footer("\nExamples:\n  pendulum-figures list\n  pendulum-figures render fig7 -f pdf\n"
+                 "  pendulum-figures show fig2 > my-figure.toml");
+
+    std::string show_id;
+    auto* show = app.add_subcommand("show", "Print the spec of a built-in figure, to copy and edit.");
+    show->add_option("id", show_id, "Figure id or alias (see 'list')")->required()->type_name("ID");
+    show->footer("\nThe spec is TOML: [figure], an optional [pendulum], and one [[panel]] per panel. Edit it and "
+                 "render it with 'render FILE.toml'.\n\nExample:\n"
+                 "  pendulum-figures show fig2 > my-figure.toml\n  pendulum-figures render my-figure.toml -f png");
+
+    plot_options po;
+    auto* plot_cmd = app.add_subcommand("plot", "Draw a one-panel figure of any plot kind from the command line.");
+    plot_cmd->add_option("kind", po.kind, "trajectory, phase, period, coefficient, convergence or spectrum")
+        ->required()
+        ->type_name("KIND");
+    plot_cmd->add_option("--theta0", po.theta0, "Amplitudes, a comma-separated LIST (one for trajectory)")
+        ->type_name("LIST");
+    plot_cmd->add_option("--methods", po.methods, "Methods, a comma-separated LIST (see 'list')")->type_name("LIST");
+    plot_cmd->add_option("--range", po.range, "x range a,b: times, or amplitudes as angles")->type_name("A,B");
+    plot_cmd->add_option("--time", po.time, "Time axis of a trajectory: t/T (default) or t/T0")->type_name("UNIT");
+    plot_cmd->add_option("--harmonic", po.harmonic, "Coefficient plots: the harmonic 2k+1 (default 1)")
+        ->type_name("N");
+    plot_cmd->add_option("--y", po.y, "Period plots: value (default), error-percent or error-log")->type_name("AXIS");
+    plot_cmd->add_option("--name", po.name, "File name without extension (default: the kind)")->type_name("NAME");
+    plot_cmd->add_option("-o,--output-dir", po.dir, "Existing directory for the files (default: .)")->type_name("DIR");
+    plot_cmd->add_option("-f,--formats", po.formats, "Comma-separated formats: " + format_list() + " (default: pdf,png)")
+        ->type_name("LIST");
+    plot_cmd->add_option("--theme", po.theme, "paper (default) or slides")->type_name("NAME");
+    plot_cmd->add_option("--dpi", po.dpi, "PNG resolution in dots per inch, 10..2400 (default: 300)")->type_name("N");
+    plot_cmd->footer(std::string("\n") + angle_help +
+                     "\n\nThe same as a spec with one [[panel]] of these keys; 'show' prints specs to start from.\n\n"
+                     "Examples:\n"
+                     "  pendulum-figures plot trajectory --theta0 170deg --methods exact,harmonic,order:6 --range 0,3\n"
+                     "  pendulum-figures plot period --methods exact,kidd-fogg,agm:2 --y error-log -f png\n"
+                     "  pendulum-figures plot phase --theta0 'pi/3,2pi/3,0.99pi' --methods exact,first");
 
     std::string data_id;
     std::string data_file;
@@ -394,7 +572,10 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
         std::ostringstream out;
         if (*render) return run_render(ro);
-        if (*list) {
+        if (*plot_cmd) return run_plot(po);
+        if (*show) {
+            out << figures::find(show_id).source;
+        } else if (*list) {
             out << list_text();
         } else if (*data) {
             const std::string csv = figure_data(data_id, data_theta0);
@@ -406,11 +587,6 @@ int main(int argc, char** argv) {
         } else if (*eval) {
             cli::write_table(out, eval_table(ev), cli::parse_table_format(ev.format));
         } else if (*traj) {
-            if (std::find(method_names.begin(), method_names.end(), tr.method) == method_names.end()) {
-                throw usage_error("--method '" + tr.method +
-                                  "': unknown method; use exact, harmonic, lowest, first, second, "
-                                  "polynomial or order");
-            }
             const auto format = cli::parse_table_format(tr.format);
             cli::write_table(out, trajectory_table(tr, order_opt->count() > 0, periods_opt->count() > 0),
                              format);
@@ -432,10 +608,10 @@ int main(int argc, char** argv) {
         if (app.get_subcommands().empty()) {
             // No command, or an unknown word where the command should be.
             if (argc < 2) {
-                message = "a command is required: eval, trajectory, list, render or data (see --help)";
+                message = "a command is required: eval, trajectory, list, show, render, plot or data (see --help)";
             } else if (argv[1][0] != '-') {
                 message = std::string("unknown command '") + argv[1] +
-                          "'; commands: eval, trajectory, list, render, data (see --help)";
+                          "'; commands: eval, trajectory, list, show, render, plot, data (see --help)";
             }
         }
         std::cerr << "pendulum-figures: error: " << message << "\n";

@@ -1,5 +1,6 @@
 #include "figures/batch.hpp"
 
+#include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
 
 #include <algorithm>
@@ -9,20 +10,32 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 namespace figures {
 
 std::vector<figure_file> files_for(const std::vector<const entry*>& figures, const std::vector<std::string>& formats,
-                                   const std::filesystem::path& dir, bool paper_files) {
+                                   const std::filesystem::path& dir, bool paper_files, const build_options& options) {
     std::vector<figure_file> files;
     for (const auto* e : figures) {
         if (!paper_files) {
             for (const auto& f : formats) files.push_back({e, -1, dir / (e->id + "." + f)});
             continue;
         }
-        for (std::size_t i = 0; i < e->paper_files.size(); ++i) {
-            for (const auto& f : formats) files.push_back({e, static_cast<int>(i), dir / (e->paper_files[i] + "." + f)});
+        const auto panels = panels_of(*e, options);
+        // A figure that is not in the paper has no paper files at all, and is left out.
+        if (std::all_of(panels.begin(), panels.end(), [](const panel_spec& p) { return p.paper_file.empty(); })) {
+            continue;
+        }
+        for (std::size_t i = 0; i < panels.size(); ++i) {
+            if (panels[i].paper_file.empty()) {
+                throw std::invalid_argument("figure '" + e->id + "' panel " + std::to_string(i + 1) +
+                                            " has no paper file name (paper_file in its spec)" +
+                                            (options.amplitudes.empty() ? "" : "; give at most as many --theta0 "
+                                                                               "amplitudes as the figure has panels"));
+            }
+            for (const auto& f : formats) files.push_back({e, static_cast<int>(i), dir / (panels[i].paper_file + "." + f)});
         }
     }
     return files;
@@ -66,8 +79,9 @@ std::string figure_csv(const plot::figure& f) {
     std::ostringstream out;
     out << "panel,series,x,y\n";
     for (std::size_t p = 0; p < f.panels.size(); ++p) {
-        const char panel = static_cast<char>('a' + p);
+        const std::string panel = panel_name(p);
         for (const auto& s : f.panels[p].data) {
+            if (!s.autoscale) continue;  // a reference line, not data
             const std::string name = csv_field(plain_text(s.label));
             for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
                 out << panel << ',' << name << ',' << pendulum::format_double(s.x[i]) << ','
@@ -131,7 +145,7 @@ void write_figures(const std::vector<figure_file>& files, const build_options& o
                 } else {
                     const figure_file& f = files[t.file];
                     const plot::figure& whole = *built[t.figure];
-                    plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, f.figure->paper_width_cm), theme,
+                    plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, f.figure->spec.panel_width_cm.value_or(6.0)), theme,
                                f.path, output);
                 }
             } catch (...) {

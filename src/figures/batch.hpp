@@ -19,9 +19,11 @@ struct figure_file {
 };
 
 /// The files for figures in formats (file extensions) under dir: DIR/ID.EXT, or with
-/// paper_files one per panel under the names of the paper's LaTeX source.
+/// paper_files one per panel under the panels' paper_file names (figures without any are
+/// left out). Throws std::invalid_argument, before any work, if only some panels have one.
 std::vector<figure_file> files_for(const std::vector<const entry*>& figures, const std::vector<std::string>& formats,
-                                   const std::filesystem::path& dir, bool paper_files);
+                                   const std::filesystem::path& dir, bool paper_files,
+                                   const build_options& options = {});
 
 /// Every series of the figure as CSV with the header panel,series,x,y; panels are a, b, ...
 /// and series are named by their legend text without markup.

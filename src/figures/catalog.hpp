@@ -1,5 +1,6 @@
 #pragma once
 
+#include "figures/spec.hpp"
 #include "plot/figure.hpp"
 
 #include <string>
@@ -8,33 +9,39 @@
 
 namespace figures {
 
-/// One figure of the catalog.
+/// A figure the tool can draw: a built-in spec or a spec file.
 struct entry {
-    std::string id;                        ///< stable name, used for file names
-    std::string alias;                     ///< fig1 ... fig7, or empty
-    std::string paper_figure;              ///< "Fig. 1" ... or "new"
-    std::string description;               ///< one line
-    std::vector<std::string> paper_files;  ///< per-panel file names in the paper's LaTeX source
-    double paper_width_cm = 6.0;           ///< panel width in the paper
-    bool takes_amplitudes = false;         ///< trajectory figure: --theta0 replaces its amplitudes
+    std::string id;            ///< stable name, used for file names
+    std::string alias;         ///< fig1 ... fig7, or empty
+    std::string paper_figure;  ///< "Fig. 1" ... or "new"; empty for a spec file
+    std::string source;        ///< the spec's TOML text
+    figure_spec spec;          ///< the spec, read
+
+    /// One line: the spec's [figure] title.
+    const std::string& description() const { return spec.title; }
+    /// True if --theta0 can replace amplitudes of this figure.
+    bool takes_amplitudes() const;
 };
 
-/// Every figure, in the paper's order, then the new ones.
+/// Every built-in figure, in the paper's order, then the new ones.
 const std::vector<entry>& catalog();
 
-/// The entry for an id or alias; throws std::invalid_argument listing the valid ids otherwise.
+/// The built-in entry for an id or alias; throws std::invalid_argument listing the valid ids otherwise.
 const entry& find(std::string_view id);
+
+/// A built-in figure by id or alias, or a spec file (a name ending in .toml) read from disk;
+/// throws spec_error for a bad spec and std::runtime_error for an unreadable file.
+entry load(std::string_view id_or_file);
 
 /// Choices that change what a figure shows.
 struct build_options {
-    std::vector<double> amplitudes;  ///< trajectory amplitudes; empty for the paper's
+    std::vector<amplitude> amplitudes;  ///< --theta0: replaces the spec's amplitudes
 };
+
+/// The panels the figure will have with these options, as specs (for paper file names).
+std::vector<panel_spec> panels_of(const entry& e, const build_options& options = {});
 
 /// The figure's data from the core library, arranged with the plot layer.
 plot::figure build(const entry& e, const build_options& options = {});
-
-/// A label for an amplitude: "9π/10" for a simple multiple of pi, "170°" for whole degrees,
-/// otherwise radians with four significant digits.
-std::string amplitude_label(double theta0);
 
 }  // namespace figures

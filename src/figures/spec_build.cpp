@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -29,11 +30,7 @@ std::vector<double> grid(double a, double b, int n) {
     return v;
 }
 
-std::string panel_letter(std::size_t i) {
-    std::string letters;
-    for (std::size_t n = i + 1; n > 0; n = (n - 1) / 26) letters.insert(letters.begin(), static_cast<char>('a' + (n - 1) % 26));
-    return "(" + letters + ")";
-}
+std::string panel_letter(std::size_t i) { return "(" + panel_name(i) + ")"; }
 
 /// How a method's series looks: the theme's defaults unless the spec overrides them.
 struct series_style {
@@ -285,7 +282,7 @@ plot::panel phase_panel(const context&, const panel_spec& p) {
     panel.x.label = p.degrees ? "<i>\u03d1</i> (\u00b0)" : "<i>\u03d1</i>";
     if (!p.degrees) panel.x.ticks = plot::tick_kind::multiples_of_pi;
     panel.x.max_ticks = 5;
-    panel.y.label = "<i>\u03d1\u0307</i>/<i>\u03c9</i><sub>0</sub>";
+    panel.y.label = "d<i>\u03d1</i>/d(<i>\u03c9</i><sub>0</sub><i>t</i>)";
     const auto s_grid = grid(0, 1, 400);
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
         const amplitude& a = p.theta0[i];
@@ -374,9 +371,9 @@ plot::panel build_panel(const context& c, const panel_spec& p) {
     throw std::logic_error("plot kind without a builder");
 }
 
-/// The spec's panels with the command line's amplitudes put in: one trajectory panel per
-/// amplitude, in place of the trajectory panels; the lists of the other plots replaced.
-std::vector<panel_spec> with_overrides(const figure_spec& spec, const spec_overrides& o) {
+}  // namespace
+
+std::vector<panel_spec> panels_with(const figure_spec& spec, const spec_overrides& o) {
     if (o.theta0.empty()) return spec.panels;
     std::vector<panel_spec> out;
     const auto first_trajectory = std::find_if(spec.panels.begin(), spec.panels.end(),
@@ -406,7 +403,11 @@ std::vector<panel_spec> with_overrides(const figure_spec& spec, const spec_overr
     return out;
 }
 
-}  // namespace
+std::string panel_name(std::size_t i) {
+    std::string letters;
+    for (std::size_t n = i + 1; n > 0; n = (n - 1) / 26) letters.insert(letters.begin(), static_cast<char>('a' + (n - 1) % 26));
+    return letters;
+}
 
 std::string method_label(const pendulum::method_choice& m) {
     const std::string_view name = m.row->name;
@@ -490,7 +491,7 @@ std::string typeset_angle(std::string_view text) {
 }
 
 plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrides) {
-    const auto panels = with_overrides(spec, overrides);
+    const auto panels = panels_with(spec, overrides);
     if (panels.empty()) throw std::invalid_argument("figure '" + spec.id + "' has no panels");
     plot::figure f;
     const int n = static_cast<int>(panels.size());
@@ -519,16 +520,33 @@ plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrid
         }
         if (spec.legend == legend_mode::none) panel.legend = plot::legend_place::none;
         for (const auto& line : p.lines) {
-            // A reference line crosses the whole panel and leaves the axis limits alone.
+            // A reference line crosses the whole panel, from limit to limit of the other axis
+            // (its data range when the axis has no limits), and leaves the limits alone.
             plot::series s{line.label.empty() ? "" : plot::tex_to_markup(line.label), {}, {}, line.style,
                            marker_style::none, 0};
             s.autoscale = false;
+            const auto extent = [&](const plot::axis& a, bool horizontal) {
+                double lo = a.min.value_or(std::numeric_limits<double>::infinity());
+                double hi = a.max.value_or(-std::numeric_limits<double>::infinity());
+                for (const auto& d : panel.data) {
+                    for (double v : horizontal ? d.x : d.y) {
+                        if (!std::isfinite(v) || !d.autoscale) continue;
+                        if (!a.min) lo = std::min(lo, v);
+                        if (!a.max) hi = std::max(hi, v);
+                    }
+                }
+                // Past the data by the widest margin an axis adds, so the line meets the frame.
+                const double pad = a.kind == plot::scale::log ? 0.0 : (hi - lo);
+                return std::array<double, 2>{a.min ? lo : lo - pad, a.max ? hi : hi + pad};
+            };
             if (line.y) {
-                s.x = {-1e300, 1e300};
+                const auto x = extent(panel.x, true);
+                s.x = {x[0], x[1]};
                 s.y = {*line.y, *line.y};
             } else {
+                const auto y = extent(panel.y, false);
                 s.x = {*line.x, *line.x};
-                s.y = {-1e300, 1e300};
+                s.y = {y[0], y[1]};
             }
             panel.data.push_back(std::move(s));
         }

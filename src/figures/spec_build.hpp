@@ -14,12 +14,20 @@ struct spec_overrides {
     std::vector<amplitude> theta0;  ///< replaces the amplitudes: one trajectory panel each, or the lists
 };
 
+/// The spec's panels with the command line's amplitudes put in: one trajectory panel per
+/// amplitude in place of the trajectory panels (keeping their paper file names in order),
+/// and the amplitude lists of phase, convergence and spectrum panels replaced.
+std::vector<panel_spec> panels_with(const figure_spec& spec, const spec_overrides& overrides);
+
 /// The figure a spec describes, its data computed by the core library.
 plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrides = {});
 
 /// An angle expression as written, typeset as Pango markup: "95pi/100" -> 95π/100 (italic
 /// π), "170deg" -> 170°, "pi-1e-6" -> π − 10⁻⁶.
 std::string typeset_angle(std::string_view text);
+
+/// The name of the i-th panel (from 0): a, b, ..., z, aa, ab, ...
+std::string panel_name(std::size_t i);
 
 /// The legend label of a method where the spec gives none: "lowest order", "order 6", ...
 std::string method_label(const pendulum::method_choice& m);

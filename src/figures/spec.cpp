@@ -1,6 +1,7 @@
 #include "figures/spec.hpp"
 
 #include "cli/angle.hpp"
+#include "figures/toml_reader.hpp"
 #include "pendulum/amplitude.hpp"
 
 #include <toml++/toml.h>
@@ -23,7 +24,10 @@ namespace {
 
 std::string join_problems(const std::vector<spec_problem>& problems) {
     std::string out;
-    for (const auto& p : problems) out += (out.empty() ? "" : "\n") + p.text();
+    for (const auto& p : problems) {
+        if (!out.empty()) out += '\n';
+        out += p.text();
+    }
     return out;
 }
 
@@ -49,183 +53,6 @@ constexpr std::string_view pendulum_keys = "length_m g";
 constexpr std::string_view top_keys = "figure pendulum panel";
 constexpr std::string_view line_keys = "x y label style";
 constexpr std::string_view method_keys = "method label style color marker";
-
-std::vector<std::string> words(std::string_view text) {
-    std::vector<std::string> out;
-    std::istringstream in{std::string(text)};
-    for (std::string w; in >> w;) out.push_back(w);
-    return out;
-}
-
-bool contains(const std::vector<std::string>& names, std::string_view name) {
-    return std::find(names.begin(), names.end(), name) != names.end();
-}
-
-std::string listed(const std::vector<std::string>& names) {
-    std::string out;
-    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out;
-}
-
-/// Collects problems while a spec is read.
-class reader {
-public:
-    explicit reader(std::string file) : file_(std::move(file)) {}
-
-    const std::string& file() const { return file_; }
-    std::vector<spec_problem>& problems() { return problems_; }
-
-    source_position at(const toml::source_region& r) const {
-        return {file_, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
-    }
-
-    void problem(const toml::node& n, std::string what) { problems_.push_back({at(n.source()), std::move(what)}); }
-    void problem(const source_position& where, std::string what) { problems_.push_back({where, std::move(what)}); }
-
-    /// Reports keys of `table` outside `allowed`, with a suggestion; `context` names the table.
-    void check_keys(const toml::table& table, const std::vector<std::string>& allowed, const std::string& context,
-                    const std::vector<std::string>& elsewhere = {}, const std::string& elsewhere_why = {}) {
-        for (const auto& [key, value] : table) {
-            const std::string name(key.str());
-            if (contains(allowed, name)) continue;
-            std::string what = "unknown key '" + name + "' in " + context;
-            if (contains(elsewhere, name)) {
-                what = "key '" + name + "' " + elsewhere_why;
-            } else if (const auto guess = suggest(name, allowed); !guess.empty()) {
-                what += "; did you mean " + guess + "?";
-            } else {
-                what += "; keys: " + listed(allowed);
-            }
-            problems_.push_back({at(key.source()), what});
-        }
-    }
-
-    std::optional<std::string> string(const toml::table& t, std::string_view key) {
-        const toml::node* n = t.get(key);
-        if (!n) return std::nullopt;
-        if (const auto* s = n->as_string()) return s->get();
-        problem(*n, "'" + std::string(key) + "' must be a string");
-        return std::nullopt;
-    }
-
-    std::optional<double> number(const toml::table& t, std::string_view key, double lo, double hi,
-                                 bool open_lo = false) {
-        const toml::node* n = t.get(key);
-        if (!n) return std::nullopt;
-        double v = 0;
-        if (const auto* i = n->as_integer()) {
-            v = static_cast<double>(i->get());
-        } else if (const auto* f = n->as_floating_point()) {
-            v = f->get();
-        } else {
-            problem(*n, "'" + std::string(key) + "' must be a number");
-            return std::nullopt;
-        }
-        if (!std::isfinite(v) || (open_lo ? v <= lo : v < lo) || v > hi) {
-            problem(*n, "'" + std::string(key) + "' = " + pendulum::format_double(v) + " is out of range; allowed " +
-                            (open_lo ? "above " : "from ") + pendulum::format_double(lo) + " to " +
-                            pendulum::format_double(hi));
-            return std::nullopt;
-        }
-        return v;
-    }
-
-    std::optional<int> integer(const toml::table& t, std::string_view key, int lo, int hi) {
-        const toml::node* n = t.get(key);
-        if (!n) return std::nullopt;
-        const auto* i = n->as_integer();
-        if (!i) {
-            problem(*n, "'" + std::string(key) + "' must be a whole number");
-            return std::nullopt;
-        }
-        if (i->get() < lo || i->get() > hi) {
-            problem(*n, "'" + std::string(key) + "' = " + std::to_string(i->get()) + " is out of range; allowed " +
-                            std::to_string(lo) + " to " + std::to_string(hi));
-            return std::nullopt;
-        }
-        return static_cast<int>(i->get());
-    }
-
-    std::optional<bool> boolean(const toml::table& t, std::string_view key) {
-        const toml::node* n = t.get(key);
-        if (!n) return std::nullopt;
-        if (const auto* b = n->as_boolean()) return b->get();
-        problem(*n, "'" + std::string(key) + "' must be true or false");
-        return std::nullopt;
-    }
-
-    /// A value from a fixed set of names, reported with the names and a suggestion.
-    template <class T, std::size_t N>
-    std::optional<T> choice(const toml::table& t, std::string_view key,
-                            const std::array<std::pair<std::string_view, T>, N>& options) {
-        const toml::node* n = t.get(key);
-        if (!n) return std::nullopt;
-        return choice_of(*n, key, options);
-    }
-
-    template <class T, std::size_t N>
-    std::optional<T> choice_of(const toml::node& n, std::string_view key,
-                               const std::array<std::pair<std::string_view, T>, N>& options) {
-        std::vector<std::string> names;
-        for (const auto& [name, value] : options) names.emplace_back(name);
-        const auto* s = n.as_string();
-        if (!s) {
-            problem(n, "'" + std::string(key) + "' must be one of " + listed(names));
-            return std::nullopt;
-        }
-        for (const auto& [name, value] : options) {
-            if (name == s->get()) return value;
-        }
-        std::string what = "'" + std::string(key) + "' = \"" + s->get() + "\" is not one of " + listed(names);
-        if (const auto guess = suggest(s->get(), names); !guess.empty()) what += "; did you mean " + guess + "?";
-        problem(n, what);
-        return std::nullopt;
-    }
-
-    /// An angle expression given as a string or a number.
-    std::optional<amplitude> angle(const toml::node& n, std::string_view key, bool amplitude_range) {
-        amplitude a;
-        if (const auto* s = n.as_string()) {
-            a.text = s->get();
-        } else if (const auto* i = n.as_integer()) {
-            a.text = std::to_string(i->get());
-        } else if (const auto* f = n.as_floating_point()) {
-            a.text = pendulum::format_double(f->get());
-        } else {
-            problem(n, "'" + std::string(key) + "' must be an angle such as \"9pi/10\" or \"170deg\"");
-            return std::nullopt;
-        }
-        try {
-            a.value = pendulum::cli::parse_angle(a.text);
-            if (!amplitude_range) pendulum::check_amplitude(a.value, std::string(key));
-            if (amplitude_range && !(a.value >= 0 && a.value <= std::acos(-1.0))) {
-                throw std::invalid_argument(std::string(key) + " must lie in [0, pi], got " +
-                                            pendulum::format_double(a.value));
-            }
-        } catch (const std::invalid_argument& e) {
-            problem(n, "'" + std::string(key) + "': " + e.what());
-            return std::nullopt;
-        }
-        return a;
-    }
-
-private:
-    std::string file_;
-    std::vector<spec_problem> problems_;
-};
-
-constexpr std::array<std::pair<std::string_view, plot::line_style>, 5> line_styles = {{
-    {"solid", plot::line_style::solid},
-    {"dashed", plot::line_style::dashed},
-    {"dotted", plot::line_style::dotted},
-    {"dash-dot", plot::line_style::dash_dot},
-    {"none", plot::line_style::none},
-}};
-
-constexpr std::array<std::pair<std::string_view, plot::marker_style>, 2> markers = {{
-    {"none", plot::marker_style::none},
-    {"circle", plot::marker_style::open_circle},
-}};
 
 constexpr std::array<std::pair<std::string_view, legend_mode>, 3> legend_modes = {{
     {"first", legend_mode::first},

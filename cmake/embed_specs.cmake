@@ -1,8 +1,8 @@
-# Writes OUT, a C++ fragment holding each figure spec of FILES (a ;-list) as
+# Writes OUT, a C++ fragment holding each TOML file of FILES (figure specs, themes) (a ;-list) as
 # {"stem", R"toml(...)toml"}, so that the built-in specs are compiled into the program.
 # FILES is |-separated, as a ;-list would be split on the command line.
 string(REPLACE "|" ";" FILES "${FILES}")
-set(text "// generated from src/figures/specs/*.toml; do not edit\n")
+set(text "// generated from TOML files by cmake/embed_specs.cmake; do not edit\n")
 foreach(file IN LISTS FILES)
   get_filename_component(stem "${file}" NAME_WE)
   file(READ "${file}" content)

@@ -6,6 +6,7 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "plot/output.hpp"
+#include "figures/themes.hpp"
 #include "plot/theme.hpp"
 #include "png_image.hpp"
 #include "process.hpp"
@@ -22,6 +23,10 @@ namespace fs = std::filesystem;
 using test_support::run_cli;
 
 namespace {
+
+/// The built-in themes, from their style files.
+plot::theme paper_theme() { return figures::load_theme("paper"); }
+plot::theme slides_theme() { return figures::load_theme("slides"); }
 
 fs::path temp_dir(const std::string& name) {
     const auto dir = fs::temp_directory_path() / ("pendulum-figures-" + name + "-" + std::to_string(::getpid()));
@@ -135,7 +140,7 @@ TEST(Catalog, AmplitudeLabels) {
 }
 
 TEST(Baselines, RenderedFiguresMatchTheCommittedImages) {
-    const std::pair<plot::theme, double> variants[] = {{plot::paper_theme(), 100}, {plot::slides_theme(), 50}};
+    const std::pair<plot::theme, double> variants[] = {{paper_theme(), 100}, {slides_theme(), 50}};
     for (const auto& [theme, dpi] : variants) {
         for (const auto& e : figures::catalog()) {
             const auto path = fs::path(PENDULUM_BASELINES) / theme.name / (e.id + ".png");
@@ -166,7 +171,7 @@ TEST(Baselines, ComparisonCanFail) {
     f.panels[0].data[1].line = plot::line_style::solid;
     for (double& y : f.panels[0].data[1].y) y *= 1.1;
     const test_support::grey_image want = test_support::decode(test_support::slurp(fs::path(PENDULUM_BASELINES) / "paper" / "period.png"));
-    const test_support::grey_image got = test_support::decode(plot::render(f, plot::paper_theme(), "png", {100}));
+    const test_support::grey_image got = test_support::decode(plot::render(f, paper_theme(), "png", {100}));
     ASSERT_EQ(got.pixels.size(), want.pixels.size());
     std::size_t different = 0;
     for (std::size_t i = 0; i < want.pixels.size(); ++i) different += std::abs(int(want.pixels[i]) - int(got.pixels[i])) > 64;

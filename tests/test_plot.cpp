@@ -3,6 +3,7 @@
 #include "plot/figure.hpp"
 #include "plot/output.hpp"
 #include "plot/render.hpp"
+#include "figures/themes.hpp"
 #include "plot/theme.hpp"
 #include "plot/ticks.hpp"
 #include "png_image.hpp"
@@ -22,6 +23,10 @@ using std::numbers::pi;
 namespace fs = std::filesystem;
 
 namespace {
+
+/// The built-in themes, from their style files.
+plot::theme paper_theme() { return figures::load_theme("paper"); }
+plot::theme slides_theme() { return figures::load_theme("slides"); }
 
 /// A small figure with every kind of series, used by the format tests.
 figure sample_figure() {
@@ -154,7 +159,7 @@ TEST(Output, FormatTable) {
     } catch (const std::invalid_argument& e) {
         EXPECT_STREQ(e.what(), "unknown format 'jpg'; formats: png, pdf, svg, eps");
     }
-    EXPECT_THROW(theme_by_name("dark"), std::invalid_argument);
+    EXPECT_THROW(figures::load_theme("dark"), std::invalid_argument);
     EXPECT_THROW(render(sample_figure(), paper_theme(), "png", {5}), std::invalid_argument);
 }
 

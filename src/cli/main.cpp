@@ -5,6 +5,7 @@
 #include "figures/batch.hpp"
 #include "figures/catalog.hpp"
 #include "figures/spec_build.hpp"
+#include "figures/themes.hpp"
 #include "plot/output.hpp"
 #include "plot/theme.hpp"
 #include "pendulum/amplitude.hpp"
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -192,10 +194,22 @@ struct render_options {
     std::string dir = ".";
     std::string formats = "pdf,png";
     std::string theme = "paper";
-    double dpi = 300;
+    std::vector<std::string> sets;
+    std::optional<double> dpi;  // the theme's when not given
     std::string theta0;
     bool paper_files = false;
 };
+
+/// The theme of --theme and --set; a bad style file is bad input.
+plot::theme chosen_theme(const std::string& name, const std::vector<std::string>& sets) {
+    try {
+        return figures::load_theme(name, sets);
+    } catch (const figures::spec_error& e) {
+        throw usage_error(std::string("bad theme:\n") + e.what());
+    } catch (const std::runtime_error& e) {
+        throw usage_error(e.what());
+    }
+}
 
 /// Checks that dir exists and can be written to, naming it otherwise.
 void check_output_dir(const std::string& dir) {
@@ -256,9 +270,10 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
         plot::check_format(f);
         if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
     }
-    const plot::theme theme = plot::theme_by_name(o.theme);
-    if (!(o.dpi >= plot::min_dpi && o.dpi <= plot::max_dpi)) {
-        throw usage_error("--dpi " + format_double(o.dpi) + ": must be between " + format_double(plot::min_dpi) +
+    const plot::theme theme = chosen_theme(o.theme, o.sets);
+    const double dpi = o.dpi.value_or(theme.dpi);
+    if (!(dpi >= plot::min_dpi && dpi <= plot::max_dpi)) {
+        throw usage_error("--dpi " + format_double(dpi) + ": must be between " + format_double(plot::min_dpi) +
                           " and " + format_double(plot::max_dpi));
     }
     figures::build_options build;
@@ -280,7 +295,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
     if (jobs.empty()) throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
 
     try {
-        figures::write_figures(jobs, build, theme, plot::output_options{o.dpi});
+        figures::write_figures(jobs, build, theme, plot::output_options{dpi});
     } catch (const std::exception& e) {
         std::cerr << "pendulum-figures: error: " << e.what() << "\n";
         return 1;
@@ -350,7 +365,8 @@ struct plot_options {
     std::string dir = ".";
     std::string formats = "pdf,png";
     std::string theme = "paper";
-    double dpi = 300;
+    std::vector<std::string> sets;
+    std::optional<double> dpi;
 };
 
 /// A TOML string: the text in quotes, with backslashes and quotes escaped.
@@ -416,6 +432,7 @@ int run_plot(const plot_options& o) {
     r.dir = o.dir;
     r.formats = o.formats;
     r.theme = o.theme;
+    r.sets = o.sets;
     r.dpi = o.dpi;
     return render_entries({&e}, r);
 }
@@ -503,10 +520,13 @@ int main(int argc, char** argv) {
     render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR");
     render->add_option("-f,--formats", ro.formats, "Comma-separated formats: png, pdf, svg, eps (default: pdf,png)")
         ->type_name("LIST");
-    render->add_option("--theme", ro.theme, "paper (default: black and white, serif, paper sizes) or slides (16:9, "
-                                            "large text, colour-blind-safe colours)")
-        ->type_name("NAME");
-    render->add_option("--dpi", ro.dpi, "PNG resolution in dots per inch, 10..2400 (default: 300)")->type_name("N");
+    render->add_option("--theme", ro.theme, figures::theme_help() + "; default paper")->type_name("NAME");
+    render->add_option("--set", ro.sets, "KEY=VALUE of a style file on top of the theme, e.g. tick_font_pt=9; "
+                                         "repeatable ('show --theme paper' lists the keys)")
+        ->type_name("KEY=VALUE");
+    render->add_option("--dpi", ro.dpi, "PNG resolution in dots per inch, 10..2400 (default: the theme's, 300 for "
+                                        "paper)")
+        ->type_name("N");
     render->add_option("--theta0", ro.theta0, "Amplitudes of the trajectory figures, a comma-separated LIST")
         ->type_name("LIST");
     render->add_flag("--paper-files", ro.paper_files,
@@ -525,11 +545,18 @@ int main(int argc, char** argv) {
                  "  pendulum-figures show fig2 > my-figure.toml");
 
     std::string show_id;
-    auto* show = app.add_subcommand("show", "Print the spec of a built-in figure, to copy and edit.");
-    show->add_option("id", show_id, "Figure id or alias (see 'list')")->required()->type_name("ID");
+    std::string show_theme;
+    auto* show = app.add_subcommand("show", "Print the spec of a built-in figure, or a theme's style file, to copy "
+                                            "and edit.");
+    show->add_option("id", show_id, "Figure id or alias (see 'list')")->type_name("ID");
+    show->add_option("--theme", show_theme, "Print this built-in theme's style file instead: " +
+                                                figures::theme_names())
+        ->type_name("NAME");
     show->footer("\nThe spec is TOML: [figure], an optional [pendulum], and one [[panel]] per panel. Edit it and "
                  "render it with 'render FILE.toml'.\n\nExample:\n"
-                 "  pendulum-figures show fig2 > my-figure.toml\n  pendulum-figures render my-figure.toml -f png");
+                 "  pendulum-figures show fig2 > my-figure.toml\n  pendulum-figures render my-figure.toml -f png\n"
+                 "  pendulum-figures show --theme slides > talk.toml\n"
+                 "  pendulum-figures render fig7 --theme talk.toml --set tick_font_pt=18");
 
     plot_options po;
     auto* plot_cmd = app.add_subcommand("plot", "Draw a one-panel figure of any plot kind from the command line.");
@@ -548,8 +575,11 @@ int main(int argc, char** argv) {
     plot_cmd->add_option("-o,--output-dir", po.dir, "Existing directory for the files (default: .)")->type_name("DIR");
     plot_cmd->add_option("-f,--formats", po.formats, "Comma-separated formats: " + format_list() + " (default: pdf,png)")
         ->type_name("LIST");
-    plot_cmd->add_option("--theme", po.theme, "paper (default) or slides")->type_name("NAME");
-    plot_cmd->add_option("--dpi", po.dpi, "PNG resolution in dots per inch, 10..2400 (default: 300)")->type_name("N");
+    plot_cmd->add_option("--theme", po.theme, figures::theme_help() + "; default paper")->type_name("NAME");
+    plot_cmd->add_option("--set", po.sets, "KEY=VALUE of a style file on top of the theme; repeatable")
+        ->type_name("KEY=VALUE");
+    plot_cmd->add_option("--dpi", po.dpi, "PNG resolution in dots per inch, 10..2400 (default: the theme's)")
+        ->type_name("N");
     plot_cmd->footer(std::string("\n") + angle_help +
                      "\n\nThe same as a spec with one [[panel]] of these keys; 'show' prints specs to start from.\n\n"
                      "Examples:\n"
@@ -574,7 +604,16 @@ int main(int argc, char** argv) {
         if (*render) return run_render(ro);
         if (*plot_cmd) return run_plot(po);
         if (*show) {
-            out << figures::find(show_id).source;
+            if (show_id.empty() == show_theme.empty()) throw usage_error("give a figure ID or --theme NAME to show");
+            if (!show_theme.empty()) {
+                try {
+                    out << figures::theme_source(show_theme);
+                } catch (const std::invalid_argument& e) {
+                    throw usage_error(e.what());
+                }
+            } else {
+                out << figures::find(show_id).source;
+            }
         } else if (*list) {
             out << list_text();
         } else if (*data) {

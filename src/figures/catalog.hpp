@@ -36,6 +36,8 @@ entry load(std::string_view id_or_file);
 /// Choices that change what a figure shows.
 struct build_options {
     std::vector<amplitude> amplitudes;  ///< --theta0: replaces the spec's amplitudes
+    double panel_width_cm = 6.0;        ///< panel width where the spec gives none (the theme's)
+    double panel_aspect = 0.75;         ///< panel aspect where the spec gives none (the theme's)
 };
 
 /// The panels the figure will have with these options, as specs (for paper file names).

@@ -38,11 +38,14 @@ struct series_style {
     line_style line;
     marker_style marker;
     int color;
+    std::string style_key;
 };
 
 series_style style_of(const method_spec& m, int index) {
     series_style s{m.label.empty() ? method_label(m.method) : plot::tex_to_markup(m.label), method_line(m.method),
-                   m.method.row->name == "exact" ? marker_style::open_circle : marker_style::none, index};
+                   m.method.row->name == "exact" ? marker_style::open_circle : marker_style::none, index, ""};
+    // The theme styles a method by name unless the spec says how it looks.
+    if (!m.style && !m.marker) s.style_key = std::string(m.method.row->name);
     if (m.style) s.line = *m.style;
     if (m.marker) s.marker = *m.marker;
     return s;
@@ -57,6 +60,7 @@ plot::series make_series(const series_style& st, std::vector<double> x, const st
     s.line = st.line;
     s.marker = st.marker;
     s.color = st.color;
+    s.style_key = st.style_key;
     return s;
 }
 
@@ -228,6 +232,7 @@ plot::panel period_panel(const context& c, const panel_spec& p) {
         }
         if (is_exact(m)) continue;  // its error is zero
         plot::series s{st.label, {}, {}, st.line, st.marker, st.color};
+        s.style_key = st.style_key;
         for (std::size_t k = 0; k < curve.size(); ++k) {
             const double err = pendulum::method_period(m.method, curve[k]) / exact[k] - 1;
             s.x.push_back(to_axis_angle(p, curve[k]));
@@ -246,7 +251,7 @@ plot::panel period_panel(const context& c, const panel_spec& p) {
 /// Line styles for series that differ by amplitude, in order.
 series_style amplitude_style(std::size_t i, const std::string& label) {
     static const line_style cycle[] = {line_style::solid, line_style::dashed, line_style::dotted, line_style::dash_dot};
-    return {label, cycle[i % 4], i == 4 ? marker_style::open_circle : marker_style::none, static_cast<int>(i)};
+    return {label, cycle[i % 4], i == 4 ? marker_style::open_circle : marker_style::none, static_cast<int>(i), ""};
 }
 
 plot::panel convergence_panel(const context&, const panel_spec& p) {
@@ -426,7 +431,6 @@ std::string method_label(const pendulum::method_choice& m) {
 line_style method_line(const pendulum::method_choice& m) {
     const std::string_view name = m.row->name;
     if (name == "exact") return line_style::none;
-    if (name == "harmonic" || name == "polynomial") return line_style::dotted;
     if (m.has_motion()) return line_style::solid;
     return line_style::dashed;
 }
@@ -497,8 +501,8 @@ plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrid
     const int n = static_cast<int>(panels.size());
     f.cols = std::min(spec.columns.value_or(3), n);
     f.rows = (n + f.cols - 1) / f.cols;
-    f.panel_width_cm = spec.panel_width_cm.value_or(6.0);
-    f.panel_aspect = spec.panel_aspect.value_or(0.75);
+    f.panel_width_cm = spec.panel_width_cm.value_or(overrides.panel_width_cm);
+    f.panel_aspect = spec.panel_aspect.value_or(overrides.panel_aspect);
     f.shared_legend = spec.legend == legend_mode::first;
     const context c{spec, f.panel_width_cm};
     for (std::size_t i = 0; i < panels.size(); ++i) {

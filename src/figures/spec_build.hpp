@@ -12,6 +12,8 @@ namespace figures {
 /// Choices from the command line that change what a spec shows.
 struct spec_overrides {
     std::vector<amplitude> theta0;  ///< replaces the amplitudes: one trajectory panel each, or the lists
+    double panel_width_cm = 6.0;    ///< panel width where the spec gives none (the theme's)
+    double panel_aspect = 0.75;     ///< panel aspect where the spec gives none (the theme's)
 };
 
 /// The spec's panels with the command line's amplitudes put in: one trajectory panel per
@@ -32,8 +34,8 @@ std::string panel_name(std::size_t i);
 /// The legend label of a method where the spec gives none: "lowest order", "order 6", ...
 std::string method_label(const pendulum::method_choice& m);
 
-/// The default line style of a method: circles for the exact solution, dotted for the
-/// harmonic and polynomial approximants, solid for the paper's orders, dashed for formulas.
+/// The line style of a method where neither the spec nor the theme gives one: none (circles)
+/// for the exact solution, solid for laws of motion, dashed for period formulas.
 plot::line_style method_line(const pendulum::method_choice& m);
 
 }  // namespace figures

@@ -21,6 +21,7 @@ struct series {
     marker_style marker = marker_style::none;  ///< marker
     int color = 0;                          ///< index into the theme's palette
     bool autoscale = true;                  ///< false: leaves the axis limits alone (reference lines)
+    std::string style_key;                  ///< a theme's style for this name replaces line and marker
 };
 
 /// Axis scale.

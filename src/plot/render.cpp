@@ -323,6 +323,10 @@ int overlap(const rect& box, const std::vector<series>& data, const std::vector<
     return count;
 }
 
+void set_foreground(cairo_t* cr, const theme& th) {
+    cairo_set_source_rgb(cr, th.foreground.r, th.foreground.g, th.foreground.b);
+}
+
 void set_color(cairo_t* cr, const theme& th, int index) {
     const rgb& c = th.palette[static_cast<std::size_t>(index) % th.palette.size()];
     cairo_set_source_rgb(cr, c.r, c.g, c.b);
@@ -475,7 +479,7 @@ void draw_legend(cairo_t* cr, const text_engine& text, const theme& th, const pa
         const series& s = p.data[l.entries[i]];
         const double cy = box.y + pad + (i + 0.5) * l.row_h;
         draw_legend_sample(cr, th, s, box.x + pad, cy, l.sample_w);
-        cairo_set_source_rgb(cr, 0, 0, 0);
+        set_foreground(cr, th);
         text.draw(s.label, th.legend_font_pt, box.x + pad + l.sample_w + th.padding_pt, cy, 0.0, 0.5);
     }
 }
@@ -518,7 +522,7 @@ void draw_legend_band(cairo_t* cr, const text_engine& text, const theme& th, con
         for (std::size_t i : lines[r]) {
             const series& s = p.data[l.entries[i]];
             draw_legend_sample(cr, th, s, x, cy, l.sample_w);
-            cairo_set_source_rgb(cr, 0, 0, 0);
+            set_foreground(cr, th);
             text.draw(s.label, th.legend_font_pt, x + l.sample_w + th.padding_pt, cy, 0.0, 0.5);
             x += l.sample_w + th.padding_pt + l.text_ws[i] + 2 * th.padding_pt;
         }
@@ -680,7 +684,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     cairo_restore(cr);
 
     // Frame and ticks.
-    cairo_set_source_rgb(cr, 0, 0, 0);
+    set_foreground(cr, th);
     cairo_set_dash(cr, nullptr, 0, 0);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
@@ -717,15 +721,35 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     if (legend_band) draw_legend_band(cr, text, th, p, lg, *legend_band);
 }
 
+
+/// The figure with the theme's named styles applied to the series that carry a style key.
+figure with_theme_styles(const figure& fig, const theme& th) {
+    figure styled = fig;
+    for (auto& p : styled.panels) {
+        for (auto& s : p.data) {
+            const auto it = s.style_key.empty() ? th.styles.end() : th.styles.find(s.style_key);
+            if (it == th.styles.end()) continue;
+            if (it->second.line) s.line = *it->second.line;
+            if (it->second.marker) s.marker = *it->second.marker;
+        }
+    }
+    return styled;
+}
+
 }  // namespace
 
-void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size) {
+void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size) {
+    const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), [](const panel& p) {
+        return std::any_of(p.data.begin(), p.data.end(), [](const series& s) { return !s.style_key.empty(); });
+    });
+    const figure styled = any_key && !th.styles.empty() ? with_theme_styles(unstyled, th) : figure{};
+    const figure& fig = any_key && !th.styles.empty() ? styled : unstyled;
     if (fig.rows < 1 || fig.cols < 1 || fig.panels.size() > static_cast<std::size_t>(fig.rows * fig.cols)) {
         throw std::invalid_argument("figure grid is too small for its panels");
     }
     if (th.palette.empty()) throw std::invalid_argument("theme has no colours");
     const text_engine text(cr, th.font_family);
-    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
     cairo_paint(cr);
 
     // Shared margins keep the axes of neighbouring panels aligned.

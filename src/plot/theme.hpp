@@ -1,8 +1,10 @@
 #pragma once
 
-#include <array>
+#include "plot/figure.hpp"
+
+#include <map>
+#include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace plot {
@@ -14,7 +16,15 @@ struct rgb {
     double b = 0;  ///< blue
 };
 
-/// How figures look: fonts, sizes in points, line widths, colours, figure size.
+/// A style a theme gives to series of one name (figures name them by method).
+struct named_style {
+    std::optional<line_style> line;      ///< line style
+    std::optional<marker_style> marker;  ///< marker
+};
+
+/// How figures look: fonts, sizes in points, line widths, colours, sizes. Built-in themes
+/// and users' themes are style files (see figures/themes.hpp); the defaults here are the
+/// paper theme's.
 struct theme {
     std::string name;                 ///< theme name
     std::string font_family;          ///< Pango font families, the first preferred, comma-separated
@@ -26,21 +36,15 @@ struct theme {
     double marker_radius_pt = 1.6;    ///< open circles
     double tick_length_pt = 3.0;      ///< major ticks (minor: 60 %)
     double padding_pt = 3.0;          ///< space around text
+    rgb foreground{0, 0, 0};          ///< frame, ticks and text
+    rgb background{1, 1, 1};          ///< the page
     std::vector<rgb> palette;         ///< series colours by index
+    std::map<std::string, named_style> styles;  ///< styles of named series (style_key)
+    double panel_width_cm = 6.0;      ///< width of one panel, where the figure sets none
+    double panel_aspect = 0.75;       ///< panel height / width, where the figure sets none
     double fixed_width_cm = 0;        ///< whole-figure width, or 0 to size by panels
     double fixed_height_cm = 0;       ///< whole-figure height, or 0 to size by panels
+    double dpi = 300;                 ///< PNG resolution where none is asked for
 };
-
-/// Black and white, paper line styles, Computer Modern (CMU Serif) text.
-theme paper_theme();
-
-/// 16:9 slides: large sans-serif text, thick lines, Okabe-Ito colour-blind-safe palette.
-theme slides_theme();
-
-/// The names of the themes, for messages.
-std::vector<std::string> theme_names();
-
-/// The theme of that name; throws std::invalid_argument listing the valid names otherwise.
-theme theme_by_name(std::string_view name);
 
 }  // namespace plot

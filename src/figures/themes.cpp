@@ -1,0 +1,260 @@
+#include "figures/themes.hpp"
+
+#include "figures/toml_reader.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+namespace figures {
+
+namespace {
+
+constexpr std::pair<std::string_view, std::string_view> sources[] = {
+#include "builtin_themes.inc"
+};
+
+// Paper first: every other theme starts from it.
+constexpr std::string_view order[] = {"paper", "slides", "slides-dark"};
+
+/// One key of a style file and where it goes in plot::theme.
+struct number_key {
+    std::string_view name;
+    double plot::theme::*field;
+    double lo;
+    double hi;
+};
+
+constexpr number_key number_keys[] = {
+    {"tick_font_pt", &plot::theme::tick_font_pt, 1, 200},
+    {"label_font_pt", &plot::theme::label_font_pt, 1, 200},
+    {"legend_font_pt", &plot::theme::legend_font_pt, 1, 200},
+    {"line_width_pt", &plot::theme::line_width_pt, 0.05, 50},
+    {"frame_width_pt", &plot::theme::frame_width_pt, 0.05, 50},
+    {"marker_radius_pt", &plot::theme::marker_radius_pt, 0.1, 50},
+    {"tick_length_pt", &plot::theme::tick_length_pt, 0, 50},
+    {"padding_pt", &plot::theme::padding_pt, 0, 50},
+    {"panel_width_cm", &plot::theme::panel_width_cm, 1, 100},
+    {"panel_aspect", &plot::theme::panel_aspect, 0.1, 10},
+    {"figure_width_cm", &plot::theme::fixed_width_cm, 0, 200},
+    {"figure_height_cm", &plot::theme::fixed_height_cm, 0, 200},
+    {"dpi", &plot::theme::dpi, 10, 2400},
+};
+
+struct color_key {
+    std::string_view name;
+    plot::rgb plot::theme::*field;
+};
+
+constexpr color_key color_keys[] = {{"foreground", &plot::theme::foreground}, {"background", &plot::theme::background}};
+
+std::vector<std::string> all_keys() {
+    std::vector<std::string> keys = {"base", "description", "font_family", "palette", "styles"};
+    for (const auto& k : number_keys) keys.emplace_back(k.name);
+    for (const auto& k : color_keys) keys.emplace_back(k.name);
+    return keys;
+}
+
+std::optional<plot::rgb> parse_color(std::string_view text) {
+    if (text.size() != 7 || text[0] != '#') return std::nullopt;
+    double v[3];
+    for (int i = 0; i < 3; ++i) {
+        int x = 0;
+        for (int j = 1; j <= 2; ++j) {
+            const char c = text[static_cast<std::size_t>(2 * i + j)];
+            const int d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+            if (d < 0) return std::nullopt;
+            x = 16 * x + d;
+        }
+        v[i] = x / 255.0;
+    }
+    return plot::rgb{v[0], v[1], v[2]};
+}
+
+std::optional<plot::rgb> color(reader& r, const toml::node& n, std::string_view key) {
+    const auto* s = n.as_string();
+    const auto c = s ? parse_color(s->get()) : std::nullopt;
+    if (!c) r.problem(n, "'" + std::string(key) + "' must be a colour \"#rrggbb\"");
+    return c;
+}
+
+/// Applies the keys of one style file (or --set line) to `t`.
+void apply(reader& r, const toml::table& doc, plot::theme& t) {
+    r.check_keys(doc, all_keys(), "a style file");
+    if (auto v = r.string(doc, "font_family")) {
+        if (v->empty()) {
+            r.problem(*doc.get("font_family"), "'font_family' must name a font");
+        } else {
+            t.font_family = *v;
+        }
+    }
+    for (const auto& k : number_keys) {
+        if (auto v = r.number(doc, k.name, k.lo, k.hi)) t.*k.field = *v;
+    }
+    for (const auto& k : color_keys) {
+        if (const toml::node* n = doc.get(k.name)) {
+            if (auto c = color(r, *n, k.name)) t.*k.field = *c;
+        }
+    }
+    if (const toml::node* n = doc.get("palette")) {
+        const auto* a = n->as_array();
+        if (!a || a->empty()) {
+            r.problem(*n, "'palette' must be a list of colours \"#rrggbb\"");
+        } else {
+            std::vector<plot::rgb> palette;
+            for (const auto& e : *a) {
+                if (auto c = color(r, e, "palette")) palette.push_back(*c);
+            }
+            if (palette.size() == a->size()) t.palette = std::move(palette);
+        }
+    }
+    if (const toml::node* n = doc.get("styles")) {
+        const auto* styles = n->as_table();
+        if (!styles) {
+            r.problem(*n, "'styles' must be a table: [styles] with NAME = { line = ..., marker = ... }");
+            return;
+        }
+        for (const auto& [key, value] : *styles) {
+            const auto* st = value.as_table();
+            if (!st) {
+                r.problem(value, "a style is a table, e.g. exact = { line = \"none\", marker = \"circle\" }");
+                continue;
+            }
+            r.check_keys(*st, {"line", "marker"}, "a style");
+            plot::named_style& s = t.styles[std::string(key.str())];
+            if (auto v = r.choice(*st, "line", line_styles)) s.line = *v;
+            if (auto v = r.choice(*st, "marker", markers)) s.marker = *v;
+        }
+    }
+}
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read style file '" + path + "'");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+toml::table parse(reader& r, std::string_view text) {
+    try {
+        return toml::parse(text, r.file());
+    } catch (const toml::parse_error& e) {
+        throw spec_error({{r.at(e.source()), "not valid TOML: " + std::string(e.description())}});
+    }
+}
+
+void throw_problems(reader& r) {
+    if (!r.problems().empty()) throw spec_error(std::move(r.problems()));
+}
+
+plot::theme load(std::string_view name_or_file, int depth) {
+    const bool is_file = name_or_file.ends_with(".toml");
+    const std::string file = is_file ? std::string(name_or_file) : std::string(name_or_file) + ".toml";
+    const std::string text = is_file ? read_file(file) : std::string(theme_source(name_or_file));
+    reader r(file);
+    const toml::table doc = parse(r, text);
+    plot::theme t;
+    const auto base = r.string(doc, "base");
+    throw_problems(r);
+    if (base) {
+        const bool known = std::any_of(builtin_themes().begin(), builtin_themes().end(),
+                                       [&](const builtin_theme& b) { return b.name == *base; });
+        if (!known || depth > 4) {
+            throw spec_error({{r.at(doc.get("base")->source()), "'base' must be a built-in theme: " + theme_names()}});
+        }
+        t = load(*base, depth + 1);
+    } else if (name_or_file != "paper") {
+        t = load("paper", depth + 1);
+    }
+    apply(r, doc, t);
+    throw_problems(r);
+    t.name = is_file ? std::filesystem::path(file).stem().string() : std::string(name_or_file);
+    return t;
+}
+
+}  // namespace
+
+std::span<const builtin_theme> builtin_themes() {
+    static const auto themes = [] {
+        static_assert(std::size(order) == std::size(sources), "a theme file without a row in the theme table");
+        std::vector<builtin_theme> v;
+        for (const auto name : order) {
+            for (const auto& [file, text] : sources) {
+                if (file == name) {
+                    const std::string file = std::string(name) + ".toml";
+                    const auto doc = toml::parse(text, std::string_view(file));
+                    v.push_back({name, text, doc["description"].value_or(std::string())});
+                }
+            }
+        }
+        if (v.size() != std::size(order)) throw std::logic_error("a built-in theme has no style file");
+        return v;
+    }();
+    return themes;
+}
+
+std::string theme_names() {
+    std::string out;
+    for (const auto& t : builtin_themes()) out += (out.empty() ? "" : ", ") + std::string(t.name);
+    return out;
+}
+
+std::string theme_help() {
+    std::string out;
+    for (const auto& t : builtin_themes()) {
+        out += (out.empty() ? "" : ", ") + std::string(t.name) + " (" + t.description + ")";
+    }
+    return out + ", or a style file NAME.toml";
+}
+
+std::string_view theme_source(std::string_view name) {
+    for (const auto& t : builtin_themes()) {
+        if (t.name == name) return t.text;
+    }
+    std::vector<std::string> names;
+    for (const auto& t : builtin_themes()) names.emplace_back(t.name);
+    const std::string guess = suggest(name, names);
+    throw std::invalid_argument("unknown theme '" + std::string(name) + "'; themes: " + theme_names() +
+                                ", or a style file NAME.toml" + (guess.empty() ? "" : "; did you mean " + guess + "?"));
+}
+
+plot::theme load_theme(std::string_view name_or_file, const std::vector<std::string>& sets) {
+    plot::theme t = load(name_or_file, 0);
+    for (const auto& set : sets) {
+        const auto eq = set.find('=');
+        if (eq == std::string::npos || eq == 0) {
+            throw spec_error({{{"--set", 0, 0}, "'" + set + "' must be KEY=VALUE, e.g. tick_font_pt=9"}});
+        }
+        const std::string key = set.substr(0, eq);
+        std::string value = set.substr(eq + 1);
+        // A value that is not TOML is a string: --set font_family=DejaVu Sans.
+        toml::table doc;
+        reader r("--set " + key);
+        try {
+            const std::string line = key + " = " + value;
+            doc = toml::parse(std::string_view(line), std::string_view("--set"));
+        } catch (const toml::parse_error&) {
+            std::string quoted = "\"";
+            for (char c : value) {
+                if (c == '"' || c == '\\') quoted += '\\';
+                quoted += c;
+            }
+            try {
+                const std::string line = key + " = " + quoted + "\"";
+                doc = toml::parse(std::string_view(line), std::string_view("--set"));
+            } catch (const toml::parse_error& e) {
+                throw spec_error({{{"--set " + key, 0, 0}, "not a value: " + std::string(e.description())}});
+            }
+        }
+        apply(r, doc, t);
+        // Positions in a one-line --set mean nothing: name the option instead.
+        for (auto& p : r.problems()) p.where = {"--set " + set, 0, 0};
+        throw_problems(r);
+    }
+    return t;
+}
+
+}  // namespace figures

@@ -353,6 +353,15 @@ std::string format_list() {
     return out;
 }
 
+/// The formats with what each is, for --help.
+std::string format_help() {
+    std::string out;
+    for (const auto& f : plot::format_table()) {
+        out += (out.empty() ? "" : ", ") + std::string(f.name) + " (" + std::string(f.description) + ")";
+    }
+    return out;
+}
+
 struct plot_options {
     std::string kind;
     std::string theta0;
@@ -514,11 +523,11 @@ int main(int argc, char** argv) {
                  "  pendulum-figures trajectory --theta0 pi/2 --method order --order 8 --at 0,0.125,0.25");
 
     render_options ro;
-    auto* render = app.add_subcommand("render", "Draw figures (built-in or spec files) into files (PNG, PDF, SVG, EPS).");
+    auto* render = app.add_subcommand("render", "Draw figures (built-in or spec files) into files: " + format_list() + ".");
     render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), or spec files NAME.toml")->type_name("ID");
     render->add_flag("--all", ro.all, "Render every figure of the catalog");
     render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR");
-    render->add_option("-f,--formats", ro.formats, "Comma-separated formats: png, pdf, svg, eps (default: pdf,png)")
+    render->add_option("-f,--formats", ro.formats, "Comma-separated formats (default: pdf,png): " + format_help())
         ->type_name("LIST");
     render->add_option("--theme", ro.theme, figures::theme_help() + "; default paper")->type_name("NAME");
     render->add_option("--set", ro.sets, "KEY=VALUE of a style file on top of the theme, e.g. tick_font_pt=9; "

@@ -73,33 +73,32 @@ void draw_on(cairo_surface_t* surface, const figure& fig, const theme& th, page_
     }
 }
 
-std::string render_vector(const figure& fig, const theme& th, std::string_view format) {
+/// Draws the figure on a vector surface made by `create` (which may set it up further)
+/// and returns the stream's bytes.
+template <class Create>
+std::string render_vector(const figure& fig, const theme& th, std::string_view format, Create create) {
     const page_size size = figure_size(fig, th);
     std::string bytes;
-    surface_ptr surface;
-    if (format == "pdf") {
-        surface.reset(cairo_pdf_surface_create_for_stream(append_bytes, &bytes, size.width_pt, size.height_pt));
-        check_surface(surface.get(), format);
-        if (const auto tm = source_date()) {
-            char date[32];
-            std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &*tm);
-            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, date);
-        } else {
-            cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, "");
-        }
-    } else if (format == "svg") {
-        surface.reset(cairo_svg_surface_create_for_stream(append_bytes, &bytes, size.width_pt, size.height_pt));
-        check_surface(surface.get(), format);
-        cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PT);
-    } else {
-        surface.reset(cairo_ps_surface_create_for_stream(append_bytes, &bytes, size.width_pt, size.height_pt));
-        check_surface(surface.get(), format);
-        cairo_ps_surface_set_eps(surface.get(), 1);
-    }
+    surface_ptr surface(create(&bytes, size));
+    check_surface(surface.get(), format);
     draw_on(surface.get(), fig, th, size, 1.0, format);
     cairo_surface_finish(surface.get());
     check_surface(surface.get(), format);
     return bytes;
+}
+
+std::string render_pdf(const figure& fig, const theme& th, const output_options&) {
+    return render_vector(fig, th, "pdf", [](std::string* bytes, page_size size) {
+        cairo_surface_t* s = cairo_pdf_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
+        if (const auto tm = source_date()) {
+            char date[32];
+            std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &*tm);
+            cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, date);
+        } else {
+            cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, "");
+        }
+        return s;
+    });
 }
 
 /// Cairo numbers SVG surface ids from a process-wide counter; renumber them in order of
@@ -259,29 +258,61 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
     return std::move(sink.bytes);
 }
 
-}  // namespace
-
-std::vector<std::string> format_names() { return {"png", "pdf", "svg", "eps"}; }
-
-void check_format(std::string_view format) {
-    for (const auto& f : format_names()) {
-        if (f == format) return;
-    }
-    throw std::invalid_argument("unknown format '" + std::string(format) + "'; formats: png, pdf, svg, eps");
+std::string render_svg(const figure& fig, const theme& th, const output_options&) {
+    return renumber_svg_ids(render_vector(fig, th, "svg", [](std::string* bytes, page_size size) {
+        cairo_surface_t* s = cairo_svg_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
+        cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
+        return s;
+    }));
 }
 
-std::string render(const figure& fig, const theme& th, std::string_view format, const output_options& options) {
-    check_format(format);
-    if (format == "png") {
-        if (!(options.dpi >= min_dpi && options.dpi <= max_dpi)) {
-            throw std::invalid_argument("dpi must be between 10 and 2400");
-        }
-        return render_png(fig, th, options.dpi);
+std::string render_eps(const figure& fig, const theme& th, const output_options&) {
+    return fix_eps_date(render_vector(fig, th, "eps", [](std::string* bytes, page_size size) {
+        cairo_surface_t* s = cairo_ps_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
+        cairo_ps_surface_set_eps(s, 1);
+        return s;
+    }));
+}
+
+std::string render_raster(const figure& fig, const theme& th, const output_options& options) {
+    if (!(options.dpi >= min_dpi && options.dpi <= max_dpi)) {
+        throw std::invalid_argument("dpi must be between 10 and 2400");
     }
-    std::string bytes = render_vector(fig, th, format);
-    if (format == "svg") return renumber_svg_ids(bytes);
-    if (format == "eps") return fix_eps_date(bytes);
-    return bytes;
+    return render_png(fig, th, options.dpi);
+}
+
+// Every output format: one row each. A format is written by its row's function, so a
+// format without a writer cannot be listed.
+constexpr format_row formats[] = {
+    {"png", "raster at --dpi", render_raster},
+    {"pdf", "vector, fonts embedded", render_pdf},
+    {"svg", "vector, for the web", render_svg},
+    {"eps", "vector, for latex and dvips", render_eps},
+};
+
+}  // namespace
+
+std::span<const format_row> format_table() { return formats; }
+
+std::vector<std::string> format_names() {
+    std::vector<std::string> names;
+    for (const auto& f : formats) names.emplace_back(f.name);
+    return names;
+}
+
+const format_row& find_format(std::string_view format) {
+    for (const auto& f : formats) {
+        if (f.name == format) return f;
+    }
+    std::string list;
+    for (const auto& f : formats) list += (list.empty() ? "" : ", ") + std::string(f.name);
+    throw std::invalid_argument("unknown format '" + std::string(format) + "'; formats: " + list);
+}
+
+void check_format(std::string_view format) { find_format(format); }
+
+std::string render(const figure& fig, const theme& th, std::string_view format, const output_options& options) {
+    return find_format(format).write(fig, th, options);
 }
 
 void write_atomically(const std::filesystem::path& path, const std::string& bytes) {

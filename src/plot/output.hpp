@@ -4,6 +4,7 @@
 #include "plot/theme.hpp"
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,6 +20,19 @@ struct output_options {
 inline constexpr double min_dpi = 10;
 /// The largest accepted dpi.
 inline constexpr double max_dpi = 2400;
+
+/// One output format: its file extension, what it is, and the function that writes it.
+struct format_row {
+    std::string_view name;         ///< file extension
+    std::string_view description;  ///< one line for help and lists
+    std::string (*write)(const figure& fig, const theme& th, const output_options& options);  ///< the bytes
+};
+
+/// Every output format, in the order help lists them.
+std::span<const format_row> format_table();
+
+/// The format of that name; throws std::invalid_argument listing the formats otherwise.
+const format_row& find_format(std::string_view format);
 
 /// The supported output formats, as file extensions: png, pdf, svg, eps.
 std::vector<std::string> format_names();

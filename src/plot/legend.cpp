@@ -1,0 +1,121 @@
+#include "plot/legend.hpp"
+
+#include "plot/strokes.hpp"
+
+#include <algorithm>
+
+namespace plot {
+
+int overlap(const rect& box, const std::vector<series>& data, const std::vector<device_series>& dev,
+            double marker_radius) {
+    int count = 0;
+    for (std::size_t k = 0; k < data.size(); ++k) {
+        const auto& d = dev[k];
+        if (data[k].line != line_style::none) {
+            for (std::size_t i = 1; i < d.x.size(); ++i) {
+                double x0 = d.x[i - 1], y0 = d.y[i - 1], x1 = d.x[i], y1 = d.y[i];
+                if (std::isnan(x0 + y0 + x1 + y1)) continue;
+                if (clip_segment(x0, y0, x1, y1, box)) ++count;
+            }
+        }
+        if (data[k].marker != marker_style::none) {
+            const rect grown{box.x - marker_radius, box.y - marker_radius, box.w + 2 * marker_radius,
+                             box.h + 2 * marker_radius};
+            for (std::size_t i = 0; i < d.x.size(); ++i) {
+                if (d.x[i] >= grown.x && d.x[i] <= grown.x + grown.w && d.y[i] >= grown.y &&
+                    d.y[i] <= grown.y + grown.h) {
+                    ++count;
+                }
+            }
+        }
+    }
+    return count;
+}
+
+legend_layout measure_legend(const text_engine& text, const panel& p, const theme& th) {
+    legend_layout l;
+    if (p.legend == legend_place::none) return l;
+    for (std::size_t k = 0; k < p.data.size(); ++k) {
+        if (p.data[k].label.empty()) continue;
+        l.entries.push_back(k);
+        const auto [w, h] = text.measure(p.data[k].label, th.legend_font_pt);
+        l.text_ws.push_back(w);
+        l.text_w = std::max(l.text_w, w);
+        l.row_h = std::max(l.row_h, h);
+    }
+    if (l.entries.empty()) return l;
+    l.sample_w = 2.6 * th.legend_font_pt;
+    const double pad = 0.5 * th.padding_pt;
+    l.w = pad + l.sample_w + th.padding_pt + l.text_w + pad;
+    l.h = pad + l.row_h * l.entries.size() + pad;
+    return l;
+}
+
+void draw_legend_sample(cairo_t* cr, const theme& th, const series& s, double x, double y, double w) {
+    set_color(cr, th, s.color);
+    if (s.line != line_style::none) {
+        set_line_style(cr, th, s.line);
+        cairo_move_to(cr, x, y);
+        cairo_line_to(cr, x + w, y);
+        cairo_stroke(cr);
+    }
+    if (s.marker != marker_style::none) {
+        device_series d{{x + 0.5 * w}, {y}};
+        draw_markers(cr, th, d, rect{x, y - w, w, 2 * w});
+    }
+}
+
+void draw_legend(cairo_t* cr, const text_engine& text, const theme& th, const panel& p,
+                 const legend_layout& l, const rect& box) {
+    const double pad = 0.5 * th.padding_pt;
+    for (std::size_t i = 0; i < l.entries.size(); ++i) {
+        const series& s = p.data[l.entries[i]];
+        const double cy = box.y + pad + (i + 0.5) * l.row_h;
+        draw_legend_sample(cr, th, s, box.x + pad, cy, l.sample_w);
+        set_foreground(cr, th);
+        text.draw(s.label, th.legend_font_pt, box.x + pad + l.sample_w + th.padding_pt, cy, 0.0, 0.5);
+    }
+}
+
+std::vector<std::vector<std::size_t>> legend_lines(const legend_layout& l, const theme& th, double max_w) {
+    std::vector<std::vector<std::size_t>> lines;
+    double used = 0;
+    for (std::size_t i = 0; i < l.entries.size(); ++i) {
+        const double w = l.sample_w + th.padding_pt + l.text_ws[i];
+        const double gap = 2 * th.padding_pt;
+        if (lines.empty() || used + gap + w > max_w) {
+            lines.push_back({i});
+            used = w;
+        } else {
+            lines.back().push_back(i);
+            used += gap + w;
+        }
+    }
+    return lines;
+}
+
+double legend_band_height(const legend_layout& l, const theme& th, double max_w) {
+    if (l.entries.empty()) return 0;
+    return static_cast<double>(legend_lines(l, th, max_w).size()) * l.row_h + 0.5 * th.padding_pt;
+}
+
+void draw_legend_band(cairo_t* cr, const text_engine& text, const theme& th, const panel& p,
+                      const legend_layout& l, const rect& band) {
+    const auto lines = legend_lines(l, th, band.w);
+    for (std::size_t r = 0; r < lines.size(); ++r) {
+        double width = 0;
+        for (std::size_t i : lines[r]) width += l.sample_w + th.padding_pt + l.text_ws[i] + 2 * th.padding_pt;
+        width -= 2 * th.padding_pt;
+        double x = band.x + 0.5 * (band.w - width);
+        const double cy = band.y + (r + 0.5) * l.row_h;
+        for (std::size_t i : lines[r]) {
+            const series& s = p.data[l.entries[i]];
+            draw_legend_sample(cr, th, s, x, cy, l.sample_w);
+            set_foreground(cr, th);
+            text.draw(s.label, th.legend_font_pt, x + l.sample_w + th.padding_pt, cy, 0.0, 0.5);
+            x += l.sample_w + th.padding_pt + l.text_ws[i] + 2 * th.padding_pt;
+        }
+    }
+}
+
+}  // namespace plot

@@ -1,0 +1,81 @@
+#include "plot/strokes.hpp"
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace plot {
+
+void set_foreground(cairo_t* cr, const theme& th) {
+    cairo_set_source_rgb(cr, th.foreground.r, th.foreground.g, th.foreground.b);
+}
+
+void set_color(cairo_t* cr, const theme& th, int index) {
+    const rgb& c = th.palette[static_cast<std::size_t>(index) % th.palette.size()];
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+}
+
+void set_line_style(cairo_t* cr, const theme& th, line_style style) {
+    const double w = th.line_width_pt;
+    cairo_set_line_width(cr, w);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_set_line_cap(cr, style == line_style::dashed ? CAIRO_LINE_CAP_BUTT : CAIRO_LINE_CAP_ROUND);
+    switch (style) {
+        case line_style::dashed: {
+            const double d[] = {5.0 * w, 3.0 * w};
+            cairo_set_dash(cr, d, 2, 0);
+            break;
+        }
+        case line_style::dotted: {
+            const double d[] = {0.0, 2.2 * w};
+            cairo_set_dash(cr, d, 2, 0);
+            break;
+        }
+        case line_style::dash_dot: {
+            const double d[] = {5.0 * w, 2.2 * w, 0.5 * w, 2.2 * w};
+            cairo_set_dash(cr, d, 4, 0);
+            break;
+        }
+        default: cairo_set_dash(cr, nullptr, 0, 0);
+    }
+}
+
+void stroke_polyline(cairo_t* cr, const device_series& d, const rect& clip) {
+    // Visible runs of the clipped polyline, each simplified, then stroked as one path.
+    std::vector<std::vector<std::pair<double, double>>> runs;
+    bool open = false;
+    for (std::size_t i = 1; i < d.x.size(); ++i) {
+        double x0 = d.x[i - 1], y0 = d.y[i - 1], x1 = d.x[i], y1 = d.y[i];
+        if (std::isnan(x0 + y0 + x1 + y1) || !clip_segment(x0, y0, x1, y1, clip)) {
+            open = false;
+            continue;
+        }
+        if (!open || runs.back().back() != std::pair{x0, y0}) runs.push_back({{x0, y0}});
+        runs.back().emplace_back(x1, y1);
+        open = true;
+    }
+    for (auto& run : runs) {
+        simplify(run, 0.05);
+        cairo_move_to(cr, run.front().first, run.front().second);
+        for (std::size_t i = 1; i < run.size(); ++i) cairo_line_to(cr, run[i].first, run[i].second);
+    }
+    cairo_stroke(cr);
+}
+
+void draw_markers(cairo_t* cr, const theme& th, const device_series& d, const rect& area) {
+    const double r = th.marker_radius_pt;
+    cairo_set_dash(cr, nullptr, 0, 0);
+    cairo_set_line_width(cr, 0.75 * th.line_width_pt);
+    for (std::size_t i = 0; i < d.x.size(); ++i) {
+        if (std::isnan(d.x[i] + d.y[i])) continue;
+        if (d.x[i] < area.x - r || d.x[i] > area.x + area.w + r || d.y[i] < area.y - r ||
+            d.y[i] > area.y + area.h + r) {
+            continue;
+        }
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, d.x[i], d.y[i], r, 0, 2 * M_PI);
+    }
+    cairo_stroke(cr);
+}
+
+}  // namespace plot

@@ -350,3 +350,13 @@ TEST(Legend, GoesAboveWhenNoCornerIsFree) {
     };
     EXPECT_GT(frame_top(a), frame_top(b) + 5);
 }
+
+TEST(Ticks, DegreesDivideTheCircle) {
+    const auto t = degree_ticks(0, 180, 5, false);
+    EXPECT_EQ(t.major, (std::vector<double>{0, 45, 90, 135, 180}));
+    EXPECT_EQ(t.labels.front(), "0\u00b0");
+    EXPECT_EQ(t.labels.back(), "180\u00b0");
+    EXPECT_EQ(degree_ticks(-180, 180, 7, false).labels.front(), "\u2212180\u00b0");
+    EXPECT_EQ(degree_ticks(0, 10, 6, false).major, (std::vector<double>{0, 2, 4, 6, 8, 10}));
+    for (std::size_t i = 0; i < t.major.size(); ++i) EXPECT_EQ(t.major[i], 45.0 * static_cast<double>(i));
+}

@@ -75,10 +75,9 @@ plot::axis amplitude_axis(const panel_spec& p, double lo, double hi) {
     a.ticks = plot::tick_kind::multiples_of_pi;
     a.max_ticks = 5;
     if (p.degrees) {
-        a.ticks = plot::tick_kind::nice;
+        a.ticks = plot::tick_kind::degrees;
         a.min = lo * 180 / pi;
         a.max = hi * 180 / pi;
-        a.label += " (\u00b0)";
     }
     return a;
 }
@@ -141,7 +140,7 @@ plot::panel trajectory_panel(const context& c, const panel_spec& p) {
     panel.x.max_ticks = c.width_cm < 5 ? 3 : 5;
     panel.y.label = "<i>\u03d1</i>";
     if (p.degrees) {
-        panel.y.label += " (\u00b0)";
+        panel.y.ticks = plot::tick_kind::degrees;
         panel.y.max_ticks = 7;
     } else {
         panel.y.ticks = plot::tick_kind::multiples_of_pi;
@@ -284,8 +283,8 @@ plot::panel convergence_panel(const context&, const panel_spec& p) {
 plot::panel phase_panel(const context&, const panel_spec& p) {
     plot::panel panel;
     const double angle = p.degrees ? 180 / pi : 1.0;
-    panel.x.label = p.degrees ? "<i>\u03d1</i> (\u00b0)" : "<i>\u03d1</i>";
-    if (!p.degrees) panel.x.ticks = plot::tick_kind::multiples_of_pi;
+    panel.x.label = "<i>\u03d1</i>";
+    panel.x.ticks = p.degrees ? plot::tick_kind::degrees : plot::tick_kind::multiples_of_pi;
     panel.x.max_ticks = 5;
     panel.y.label = "d<i>\u03d1</i>/d(<i>\u03c9</i><sub>0</sub><i>t</i>)";
     const auto s_grid = grid(0, 1, 400);

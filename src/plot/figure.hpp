@@ -28,7 +28,7 @@ struct series {
 enum class scale { linear, log };
 
 /// Tick locator of an axis.
-enum class tick_kind { nice, multiples_of_pi };
+enum class tick_kind { nice, multiples_of_pi, degrees };
 
 /// One axis: label, range, scale and ticks.
 struct axis {

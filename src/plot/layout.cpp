@@ -36,6 +36,8 @@ tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizon
         t = log_ticks(lo, hi, a.max_ticks, expand);
     } else if (a.ticks == tick_kind::multiples_of_pi) {
         t = pi_ticks(lo, hi, a.max_ticks, expand);
+    } else if (a.ticks == tick_kind::degrees) {
+        t = degree_ticks(lo, hi, a.max_ticks, expand);
     } else {
         t = linear_ticks(lo, hi, a.max_ticks, expand);
     }

@@ -159,6 +159,38 @@ tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
     return t;
 }
 
+tick_set degree_ticks(double lo, double hi, int max_ticks, bool expand) {
+    widen_if_degenerate(lo, hi);
+    // Steps that divide the circle: ticks land on 30, 45, 90, ... degrees.
+    const int steps[] = {1, 2, 5, 10, 15, 30, 45, 90, 180, 360};
+    int step = 360;
+    for (int s : steps) {
+        const auto [a, b] = index_range(lo, hi, s, expand);
+        if (b - a + 1 <= std::max(max_ticks, 2)) {
+            step = s;
+            break;
+        }
+    }
+    const auto [a, b] = index_range(lo, hi, step, expand);
+    tick_set t;
+    t.lo = expand ? std::min(lo, static_cast<double>(a * step)) : lo;
+    t.hi = expand ? std::max(hi, static_cast<double>(b * step)) : hi;
+    for (long long i = a; i <= b; ++i) {
+        const long long v = i * step;
+        t.major.push_back(static_cast<double>(v));
+        t.labels.push_back((v < 0 ? minus : "") + std::to_string(v < 0 ? -v : v) + "\u00b0");
+    }
+    // Minor ticks halve the step where that stays a whole number of degrees.
+    if (step % 2 == 0 || step == 5 || step == 15 || step == 45) {
+        const double minor_step = step / 2.0;
+        const auto [ma, mb] = index_range(t.lo, t.hi, minor_step, false);
+        for (long long i = ma; i <= mb; ++i) {
+            if (i % 2 != 0) t.minor.push_back(static_cast<double>(i) * minor_step);
+        }
+    }
+    return t;
+}
+
 tick_set log_ticks(double lo, double hi, int max_ticks, bool expand) {
     if (!(lo > 0) || !(hi > 0) || !std::isfinite(lo) || !std::isfinite(hi)) {
         throw std::invalid_argument("a logarithmic axis needs a positive, finite range");

@@ -25,6 +25,9 @@ tick_set linear_ticks(double lo, double hi, int max_ticks, bool expand);
 /// Ticks at multiples of pi/8, pi/4, pi/2, pi or 2 pi, labelled 0, π/4, π/2, 3π/4, π, ...
 tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand);
 
+/// Ticks at whole degrees that divide the circle (1, 2, 5, 10, 15, 30, 45, 90, ...), labelled 45°.
+tick_set degree_ticks(double lo, double hi, int max_ticks, bool expand);
+
 /// Logarithmic ticks at powers of ten (labelled 10^n), minor ticks at 2..9 times them.
 tick_set log_ticks(double lo, double hi, int max_ticks, bool expand);
 

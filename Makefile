@@ -53,7 +53,7 @@ bench: build
 
 figures: build
 	mkdir -p figures
-	$(BUILD)/pendulum-figures render --all -o figures -f pdf,png
+	$(BUILD)/pendulum-figures render --all examples/*.toml -o figures -f pdf,png
 
 # Regenerates the images the tests compare renders to; run it after a deliberate change
 # to the figures, look at the new images, and commit them.

@@ -151,3 +151,21 @@ TEST(SpecCommands, ThemesFromTheCommandLine) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SpecCommands, ReadmeTablesAreMadeFromTheTables) {
+    const std::string readme = slurp(fs::path(PENDULUM_TEST_DATA) / ".." / ".." / "README.md");
+    const std::string begin = "<!-- BEGIN list --markdown -->\n";
+    const std::string end = "<!-- END list --markdown -->";
+    const auto a = readme.find(begin);
+    const auto b = readme.find(end);
+    ASSERT_NE(a, std::string::npos);
+    ASSERT_NE(b, std::string::npos);
+    const auto r = run_cli("list --markdown");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(readme.substr(a + begin.size(), b - a - begin.size()), r.out)
+        << "run 'pendulum-figures list --markdown' and paste its output into the README";
+}
+
+}  // namespace

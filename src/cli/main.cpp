@@ -236,12 +236,10 @@ figures::entry load_figure(const std::string& id) {
 /// files are read into `loaded`, which must outlive the result.
 std::vector<const figures::entry*> selected_figures(const std::vector<std::string>& ids, bool all,
                                                     std::deque<figures::entry>& loaded) {
-    if (all && !ids.empty()) throw usage_error("give figure ids or --all, not both");
     if (!all && ids.empty()) throw usage_error("name the figures to render, or use --all (see 'list')");
     std::vector<const figures::entry*> chosen;
     if (all) {
         for (const auto& e : figures::catalog()) chosen.push_back(&e);
-        return chosen;
     }
     for (const auto& id : ids) {
         const figures::entry* e = nullptr;
@@ -311,6 +309,41 @@ int run_render(const render_options& o) {
 /// `text` padded with spaces to `width` (at least one space).
 std::string padded(const std::string& text, std::size_t width) {
     return text + std::string(text.size() < width ? width - text.size() : 1, ' ');
+}
+
+/// Text for a Markdown table cell: | would end the cell.
+std::string md_cell(std::string_view text) {
+    std::string out;
+    for (const char c : text) {
+        if (c == '|') out += '\\';
+        out += c;
+    }
+    return out;
+}
+
+/// The tables of `list` in Markdown, as the README shows them.
+std::string list_markdown() {
+    std::ostringstream out;
+    out << "| figure (alias) | paper | shows |\n| --- | --- | --- |\n";
+    for (const auto& e : figures::catalog()) {
+        out << "| `" << e.id << "`" << (e.alias.empty() ? "" : " (`" + e.alias + "`)") << " | " << e.paper_figure
+            << " | " << md_cell(e.description()) << " |\n";
+    }
+    out << "\n| method | gives | what |\n| --- | --- | --- |\n";
+    for (const auto& m : method_table()) {
+        out << "| `" << m.name << (m.min_n < 0 ? "" : ":N") << "`"
+            << (m.min_n < 0 ? "" : " (N = " + std::to_string(m.min_n) + ".." + std::to_string(m.max_n) + ")") << " | "
+            << (m.kind == method_kind::motion ? "motion" : "period") << " | " << m.description << " |\n";
+    }
+    out << "\n| plot | x | y | keys |\n| --- | --- | --- | --- |\n";
+    for (const auto& p : figures::plot_table()) {
+        out << "| `" << p.name << "` | " << md_cell(p.x) << " | " << md_cell(p.y) << " | " << p.keys << " |\n";
+    }
+    out << "\n| format | what |\n| --- | --- |\n";
+    for (const auto& f : plot::format_table()) out << "| `" << f.name << "` | " << f.description << " |\n";
+    out << "\n| theme | what |\n| --- | --- |\n";
+    for (const auto& t : figures::builtin_themes()) out << "| `" << t.name << "` | " << t.description << " |\n";
+    return out.str();
 }
 
 std::string list_text() {
@@ -525,7 +558,7 @@ int main(int argc, char** argv) {
     render_options ro;
     auto* render = app.add_subcommand("render", "Draw figures (built-in or spec files) into files: " + format_list() + ".");
     render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), or spec files NAME.toml")->type_name("ID");
-    render->add_flag("--all", ro.all, "Render every figure of the catalog");
+    render->add_flag("--all", ro.all, "Render every built-in figure (and the spec files given with it)");
     render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR");
     render->add_option("-f,--formats", ro.formats, "Comma-separated formats (default: pdf,png): " + format_help())
         ->type_name("LIST");
@@ -549,7 +582,10 @@ int main(int argc, char** argv) {
                    "  pendulum-figures render fig2 --theta0 170deg --theme slides -f png --dpi 150\n"
                    "  pendulum-figures render --all --paper-files -f eps -o paper/");
 
+    bool list_markdown_flag = false;
     auto* list = app.add_subcommand("list", "List the figures, the methods and the plot kinds.");
+    list->add_flag("--markdown", list_markdown_flag,
+                   "Print the tables in Markdown, with the output formats and themes (as in the README)");
     list->footer("\nExamples:\n  pendulum-figures list\n  pendulum-figures render fig7 -f pdf\n"
                  "  pendulum-figures show fig2 > my-figure.toml");
 
@@ -624,7 +660,7 @@ int main(int argc, char** argv) {
                 out << figures::find(show_id).source;
             }
         } else if (*list) {
-            out << list_text();
+            out << (list_markdown_flag ? list_markdown() : list_text());
         } else if (*data) {
             const std::string csv = figure_data(data_id, data_theta0);
             if (!data_file.empty()) {

@@ -231,7 +231,7 @@ TEST(RenderCommand, BadInputTouchesNoFile) {
         "render fig1 -o '" + (dir / "missing").string() + "'",
         "render fig1 -o '" + (dir / "c1-lowest.png").string() + "'",
         "render" + d,
-        "render --all fig1" + d,
+        "render --all nosuch" + d,
         "render convergence --paper-files" + d,
         "render fig1 period --theta0 1" + d,
         "data nosuch",

@@ -169,3 +169,19 @@ TEST(SpecCommands, ReadmeTablesAreMadeFromTheTables) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SpecCommands, AMethodsOwnColour) {
+    const auto dir = scratch("colour");
+    std::ofstream(dir / "c.toml") << "[[panel]]\nplot = \"trajectory\"\ntheta0 = 1\n"
+                                     "methods = [\"exact\", { method = \"harmonic\", color = \"#d55e00\" }]\n";
+    const auto r = run_cli("render c.toml -f svg", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string svg = slurp(dir / "c.svg");
+    // The curve and its legend sample, in the paper theme whose palette is black only.
+    EXPECT_NE(svg.find("rgb(83.529412%,36.862745%,0%)"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+}  // namespace

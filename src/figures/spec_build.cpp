@@ -39,6 +39,7 @@ struct series_style {
     marker_style marker;
     int color;
     std::string style_key;
+    std::optional<plot::rgb> rgb_color = std::nullopt;
 };
 
 series_style style_of(const method_spec& m, int index) {
@@ -48,19 +49,27 @@ series_style style_of(const method_spec& m, int index) {
     if (!m.style && !m.marker) s.style_key = std::string(m.method.row->name);
     if (m.style) s.line = *m.style;
     if (m.marker) s.marker = *m.marker;
+    s.rgb_color = m.color;
     return s;
 }
 
-plot::series make_series(const series_style& st, std::vector<double> x, const std::function<double(double)>& f) {
+/// An empty series in the style.
+plot::series series_of(const series_style& st) {
     plot::series s;
     s.label = st.label;
-    s.y.reserve(x.size());
-    for (double v : x) s.y.push_back(f(v));
-    s.x = std::move(x);
     s.line = st.line;
     s.marker = st.marker;
     s.color = st.color;
     s.style_key = st.style_key;
+    s.rgb_color = st.rgb_color;
+    return s;
+}
+
+plot::series make_series(const series_style& st, std::vector<double> x, const std::function<double(double)>& f) {
+    plot::series s = series_of(st);
+    s.y.reserve(x.size());
+    for (double v : x) s.y.push_back(f(v));
+    s.x = std::move(x);
     return s;
 }
 
@@ -230,8 +239,7 @@ plot::panel period_panel(const context& c, const panel_spec& p) {
             continue;
         }
         if (is_exact(m)) continue;  // its error is zero
-        plot::series s{st.label, {}, {}, st.line, st.marker, st.color};
-        s.style_key = st.style_key;
+        plot::series s = series_of(st);
         for (std::size_t k = 0; k < curve.size(); ++k) {
             const double err = pendulum::method_period(m.method, curve[k]) / exact[k] - 1;
             s.x.push_back(to_axis_angle(p, curve[k]));
@@ -268,7 +276,7 @@ plot::panel convergence_panel(const context&, const panel_spec& p) {
         const double exact = pendulum::period_ratio(a.value);
         const auto levels = pendulum::iterated_sequence(a.value, p.orders[1]);
         const series_style st = amplitude_style(i, std::string(theta0_markup) + " = " + typeset_angle(a.text));
-        plot::series s{st.label, {}, {}, st.line, st.marker, st.color};
+        plot::series s = series_of(st);
         for (int n = p.orders[0]; n <= p.orders[1]; ++n) {
             const double err = std::fabs(levels[static_cast<std::size_t>(n)].period_ratio() / exact - 1);
             s.x.push_back(n);
@@ -296,7 +304,7 @@ plot::panel phase_panel(const context&, const panel_spec& p) {
             const auto& m = p.methods[j];
             series_style st = style_of(m, static_cast<int>(j));
             if (i > 0) st.label.clear();  // one legend entry per method
-            plot::series s{st.label, {}, {}, st.line, st.marker, st.color};
+            plot::series s = series_of(st);
             if (is_exact(m)) {
                 if (!m.style && !m.marker) {
                     // An orbit reads best as a line.
@@ -348,7 +356,7 @@ plot::panel spectrum_panel(const context&, const panel_spec& p) {
             series_style st = amplitude_style(index++, label);
             st.marker = marker_style::open_circle;
             if (m.style) st.line = *m.style;
-            plot::series s{st.label, {}, {}, st.line, st.marker, st.color};
+            plot::series s = series_of(st);
             const std::vector<double> c = is_exact(m)
                                               ? pendulum::fourier_coefficients(a.value, p.harmonics)
                                               : pendulum::method_solution(m.method, a.value).coefficients;

@@ -6,6 +6,13 @@
 
 namespace plot {
 
+/// An RGB colour with components in [0, 1].
+struct rgb {
+    double r = 0;  ///< red
+    double g = 0;  ///< green
+    double b = 0;  ///< blue
+};
+
 /// How a series' line is drawn.
 enum class line_style { none, solid, dashed, dotted, dash_dot };
 
@@ -20,6 +27,7 @@ struct series {
     line_style line = line_style::solid;    ///< line style
     marker_style marker = marker_style::none;  ///< marker
     int color = 0;                          ///< index into the theme's palette
+    std::optional<rgb> rgb_color;           ///< a colour of its own, in place of the palette's
     bool autoscale = true;                  ///< false: leaves the axis limits alone (reference lines)
     std::string style_key;                  ///< a theme's style for this name replaces line and marker
 };

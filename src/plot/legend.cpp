@@ -52,7 +52,7 @@ legend_layout measure_legend(const text_engine& text, const panel& p, const them
 }
 
 void draw_legend_sample(cairo_t* cr, const theme& th, const series& s, double x, double y, double w) {
-    set_color(cr, th, s.color);
+    set_color(cr, th, s);
     if (s.line != line_style::none) {
         set_line_style(cr, th, s.line);
         cairo_move_to(cr, x, y);

@@ -99,7 +99,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
                     area.h + 2 * th.line_width_pt};
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         const auto& s = p.data[k];
-        set_color(cr, th, s.color);
+        set_color(cr, th, s);
         if (s.line != line_style::none) {
             set_line_style(cr, th, s.line);
             stroke_polyline(cr, dev[k], clip);

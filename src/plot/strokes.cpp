@@ -10,8 +10,8 @@ void set_foreground(cairo_t* cr, const theme& th) {
     cairo_set_source_rgb(cr, th.foreground.r, th.foreground.g, th.foreground.b);
 }
 
-void set_color(cairo_t* cr, const theme& th, int index) {
-    const rgb& c = th.palette[static_cast<std::size_t>(index) % th.palette.size()];
+void set_color(cairo_t* cr, const theme& th, const series& s) {
+    const rgb& c = s.rgb_color ? *s.rgb_color : th.palette[static_cast<std::size_t>(s.color) % th.palette.size()];
     cairo_set_source_rgb(cr, c.r, c.g, c.b);
 }
 

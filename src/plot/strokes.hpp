@@ -11,8 +11,8 @@ namespace plot {
 /// Sets the theme's foreground colour (frame, ticks, text).
 void set_foreground(cairo_t* cr, const theme& th);
 
-/// Sets the palette colour of a series.
-void set_color(cairo_t* cr, const theme& th, int index);
+/// Sets a series' colour: its own, or the palette's at its index.
+void set_color(cairo_t* cr, const theme& th, const series& s);
 
 /// Sets width, dash pattern and caps of a line style.
 void set_line_style(cairo_t* cr, const theme& th, line_style style);

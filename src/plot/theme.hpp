@@ -9,13 +9,6 @@
 
 namespace plot {
 
-/// An RGB colour with components in [0, 1].
-struct rgb {
-    double r = 0;  ///< red
-    double g = 0;  ///< green
-    double b = 0;  ///< blue
-};
-
 /// A style a theme gives to series of one name (figures name them by method).
 struct named_style {
     std::optional<line_style> line;      ///< line style

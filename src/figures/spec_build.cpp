@@ -307,9 +307,10 @@ plot::panel phase_panel(const context&, const panel_spec& p) {
             plot::series s = series_of(st);
             if (is_exact(m)) {
                 if (!m.style && !m.marker) {
-                    // An orbit reads best as a line.
+                    // An orbit reads best as a line, whatever the theme's circles for exact.
                     s.line = line_style::solid;
                     s.marker = marker_style::none;
+                    s.style_key.clear();
                 }
                 for (double t : s_grid) {
                     s.x.push_back(angle * exact.theta_at_fraction(t));

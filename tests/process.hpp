@@ -3,6 +3,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -45,6 +46,22 @@ inline run_result run_command(const std::string& command) {
 /// Runs PENDULUM_EXE with `args` (shell syntax) in `cwd`, capturing both streams.
 inline run_result run_cli(const std::string& args, const std::filesystem::path& cwd = ".") {
     return run_command("cd '" + cwd.string() + "' && '" + std::string(PENDULUM_EXE) + "' " + args);
+}
+
+/// A new empty directory for one test, removed first if a previous run left it.
+inline std::filesystem::path temp_dir(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("pendulum-figures-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+/// The names of the files in dir.
+inline std::set<std::string> files_in(const std::filesystem::path& dir) {
+    std::set<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) names.insert(e.path().filename().string());
+    return names;
 }
 
 }  // namespace test_support

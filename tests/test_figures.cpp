@@ -20,7 +20,9 @@
 
 using std::numbers::pi;
 namespace fs = std::filesystem;
+using test_support::files_in;
 using test_support::run_cli;
+using test_support::temp_dir;
 
 namespace {
 
@@ -28,18 +30,6 @@ namespace {
 plot::theme paper_theme() { return figures::load_theme("paper"); }
 plot::theme slides_theme() { return figures::load_theme("slides"); }
 
-fs::path temp_dir(const std::string& name) {
-    const auto dir = fs::temp_directory_path() / ("pendulum-figures-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-std::set<std::string> files_in(const fs::path& dir) {
-    std::set<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
-    return names;
-}
 
 }  // namespace
 

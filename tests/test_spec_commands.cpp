@@ -16,18 +16,8 @@ namespace fs = std::filesystem;
 using test_support::run_cli;
 using test_support::slurp;
 
-fs::path scratch(const std::string& name) {
-    const auto dir = fs::temp_directory_path() / ("pendulum-specs-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-std::set<std::string> files_in(const fs::path& dir) {
-    std::set<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
-    return names;
-}
+fs::path scratch(const std::string& name) { return test_support::temp_dir("specs-" + name); }
+using test_support::files_in;
 
 TEST(SpecCommands, ShownSpecRendersTheSameBytes) {
     const auto dir = scratch("show");

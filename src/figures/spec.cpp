@@ -77,18 +77,6 @@ constexpr std::array<std::pair<std::string_view, bool>, 2> angle_units = {{
     {"deg", true},
 }};
 
-std::optional<plot::rgb> parse_color(std::string_view text) {
-    if (text.size() != 7 || text[0] != '#') return std::nullopt;
-    int v[3];
-    for (int i = 0; i < 3; ++i) {
-        const std::string part(text.substr(1 + 2 * i, 2));
-        if (!std::isxdigit(static_cast<unsigned char>(part[0])) || !std::isxdigit(static_cast<unsigned char>(part[1]))) {
-            return std::nullopt;
-        }
-        v[i] = std::stoi(part, nullptr, 16);
-    }
-    return plot::rgb{v[0] / 255.0, v[1] / 255.0, v[2] / 255.0};
-}
 
 std::optional<method_spec> read_method(reader& r, const toml::node& n, const plot_row& plot) {
     method_spec m;

@@ -26,6 +26,9 @@ bool contains(const std::vector<std::string>& names, std::string_view name);
 /// "a, b, c".
 std::string listed(const std::vector<std::string>& names);
 
+/// A colour written "#rrggbb", or nothing if it is not one.
+std::optional<plot::rgb> parse_color(std::string_view text);
+
 /// Line styles by the names specs and style files use.
 inline constexpr std::array<std::pair<std::string_view, plot::line_style>, 5> line_styles = {{
     {"solid", plot::line_style::solid},

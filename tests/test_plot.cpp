@@ -1,6 +1,7 @@
 // Tests of the plot layer: tick location and labels, output formats, reproducible bytes,
 // atomic writes, and errors.
 #include "plot/figure.hpp"
+#include "plot/math_layout.hpp"
 #include "plot/output.hpp"
 #include "plot/render.hpp"
 #include "figures/themes.hpp"
@@ -36,7 +37,7 @@ figure sample_figure() {
         panel p;
         p.label = k == 0 ? "(a)" : "(b)";
         p.x.label = "<i>\u03d1</i><sub>0</sub>";
-        p.y.label = "<i>c</i>\u2032<sub>1</sub>";
+        p.y.label = "<i>c</i><sup>\u2032</sup><sub>1</sub>";
         p.x.ticks = tick_kind::multiples_of_pi;
         series s{"curve", {}, {}, line_style::dashed, marker_style::none, 1};
         series m{"points", {}, {}, line_style::none, marker_style::open_circle, 0};
@@ -84,12 +85,80 @@ TEST(Ticks, NiceStepsOnUglyRanges) {
 }
 
 TEST(Ticks, MultiplesOfTheStepNeverAccumulated) {
+    // Every tick is i * step exactly; summing steps drifts (0.1 * 8 != 0.1 + ... + 0.1).
+    const struct {
+        double lo, hi;
+        int max_ticks;
+    } ranges[] = {{0, 1, 11}, {-1e-3, 1e-3, 5}, {0, 1e6, 6}, {-0.14, 3.74, 5}, {0.3, 2.9, 14}, {-7.7, -0.3, 8}};
+    for (const auto& r : ranges) {
+        const auto t = linear_ticks(r.lo, r.hi, r.max_ticks, true);
+        const double step = nice_step(r.lo, r.hi, r.max_ticks, true);
+        ASSERT_GE(t.major.size(), 2u);
+        const long long first = std::llround(t.major.front() / step);
+        for (std::size_t k = 0; k < t.major.size(); ++k) {
+            const long long i = first + static_cast<long long>(k);
+            EXPECT_EQ(t.major[k], i == 0 ? 0.0 : static_cast<double>(i) * step) << r.lo << ".." << r.hi << " tick " << k;
+        }
+    }
     const auto t = linear_ticks(0, 1, 11, true);
     ASSERT_EQ(t.major.size(), 11u);
-    EXPECT_EQ(t.major[3], 3 * 0.1);  // i * step, so 0.30000000000000004 is never summed up
     EXPECT_EQ(t.labels[3], "0.3");
     EXPECT_EQ(t.labels[0], "0.0");  // shared precision
     EXPECT_EQ(t.labels[10], "1.0");
+}
+
+TEST(Ticks, EdgeCases) {
+    // Table-driven, after matplotlib's TestMaxNLocator.basic_data: range, max ticks, and
+    // what the locator must give.
+    const struct {
+        const char* name;
+        tick_set (*locate)(double, double, int, bool);
+        double lo, hi;
+        int max_ticks;
+        std::size_t min_major, max_major;
+        bool minor_wanted;
+    } cases[] = {
+        {"pi over [0, 1e6]", pi_ticks, 0, 1e6, 5, 2, 5, false},
+        {"pi over [0, 1e3]", pi_ticks, 0, 1e3, 7, 2, 7, false},
+        {"pi over [0, pi]", pi_ticks, 0, pi, 5, 5, 5, true},
+        {"log over [0.3, 5]", log_ticks, 0.3, 5, 6, 2, 6, true},
+        {"log over [2, 8]", log_ticks, 2, 8, 6, 2, 6, true},
+        {"log over [1e-16, 1]", log_ticks, 1e-16, 1, 9, 9, 9, true},
+        {"linear over [1, 1]", linear_ticks, 1, 1, 5, 2, 5, true},
+        {"linear over [0, 0]", linear_ticks, 0, 0, 5, 2, 5, true},
+        {"linear over [0, 1e6]", linear_ticks, 0, 1e6, 6, 2, 6, true},
+    };
+    for (const auto& c : cases) {
+        const auto t = c.locate(c.lo, c.hi, c.max_ticks, false);
+        EXPECT_GE(t.major.size(), c.min_major) << c.name;
+        EXPECT_LE(t.major.size(), c.max_major) << c.name;
+        EXPECT_EQ(t.labels.size(), t.major.size()) << c.name;
+        if (c.minor_wanted) EXPECT_FALSE(t.minor.empty()) << c.name;
+        EXPECT_TRUE(std::is_sorted(t.major.begin(), t.major.end())) << c.name;
+        EXPECT_TRUE(std::is_sorted(t.minor.begin(), t.minor.end())) << c.name;
+        for (double v : t.major) {
+            EXPECT_GE(v, t.lo - 1e-9 * std::fabs(t.lo)) << c.name;
+            EXPECT_LE(v, t.hi + 1e-9 * std::fabs(t.hi)) << c.name;
+        }
+        for (double v : t.minor) {
+            EXPECT_GE(v, t.lo - 1e-9 * std::fabs(t.lo)) << c.name;
+            EXPECT_LE(v, t.hi + 1e-9 * std::fabs(t.hi)) << c.name;
+        }
+        for (const auto& l : t.labels) EXPECT_FALSE(l.empty()) << c.name;
+    }
+    // Within one decade, 1, 2 and 5 times powers of ten carry plain labels.
+    const auto t = log_ticks(0.3, 5, 6, false);
+    EXPECT_EQ(t.major, (std::vector<double>{0.5, 1, 2, 5}));
+    EXPECT_EQ(t.labels, (std::vector<std::string>{"0.5", "1", "2", "5"}));
+    // An empty range still has a step, around its value.
+    const struct {
+        double lo, hi;
+    } empty[] = {{1, 1}, {0, 0}, {-3e-7, -3e-7}, {1e6, 1e6}};
+    for (const auto& e : empty) {
+        const double step = nice_step(e.lo, e.hi, 5);
+        EXPECT_GT(step, 0) << e.lo;
+        EXPECT_TRUE(std::isfinite(step)) << e.lo;
+    }
 }
 
 TEST(Ticks, SharedPrecisionAndMinusSign) {
@@ -114,15 +183,15 @@ TEST(Ticks, WithoutExpansionStayInsideTheRange) {
 
 TEST(Ticks, MultiplesOfPi) {
     auto t = pi_ticks(0, pi, 5, false);
-    EXPECT_EQ(t.labels, (std::vector<std::string>{"0", "\u03c0/4", "\u03c0/2", "3\u03c0/4", "\u03c0"}));
+    EXPECT_EQ(t.labels, (std::vector<std::string>{"0", "<i>\u03c0</i>/4", "<i>\u03c0</i>/2", "3<i>\u03c0</i>/4", "<i>\u03c0</i>"}));
     EXPECT_EQ(t.major[2], pi / 2);
     t = pi_ticks(-2.9, 2.9, 7, true);
-    EXPECT_EQ(t.labels, (std::vector<std::string>{"\u2212\u03c0", "\u2212\u03c0/2", "0", "\u03c0/2", "\u03c0"}));
+    EXPECT_EQ(t.labels, (std::vector<std::string>{"\u2212<i>\u03c0</i>", "\u2212<i>\u03c0</i>/2", "0", "<i>\u03c0</i>/2", "<i>\u03c0</i>"}));
     EXPECT_EQ(t.lo, -pi);
     t = pi_ticks(0, 4 * pi, 5, false);
-    EXPECT_EQ(t.labels.back(), "4\u03c0");
+    EXPECT_EQ(t.labels.back(), "4<i>\u03c0</i>");
     t = pi_ticks(-pi / 3, pi / 3, 7, true);  // quarters, not eighths
-    EXPECT_EQ(t.labels.front(), "\u2212\u03c0/2");
+    EXPECT_EQ(t.labels.front(), "\u2212<i>\u03c0</i>/2");
 }
 
 TEST(Ticks, Logarithmic) {
@@ -136,6 +205,31 @@ TEST(Ticks, Logarithmic) {
     EXPECT_FALSE(t.minor.empty());
     EXPECT_THROW(log_ticks(0, 1, 5, true), std::invalid_argument);
     EXPECT_THROW(linear_ticks(0, std::nan(""), 5, true), std::invalid_argument);
+}
+
+TEST(MathLayout, ScriptsStackAfterTheirBase) {
+    // c'_1: the prime and the subscript are one piece after c, stacked, as TeX sets them.
+    auto p = split_scripts("<i>c</i><sup>\u02b9</sup><sub>1</sub>");
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0].base, "<i>c</i>");
+    EXPECT_TRUE(p[0].has_sup && p[0].has_sub);
+    EXPECT_EQ(p[0].sup, "\u02b9");
+    EXPECT_EQ(p[0].sub, "1");
+    EXPECT_TRUE(only_primes(p[0].sup));
+    EXPECT_FALSE(only_primes("2"));
+    p = split_scripts("<i>T</i>/<i>T</i><sub>0</sub> = 1");
+    ASSERT_EQ(p.size(), 2u);
+    EXPECT_EQ(p[0].base, "<i>T</i>/<i>T</i>");
+    EXPECT_EQ(p[0].sub, "0");
+    EXPECT_FALSE(p[0].has_sup);
+    EXPECT_EQ(p[1].base, " = 1");
+    p = split_scripts("<i>x</i><sup>2</sup><sup>3</sup>");  // a second superscript: its own piece
+    ASSERT_EQ(p.size(), 2u);
+    EXPECT_TRUE(p[1].base.empty());
+    EXPECT_EQ(p[1].sup, "3");
+    p = split_scripts("<b>a<sub>1</sub></b>");  // nested scripts stay with their element
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0].base, "<b>a<sub>1</sub></b>");
 }
 
 TEST(Markup, Escaped) {

@@ -17,8 +17,8 @@ TEST(TexMarkup, TheCatalogsLabels) {
     EXPECT_EQ(tex_to_markup("$t/T$"), "<i>t</i>/<i>T</i>");
     EXPECT_EQ(tex_to_markup("$T/T_0$"), "<i>T</i>/<i>T</i><sub>0</sub>");
     EXPECT_EQ(tex_to_markup("$c_1$"), "<i>c</i><sub>1</sub>");
-    EXPECT_EQ(tex_to_markup("$c'_3$"), "<i>c</i>\u200a<span letter_spacing=\"-1500\">\u2032</span><sub>3</sub>");
-    EXPECT_EQ(tex_to_markup("$c''_5$"), "<i>c</i><span letter_spacing=\"-1600\">\u2033</span><sub>5</sub>");
+    EXPECT_EQ(tex_to_markup("$c'_3$"), "<i>c</i><sup>\u02b9</sup><sub>3</sub>");
+    EXPECT_EQ(tex_to_markup("$c''_5$"), "<i>c</i><sup>\u02b9\u02b9</sup><sub>5</sub>");
     EXPECT_EQ(tex_to_markup("$|T_N/T - 1|$"), "|<i>T</i><sub><i>N</i></sub>/<i>T</i> \u2212 1|");
     EXPECT_EQ(tex_to_markup("order $N$ of the iteration"), "order <i>N</i> of the iteration");
     EXPECT_EQ(tex_to_markup("relative error (%)"), "relative error (%)");

@@ -97,6 +97,18 @@ plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
     one.panel_width_cm = width_cm;
     one.panel_aspect = f.panel_aspect;
     one.panels.push_back(f.panels.at(panel));
+    // The other panels' margins are shared, so every file of the figure has the same frame.
+    for (std::size_t i = 0; i < f.panels.size(); ++i) {
+        if (static_cast<int>(i) != panel) one.peers.push_back(f.panels[i]);
+    }
+    // One legend per figure, in the first file, inside the frame or not at all: the
+    // captions name every line.
+    auto& legend = one.panels.front().legend;
+    if (panel != 0) {
+        legend = plot::legend_place::none;
+    } else if (legend != plot::legend_place::none) {
+        legend = plot::legend_place::inside;
+    }
     return one;
 }
 

@@ -171,6 +171,11 @@ plot::panel trajectory_panel(const context& c, const panel_spec& p) {
         }
         panel.data.back().x = scaled(std::move(panel.data.back().x));
     }
+    // The exact motion sets the angle axis; an approximation that overshoots it near the
+    // separatrix is clipped rather than stretching the axis.
+    if (std::any_of(p.methods.begin(), p.methods.end(), [](const auto& m) { return is_exact(m); })) {
+        for (std::size_t i = 0; i < p.methods.size(); ++i) panel.data[i].sets_limits = is_exact(p.methods[i]);
+    }
     return panel;
 }
 

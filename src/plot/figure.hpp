@@ -29,6 +29,7 @@ struct series {
     int color = 0;                          ///< index into the theme's palette
     std::optional<rgb> rgb_color;           ///< a colour of its own, in place of the palette's
     bool autoscale = true;                  ///< false: leaves the axis limits alone (reference lines)
+    bool sets_limits = true;                ///< false: data that leaves the axis limits alone and is clipped
     std::string style_key;                  ///< a theme's style for this name replaces line and marker
 };
 
@@ -50,8 +51,9 @@ struct axis {
     bool round_limits = false;          ///< move free limits out to the enclosing ticks
 };
 
-/// Where a legend goes; automatic picks a corner free of data, else above the plot.
-enum class legend_place { automatic, none };
+/// Where a legend goes: automatic picks a spot inside the axes free of data, else a band
+/// above the plot; inside takes such a spot or shows no legend (the frame never moves).
+enum class legend_place { automatic, inside, none };
 
 /// One plotting area with its axes, series and legend.
 struct panel {
@@ -70,6 +72,7 @@ struct figure {
     double panel_aspect = 0.75;    ///< panel height / width (paper theme)
     std::vector<panel> panels;     ///< row-major, rows * cols at most
     bool shared_legend = false;    ///< one legend, in the first panel with room inside the axes
+    std::vector<panel> peers;      ///< panels drawn in other files whose frames these must match
 };
 
 /// Escapes text for use inside Pango markup (&, <, >, quotes).

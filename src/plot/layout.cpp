@@ -10,7 +10,7 @@ tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizon
     double lo = std::numeric_limits<double>::infinity();
     double hi = -lo;
     for (const auto& s : data) {
-        if (!s.autoscale) continue;
+        if (!s.autoscale || !s.sets_limits) continue;
         const auto& v = horizontal ? s.x : s.y;
         for (double d : v) {
             if (!std::isfinite(d) || (a.kind == scale::log && !(d > 0))) continue;
@@ -51,28 +51,66 @@ panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th) 
     panel_plan plan;
     plan.xt = axis_ticks(p.x, p.data, true);
     plan.yt = axis_ticks(p.y, p.data, false);
-    const double pad = th.padding_pt;
-    double ytick_w = 0;
-    double tick_h = 0;
-    for (const auto& l : plan.yt.labels) {
-        const auto [w, h] = text.measure(l, th.tick_font_pt);
-        ytick_w = std::max(ytick_w, w);
-        tick_h = std::max(tick_h, h);
-    }
-    double last_xtick_w = 0;
+    const text_ink digit = text.ink("0", th.tick_font_pt);
+    plan.digit_h = digit.h;
+    // Half a digit and a little: the lowest y tick label, centred on the bottom edge, then
+    // clears the first x tick label at the same distance from the frame.
+    plan.tick_gap = 0.5 * digit.h + 0.15 * th.tick_font_pt;
+    plan.label_gap = 0.6 * th.padding_pt;
+    for (const auto& l : plan.yt.labels) plan.ytick_w = std::max(plan.ytick_w, text.ink(l, th.tick_font_pt).w);
     for (const auto& l : plan.xt.labels) {
-        const auto [w, h] = text.measure(l, th.tick_font_pt);
-        tick_h = std::max(tick_h, h);
-        last_xtick_w = w;
+        const text_ink i = text.ink(l, th.tick_font_pt);
+        plan.xtick_up = std::max(plan.xtick_up, -i.y);
+        plan.xtick_down = std::max(plan.xtick_down, i.y + i.h);
     }
-    const double label_h = text.measure("Xg", th.label_font_pt).second;
-    plan.left = pad + (p.y.label.empty() ? 0 : label_h + 0.5 * pad) + ytick_w + 0.6 * pad;
-    plan.tick_h = tick_h;
-    plan.bottom = pad + (p.x.label.empty() ? 0 : label_h + 0.3 * pad) + tick_h + x_tick_gap(tick_h);
-    plan.top = pad + std::max(0.5 * tick_h, p.label.empty() ? 0.0 : label_h);
+    if (!p.y.label.empty()) plan.ylabel_h = text.ink(p.y.label, th.label_font_pt).h;
+    if (!p.x.label.empty()) plan.xlabel_h = text.ink(p.x.label, th.label_font_pt).h;
+    const double pad = th.padding_pt;
+    const double last_xtick_w = plan.xt.labels.empty() ? 0.0 : text.ink(plan.xt.labels.back(), th.tick_font_pt).w;
+    const double panel_label_h = p.label.empty() ? 0.0 : text.ink(p.label, th.label_font_pt).h;
+    // The panel label sits above the top y tick label, never beside it.
+    plan.top = pad + std::max(0.5 * digit.h, p.label.empty() ? 0.0 : 0.5 * digit.h + plan.label_gap + panel_label_h);
     plan.right = pad + 0.5 * last_xtick_w;
     plan.legend = measure_legend(text, p, th);
     return plan;
+}
+
+void share_margins(std::vector<panel_plan>& plans, const std::vector<panel_plan>& peers, const theme& th, int cols) {
+    std::vector<double> column_w(static_cast<std::size_t>(std::max(cols, 1)), 0.0);
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+        double& w = column_w[i % column_w.size()];
+        w = std::max(w, plans[i].ytick_w);
+    }
+    for (std::size_t i = 0; i < plans.size(); ++i) plans[i].column_ytick_w = column_w[i % column_w.size()];
+    panel_plan m;
+    const std::vector<panel_plan>* lists[] = {&plans, &peers};
+    for (const auto* list : lists) {
+        for (const auto& p : *list) {
+            m.ytick_w = std::max(m.ytick_w, p.ytick_w);
+            m.ylabel_h = std::max(m.ylabel_h, p.ylabel_h);
+            m.xtick_up = std::max(m.xtick_up, p.xtick_up);
+            m.xtick_down = std::max(m.xtick_down, p.xtick_down);
+            m.xlabel_h = std::max(m.xlabel_h, p.xlabel_h);
+            m.top = std::max(m.top, p.top);
+            m.right = std::max(m.right, p.right);
+            m.tick_gap = std::max(m.tick_gap, p.tick_gap);
+            m.label_gap = std::max(m.label_gap, p.label_gap);
+        }
+    }
+    const double pad = th.padding_pt;
+    for (auto& p : plans) {
+        p.ytick_w = m.ytick_w;
+        p.ylabel_h = m.ylabel_h;
+        p.xtick_up = m.xtick_up;
+        p.xtick_down = m.xtick_down;
+        p.xlabel_h = m.xlabel_h;
+        p.tick_gap = m.tick_gap;
+        p.label_gap = m.label_gap;
+        p.left = pad + (m.ylabel_h > 0 ? m.ylabel_h + m.label_gap : 0.0) + m.ytick_w + m.tick_gap;
+        p.bottom = m.tick_gap + m.xtick_up + m.xtick_down + (m.xlabel_h > 0 ? m.label_gap + m.xlabel_h : 0.0) + pad;
+        p.top = m.top;
+        p.right = m.right;
+    }
 }
 
 panel_geometry place_panel(const panel& p, const panel_plan& plan, const rect& area) {
@@ -92,7 +130,10 @@ std::optional<rect> legend_inside(const panel& p, const legend_layout& lg, const
                                   const theme& th) {
     if (lg.entries.empty()) return std::nullopt;
     const rect& area = g.area;
-    const double inset = 0.8 * th.padding_pt;
+    // At least 1 mm between the legend's ink and the frame or its tick marks; the legend
+    // box has half a padding inside.
+    const double mm = 72.0 / 25.4;
+    const double inset = th.tick_length_pt + mm - 0.5 * th.padding_pt;
     if (lg.w >= area.w - 2 * inset || lg.h >= area.h - 2 * inset) return std::nullopt;
     const double left = area.x + inset;
     const double right = area.x + area.w - inset - lg.w;
@@ -104,7 +145,10 @@ std::optional<rect> legend_inside(const panel& p, const legend_layout& lg, const
                                                {middle, top},  {middle, bottom}, {right, centre}, {left, centre}};
     for (const auto& [x, y] : spots) {
         const rect box{x, y, lg.w, lg.h};
-        if (overlap(box, p.data, g.dev, th.marker_radius_pt) == 0) return box;
+        // Lines keep their half width and a little more away from the text.
+        const double clear = 0.5 * th.line_width_pt + 0.5;
+        const rect grown{x - clear, y - clear, lg.w + 2 * clear, lg.h + 2 * clear};
+        if (overlap(grown, p.data, g.dev, th.marker_radius_pt) == 0) return box;
     }
     return std::nullopt;
 }

@@ -15,15 +15,20 @@ namespace plot {
 /// The ticks and limits of an axis: its fixed limits, or the data's with a margin.
 tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizontal);
 
-/// Space between the axis and the x tick labels: at least half a label's height, so the
-/// lowest y tick label, centred on the bottom edge, never meets the first x tick label.
-inline double x_tick_gap(double tick_h) { return 0.5 * tick_h + 0.5; }
-
-/// Everything needed to lay out one panel before it is drawn: ticks, margins, legend.
+/// Everything needed to lay out one panel before it is drawn: ticks, the sizes of its
+/// texts, margins, legend. Text sizes are of ink, so that gaps are the same on every side.
 struct panel_plan {
-    double tick_h = 0;
     tick_set xt;
     tick_set yt;
+    double tick_gap = 0;     // from the frame to the ink of the tick labels, on both axes
+    double label_gap = 0;   // from the tick labels' ink to the axis label's
+    double digit_h = 0;     // ink height of a digit: y tick labels are centred on it
+    double ytick_w = 0;     // widest y tick label
+    double column_ytick_w = 0;  // widest y tick label of the panels in this one's column
+    double ylabel_h = 0;    // ink height of the y label (its width on the page)
+    double xtick_up = 0;    // highest x tick label ink above its baseline
+    double xtick_down = 0;  // lowest x tick label ink below its baseline
+    double xlabel_h = 0;    // ink height of the x label
     double left = 0;
     double bottom = 0;
     double top = 0;
@@ -31,8 +36,14 @@ struct panel_plan {
     legend_layout legend;
 };
 
-/// Measures a panel's ticks, labels and legend and the margins they need.
+/// Measures a panel's ticks, labels and legend; margins come from share_margins.
 panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th);
+
+/// Gives every plan the largest text sizes among them and margins to fit, so that panels
+/// drawn beside each other, or alone in files of their own, have the same frame and their
+/// y labels line up (matplotlib's align_ylabels).
+/// Plans are of a grid with `cols` columns, row-major.
+void share_margins(std::vector<panel_plan>& plans, const std::vector<panel_plan>& peers, const theme& th, int cols);
 
 /// Where a panel's data lands: the axes rectangle, the maps, the series in device points.
 struct panel_geometry {

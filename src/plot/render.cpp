@@ -76,7 +76,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     std::optional<rect> legend_band;
     if (show_legend && !lg.entries.empty()) {
         legend_box = legend_inside(p, lg, g, th);
-        if (!legend_box) {
+        if (!legend_box && p.legend == legend_place::automatic) {
             // A band at the top of the cell, above the panel label.
             const double band = legend_band_height(lg, th, cell.w - 2 * pad);
             rect area = g.area;
@@ -91,7 +91,8 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     const axis_map& my = g.my;
     const auto& dev = g.dev;
 
-    // Data, clipped to the axes.
+    // Curves clipped to the axes; markers whole (matplotlib's clip_on=False), those whose
+    // centre is inside.
     cairo_save(cr);
     cairo_rectangle(cr, area.x, area.y, area.w, area.h);
     cairo_clip(cr);
@@ -99,14 +100,20 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
                     area.h + 2 * th.line_width_pt};
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         const auto& s = p.data[k];
+        if (s.line == line_style::none) continue;
         set_color(cr, th, s);
-        if (s.line != line_style::none) {
-            set_line_style(cr, th, s.line);
-            stroke_polyline(cr, dev[k], clip);
-        }
-        if (s.marker != marker_style::none) draw_markers(cr, th, dev[k], area);
+        set_line_style(cr, th, s.line);
+        stroke_polyline(cr, dev[k], clip);
     }
     cairo_restore(cr);
+    // draw_markers keeps markers whose centre is within a radius of the rect it is given.
+    const double inward = th.marker_radius_pt - 1e-6 * (area.w + area.h);
+    const rect centres{area.x + inward, area.y + inward, area.w - 2 * inward, area.h - 2 * inward};
+    for (std::size_t k = 0; k < p.data.size(); ++k) {
+        if (p.data[k].marker == marker_style::none) continue;
+        set_color(cr, th, p.data[k]);
+        draw_markers(cr, th, dev[k], centres);
+    }
 
     // Frame and ticks.
     set_foreground(cr, th);
@@ -119,28 +126,41 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     draw_ticks(cr, th, plan.xt, mx, area, true);
     draw_ticks(cr, th, plan.yt, my, area, false);
 
-    // Tick labels.
-    const double tick_gap = x_tick_gap(plan.tick_h);
+    // Tick labels, all at tick_gap from the frame: x labels on one baseline below their
+    // highest ink, y labels with their ink ending there, centred on a digit's height.
+    const double x_baseline = area.y + area.h + plan.tick_gap + plan.xtick_up;
     for (std::size_t i = 0; i < plan.xt.major.size(); ++i) {
         const double d = mx(plan.xt.major[i]);
         if (d < area.x - 0.01 || d > area.x + area.w + 0.01) continue;
-        text.draw(plan.xt.labels[i], th.tick_font_pt, d, area.y + area.h + tick_gap, 0.5, 0.0);
+        const text_ink ink = text.ink(plan.xt.labels[i], th.tick_font_pt);
+        text.draw_on_baseline(plan.xt.labels[i], th.tick_font_pt, d - ink.x - 0.5 * ink.w, x_baseline);
     }
     for (std::size_t i = 0; i < plan.yt.major.size(); ++i) {
         const double d = my(plan.yt.major[i]);
         if (d < area.y - 0.01 || d > area.y + area.h + 0.01) continue;
-        text.draw(plan.yt.labels[i], th.tick_font_pt, area.x - 0.6 * pad, d, 1.0, 0.5);
+        const text_ink ink = text.ink(plan.yt.labels[i], th.tick_font_pt);
+        text.draw_on_baseline(plan.yt.labels[i], th.tick_font_pt, area.x - plan.tick_gap - ink.x - ink.w,
+                              d + 0.5 * plan.digit_h);
     }
 
-    // Axis labels, panel label and legend.
+    // Axis labels at label_gap from the tick labels (y labels of a column aligned, as the
+    // widest tick labels of the figure set them), panel label above the top tick label.
     if (!p.x.label.empty()) {
-        text.draw(p.x.label, th.label_font_pt, area.x + 0.5 * area.w, cell.y + cell.h - pad, 0.5, 1.0);
+        const text_ink ink = text.ink(p.x.label, th.label_font_pt);
+        const double top = x_baseline + plan.xtick_down + plan.label_gap;
+        text.draw_on_baseline(p.x.label, th.label_font_pt, area.x + 0.5 * area.w - ink.x - 0.5 * ink.w, top - ink.y);
     }
     if (!p.y.label.empty()) {
-        text.draw(p.y.label, th.label_font_pt, cell.x + pad, area.y + 0.5 * area.h, 0.5, 0.0, true);
+        // Turned by -90 degrees: the text's down is the page's right.
+        const text_ink ink = text.ink(p.y.label, th.label_font_pt);
+        const double right = area.x - plan.tick_gap - plan.column_ytick_w - plan.label_gap;
+        text.draw_on_baseline(p.y.label, th.label_font_pt, right - (ink.y + ink.h),
+                              area.y + 0.5 * area.h + ink.x + 0.5 * ink.w, true);
     }
     if (!p.label.empty()) {
-        text.draw(p.label, th.label_font_pt, area.x, area.y - 0.4 * pad, 0.0, 1.0);
+        const text_ink ink = text.ink(p.label, th.label_font_pt);
+        const double bottom = area.y - 0.5 * plan.digit_h - plan.label_gap;
+        text.draw_on_baseline(p.label, th.label_font_pt, area.x - ink.x, bottom - (ink.y + ink.h));
     }
     if (legend_box) draw_legend(cr, text, th, p, lg, *legend_box);
     if (legend_band) draw_legend_band(cr, text, th, p, lg, *legend_band);
@@ -177,22 +197,13 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
     cairo_paint(cr);
 
-    // Shared margins keep the axes of neighbouring panels aligned.
+    // Shared margins keep the axes of neighbouring panels aligned, and those of panels drawn
+    // alone in files of their own (the peers).
     std::vector<panel_plan> plans;
-    panel_plan shared;
-    for (const auto& p : fig.panels) {
-        plans.push_back(plan_panel(text, p, th));
-        shared.left = std::max(shared.left, plans.back().left);
-        shared.bottom = std::max(shared.bottom, plans.back().bottom);
-        shared.top = std::max(shared.top, plans.back().top);
-        shared.right = std::max(shared.right, plans.back().right);
-    }
-    for (auto& plan : plans) {
-        plan.left = shared.left;
-        plan.bottom = shared.bottom;
-        plan.top = shared.top;
-        plan.right = shared.right;
-    }
+    std::vector<panel_plan> peers;
+    for (const auto& p : fig.peers) peers.push_back(plan_panel(text, p, th));
+    for (const auto& p : fig.panels) plans.push_back(plan_panel(text, p, th));
+    share_margins(plans, peers, th, fig.cols);
     auto make_cells = [&](double top) {
         const double cw = size.width_pt / fig.cols;
         const double ch = (size.height_pt - top) / fig.rows;

@@ -129,15 +129,15 @@ private:
         }
         std::string out = base;
         if (primes > 0) {
-            static const char* const marks[] = {"\u2032", "\u2033", "\u2034"};
-            const std::string mark = primes <= 3 ? marks[primes - 1] : std::string(primes, '\'');
-            if (has_sub && markup_ && primes <= 2) {
-                // The prime's glyph comes from the fallback font, whose wide advance is pulled
-                // in so that the subscript sits under the primes, as in TeX.
-                out += std::string(primes == 1 ? "\u200a" : "") + "<span letter_spacing=\"-" +
-                       (primes == 1 ? "1500" : "1600") + "\">" + mark + "</span>";
+            // Computer Modern Unicode has the modifier letter prime (U+02B9), not the prime.
+            static const char* const marks[] = {"\u02b9", "\u02b9\u02b9", "\u02b9\u02b9\u02b9"};
+            static const char* const plain[] = {"\u2032", "\u2033", "\u2034"};
+            if (markup_ && primes <= 3) {
+                // TeX's prime is a superscript: the renderer stacks the subscript under it.
+                sup = marks[primes - 1] + (has_sup ? sup : "");
+                has_sup = true;
             } else {
-                out += mark;
+                out += primes <= 3 ? plain[primes - 1] : std::string(primes, '\'');
             }
         }
         // ^\circ is the degree sign.

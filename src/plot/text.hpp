@@ -2,15 +2,18 @@
 // Part of the plot layer's renderer; not a public interface.
 
 #include "plot/handles.hpp"
+#include "plot/math_layout.hpp"
 
 #include <cairo.h>
 #include <pango/pangocairo.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace plot {
 
@@ -18,6 +21,14 @@ namespace plot {
 /// fonts in /usr/share/fonts, no machine or user settings), so pictures are the same on
 /// every machine. Font maps are not shared between threads.
 PangoFontMap* thread_font_map();
+
+/// The inked part of a text: a rectangle in points.
+struct text_ink {
+    double x = 0;  ///< left
+    double y = 0;  ///< top (y down)
+    double w = 0;  ///< width
+    double h = 0;  ///< height
+};
 
 /// Text set with Pango in one font family, measured and drawn in points.
 class text_engine {
@@ -37,39 +48,184 @@ public:
 
     /// Logical width and height of the markup at `size` points.
     std::pair<double, double> measure(const std::string& markup, double size) const {
-        PangoRectangle logical;
-        pango_layout_get_extents(layout(markup, size), nullptr, &logical);
-        return {logical.width / double(PANGO_SCALE), logical.height / double(PANGO_SCALE)};
+        const text_box& b = box(markup, size);
+        return {b.width, b.ascent + b.descent};
+    }
+
+    /// The inked part of the markup at `size` points, relative to the left end of its
+    /// baseline (y down): x, y of the top left corner, width and height.
+    text_ink ink(const std::string& markup, double size) const {
+        const text_box& b = box(markup, size);
+        return {b.ink_x0, b.ink_y0, b.ink_x1 - b.ink_x0, b.ink_y1 - b.ink_y0};
     }
 
     /// Draws markup with its box anchored at (x, y): ax, ay in {0, 0.5, 1} pick the
     /// anchor (left/centre/right, top/middle/bottom). `rotate` turns it by -90 degrees.
     void draw(const std::string& markup, double size, double x, double y, double ax, double ay,
               bool rotate = false) const {
-        PangoLayout* shaped = layout(markup, size);
-        PangoRectangle logical;
-        pango_layout_get_extents(shaped, nullptr, &logical);
-        const double w = logical.width / double(PANGO_SCALE);
-        const double h = logical.height / double(PANGO_SCALE);
+        const text_box& b = box(markup, size);
         cairo_save(cr_);
         cairo_translate(cr_, x, y);
         if (rotate) cairo_rotate(cr_, -M_PI / 2);
-        cairo_move_to(cr_, -ax * w - logical.x / double(PANGO_SCALE), -ay * h - logical.y / double(PANGO_SCALE));
-        // Metrics are unhinted, so the layout made for measuring draws unchanged here.
-        pango_cairo_show_layout(cr_, shaped);
+        show(b, -ax * b.width, -ay * (b.ascent + b.descent) + b.ascent);
+        cairo_restore(cr_);
+    }
+
+    /// Draws markup with the left end of its baseline at (x, y), turned by -90 degrees
+    /// about that point with `rotate`.
+    void draw_on_baseline(const std::string& markup, double size, double x, double y, bool rotate = false) const {
+        cairo_save(cr_);
+        cairo_translate(cr_, x, y);
+        if (rotate) cairo_rotate(cr_, -M_PI / 2);
+        show(box(markup, size), 0, 0);
         cairo_restore(cr_);
     }
 
 private:
-    /// The shaped layout of markup at size; each text is shaped once per figure.
-    PangoLayout* layout(const std::string& markup, double size) const {
-        auto key = std::make_pair(markup, size);
-        auto it = layouts_.find(key);
-        if (it == layouts_.end()) it = layouts_.emplace(std::move(key), make(markup, size)).first;
-        return it->second.get();
+    /// A label set as TeX sets math: runs of text on the baseline, and after them
+    /// superscripts and subscripts at script size, stacked, each a Pango layout.
+    struct text_box {
+        struct part {
+            gobject_ptr<PangoLayout> layout;
+            double x = 0;         // left end of the part's baseline
+            double y = 0;         // the part's baseline, below the box's (y down)
+            double baseline = 0;  // the layout's own baseline below its top
+        };
+        std::vector<part> parts;
+        double width = 0;
+        double ascent = 0;   // logical, above the baseline
+        double descent = 0;  // logical, below the baseline
+        double ink_x0 = 0, ink_y0 = 0, ink_x1 = 0, ink_y1 = 0;
+    };
+
+    void show(const text_box& b, double x, double y) const {
+        for (const auto& p : b.parts) {
+            cairo_move_to(cr_, x + p.x, y + p.y - p.baseline);
+            // Metrics are unhinted, so the layout made for measuring draws unchanged here.
+            pango_cairo_show_layout(cr_, p.layout.get());
+        }
     }
 
-    gobject_ptr<PangoLayout> make(const std::string& markup, double size) const {
+    /// The shaped box of markup at size; each text is shaped once per figure.
+    const text_box& box(const std::string& markup, double size) const {
+        auto key = std::make_pair(markup, size);
+        auto it = boxes_.find(key);
+        if (it == boxes_.end()) it = boxes_.emplace(std::move(key), make_box(markup, size)).first;
+        return it->second;
+    }
+
+    text_box make_box(const std::string& markup, double size) const {
+        const script_metrics m;
+        text_box b;
+        bool first = true;
+        auto add = [&](const std::string& text, double pt, double x, double y) {
+            text_box::part p;
+            p.layout = make(text, pt, markup);
+            p.x = x;
+            p.y = y;
+            p.baseline = pango_layout_get_baseline(p.layout.get()) / double(PANGO_SCALE);
+            PangoRectangle ink, logical;
+            pango_layout_get_extents(p.layout.get(), &ink, &logical);
+            const double top = y - p.baseline;
+            b.ascent = std::max(b.ascent, -(top + logical.y / double(PANGO_SCALE)));
+            b.descent = std::max(b.descent, top + (logical.y + logical.height) / double(PANGO_SCALE));
+            if (ink.width > 0 && ink.height > 0) {
+                const double x0 = x + ink.x / double(PANGO_SCALE);
+                const double y0 = top + ink.y / double(PANGO_SCALE);
+                const double x1 = x0 + ink.width / double(PANGO_SCALE);
+                const double y1 = y0 + ink.height / double(PANGO_SCALE);
+                b.ink_x0 = first ? x0 : std::min(b.ink_x0, x0);
+                b.ink_y0 = first ? y0 : std::min(b.ink_y0, y0);
+                b.ink_x1 = first ? x1 : std::max(b.ink_x1, x1);
+                b.ink_y1 = first ? y1 : std::max(b.ink_y1, y1);
+                first = false;
+            }
+            const double w = logical.width / double(PANGO_SCALE);
+            b.parts.push_back(std::move(p));
+            return w;
+        };
+        for (const auto& piece : split_scripts(markup)) {
+            const double start = b.width;
+            std::string base_markup;
+            if (!piece.base.empty() || (!piece.has_sup && !piece.has_sub)) {
+                b.width += add(piece.base, size, start, 0);
+                base_markup = piece.base;
+            }
+            // A script starts after the base's advance, or clear of the base's ink beside
+            // it if an italic letter leans out that far (the bowl of ϑ), as a math italic
+            // font's wider advance would; under an overhang above it (the arm of T) it tucks in.
+            auto script_x = [&](const std::string& script, double pt, double y) {
+                if (base_markup.empty()) return b.width;
+                const text_ink j = ink_of(script, pt);
+                const double right = ink_right_in_band(base_markup, size, y + j.y, y + j.y + j.h);
+                return std::max(b.width, start + right + 0.04 * size - j.x);
+            };
+            double script_w = 0;
+            if (piece.has_sup) {
+                double pt = m.size * size;
+                double y = -m.sup_shift * size;
+                if (only_primes(piece.sup)) {
+                    // Sized and raised by its ink to where TeX's prime, standing on the
+                    // superscript's baseline, would be.
+                    const text_ink i = ink_of(piece.sup, pt);
+                    if (i.h > 0) pt *= m.prime_height * size / i.h;
+                    const text_ink j = ink_of(piece.sup, pt);
+                    y -= j.y + j.h;
+                }
+                const double x = script_x(piece.sup, pt, y);
+                script_w = std::max(script_w, add(piece.sup, pt, x, y) + x - b.width);
+            }
+            if (piece.has_sub) {
+                const double y = (piece.has_sup ? m.sub_shift_with_sup : m.sub_shift) * size;
+                const double x = script_x(piece.sub, m.size * size, y);
+                script_w = std::max(script_w, add(piece.sub, m.size * size, x, y) + x - b.width);
+            }
+            b.width += script_w;
+        }
+        return b;
+    }
+
+    /// The rightmost ink of plain markup between heights y0 and y1 (relative to its
+    /// baseline, y down), found by drawing it; -infinity if there is none.
+    double ink_right_in_band(const std::string& text, double pt, double y0, double y1) const {
+        const gobject_ptr<PangoLayout> l = make(text, pt, text);
+        PangoRectangle ink;
+        pango_layout_get_extents(l.get(), &ink, nullptr);
+        const double baseline = pango_layout_get_baseline(l.get()) / double(PANGO_SCALE);
+        const double scale = 400.0 / pt;  // pixels per point: 400 across an em
+        const double x1 = (ink.x + ink.width) / double(PANGO_SCALE);
+        const int w = static_cast<int>(std::ceil(std::max(x1, 0.0) * scale)) + 2;
+        const int top = static_cast<int>(std::floor((baseline + y0) * scale));
+        const int h = static_cast<int>(std::ceil((y1 - y0) * scale)) + 1;
+        if (w <= 2 || h <= 0) return -INFINITY;
+        surface_ptr surface(cairo_image_surface_create(CAIRO_FORMAT_A8, w, h));
+        context_ptr cr(cairo_create(surface.get()));
+        cairo_scale(cr.get(), scale, scale);
+        cairo_translate(cr.get(), 0, -top / scale);
+        pango_cairo_show_layout(cr.get(), l.get());
+        cairo_surface_flush(surface.get());
+        const unsigned char* data = cairo_image_surface_get_data(surface.get());
+        const int stride = cairo_image_surface_get_stride(surface.get());
+        for (int x = w - 1; x >= 0; --x) {
+            for (int y = 0; y < h; ++y) {
+                if (data[y * stride + x] > 64) return (x + 1) / scale;
+            }
+        }
+        return -INFINITY;
+    }
+
+    /// Ink of plain markup (no scripts) relative to its baseline.
+    text_ink ink_of(const std::string& text, double pt) const {
+        const gobject_ptr<PangoLayout> l = make(text, pt, text);
+        PangoRectangle ink;
+        pango_layout_get_extents(l.get(), &ink, nullptr);
+        const double baseline = pango_layout_get_baseline(l.get()) / double(PANGO_SCALE);
+        return {ink.x / double(PANGO_SCALE), ink.y / double(PANGO_SCALE) - baseline, ink.width / double(PANGO_SCALE),
+                ink.height / double(PANGO_SCALE)};
+    }
+
+    /// A layout of markup (a piece of `whole`, named in errors) at size.
+    gobject_ptr<PangoLayout> make(const std::string& markup, double size, const std::string& whole) const {
         gobject_ptr<PangoLayout> layout(pango_layout_new(context_.get()));
         font_description_ptr font(pango_font_description_new());
         pango_font_description_set_family(font.get(), family_.c_str());
@@ -81,20 +237,22 @@ private:
         if (!pango_parse_markup(spans.c_str(), -1, 0, nullptr, nullptr, nullptr, &error)) {
             const std::string why = error ? error->message : "not valid";
             g_clear_error(&error);
-            throw std::invalid_argument("invalid text markup '" + markup + "': " + why);
+            throw std::invalid_argument("invalid text markup '" + whole + "': " + why);
         }
         pango_layout_set_markup(layout.get(), spans.c_str(), -1);
         return layout;
     }
 
-    /// Pango sizes <sub> and <sup> from the font's OS/2 script metrics, which some fonts
-    /// (Computer Modern Unicode among them) set far too large; spell them out instead.
+    /// Scripts nested in other elements, which split_scripts leaves in place: Pango sizes
+    /// <sub> and <sup> from the font's OS/2 script metrics, which some fonts (Computer
+    /// Modern Unicode among them) set far too large; spell them out instead.
     static std::string scripts_as_spans(const std::string& markup, double size) {
+        const script_metrics m;
         const auto units = [](double pt) { return std::to_string(std::lround(pt * PANGO_SCALE)); };
-        const std::string small = units(0.7 * size);
+        const std::string small = units(m.size * size);
         const std::pair<std::string, std::string> rules[] = {
-            {"<sub>", "<span size=\"" + small + "\" rise=\"-" + units(0.22 * size) + "\">"},
-            {"<sup>", "<span size=\"" + small + "\" rise=\"" + units(0.38 * size) + "\">"},
+            {"<sub>", "<span size=\"" + small + "\" rise=\"-" + units(m.sub_shift * size) + "\">"},
+            {"<sup>", "<span size=\"" + small + "\" rise=\"" + units(m.sup_shift * size) + "\">"},
             {"</sub>", "</span>"},
             {"</sup>", "</span>"}};
         std::string out = markup;
@@ -125,7 +283,7 @@ private:
     cairo_t* cr_;
     std::string family_;
     gobject_ptr<PangoContext> context_;
-    mutable std::map<std::pair<std::string, double>, gobject_ptr<PangoLayout>> layouts_;
+    mutable std::map<std::pair<std::string, double>, text_box> boxes_;
 };
 
 }  // namespace plot

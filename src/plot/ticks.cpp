@@ -40,6 +40,7 @@ std::string with_minus(const std::string& s) {
 }  // namespace
 
 double nice_step(double lo, double hi, int max_ticks, bool expand) {
+    widen_if_degenerate(lo, hi);  // an empty range gets a step around its value, never 0
     max_ticks = std::max(max_ticks, 2);
     const double raw = (hi - lo) / (max_ticks - 1);
     const double decade = std::pow(10.0, std::floor(std::log10(raw)));
@@ -111,7 +112,7 @@ tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
     const double pi = 3.14159265358979323846;
     // Steps as fractions num/den of pi.
     const int steps[][2] = {{1, 8}, {1, 4}, {1, 2}, {1, 1}, {2, 1}, {4, 1}, {8, 1}};
-    int num = 8;
+    int num = 0;
     int den = 1;
     for (const auto& s : steps) {
         const auto [a, b] = index_range(lo, hi, pi * s[0] / s[1], true);
@@ -126,6 +127,8 @@ tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
             break;
         }
     }
+    // Too long a range for multiples of pi to read well: plain numbers.
+    if (num == 0) return linear_ticks(lo, hi, max_ticks, expand);
     const double step = pi * num / den;
     const auto [a, b] = index_range(lo, hi, step, expand);
     tick_set t;
@@ -146,7 +149,7 @@ tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
             label = "0";
         } else {
             const long long ap = p < 0 ? -p : p;
-            label = (p < 0 ? minus : "") + (ap == 1 ? std::string() : std::to_string(ap)) + "\u03c0" +
+            label = (p < 0 ? minus : "") + (ap == 1 ? std::string() : std::to_string(ap)) + "<i>\u03c0</i>" +
                     (q == 1 ? std::string() : "/" + std::to_string(q));
         }
         t.labels.push_back(label);
@@ -214,19 +217,50 @@ tick_set log_ticks(double lo, double hi, int max_ticks, bool expand) {
     tick_set t;
     t.lo = expand ? std::pow(10.0, static_cast<double>(ea)) : lo;
     t.hi = expand ? std::pow(10.0, static_cast<double>(eb)) : hi;
-    for (long long e = ea; e <= eb; ++e) {
+    const double slack = 1e-9 * (t.hi - t.lo);
+    const auto inside = [&](double v) { return v >= t.lo - slack && v <= t.hi + slack; };
+    const bool within_decade = eb - ea < 1;  // fewer than two powers of ten in range
+    const long long first = static_cast<long long>(std::floor(std::log10(t.lo) + 1e-9));
+    const long long last = static_cast<long long>(std::ceil(std::log10(t.hi) - 1e-9));
+    for (long long e = first; e <= last; ++e) {
         const double v = std::pow(10.0, static_cast<double>(e));
-        if ((e - ea) % every == 0) {
+        if (e >= ea && e <= eb && (e - ea) % every == 0) {
             t.major.push_back(v);
             const std::string exponent = e < 0 ? minus + std::to_string(-e) : std::to_string(e);
             t.labels.push_back("10<sup>" + exponent + "</sup>");
-        } else {
+        } else if (e >= ea && e <= eb) {
             t.minor.push_back(v);
         }
-        if (every == 1 && eb - ea <= 8 && e < eb) {
-            for (int m = 2; m <= 9; ++m) t.minor.push_back(m * v);
+        if (every != 1 || last - first > 8) continue;
+        for (int m = 2; m <= 9; ++m) {
+            const double u = m * v;
+            if (!inside(u)) continue;
+            // Within one decade, 2 and 5 times a power of ten are labelled too.
+            if (within_decade && (m == 2 || m == 5)) {
+                t.major.push_back(u);
+                t.labels.emplace_back();
+            } else {
+                t.minor.push_back(u);
+            }
         }
     }
+    if (within_decade) {
+        // Plain numbers, sorted, sharing precision: 0.5 1 2 5.
+        std::vector<std::size_t> order(t.major.size());
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return t.major[i] < t.major[j]; });
+        std::vector<double> sorted;
+        for (std::size_t i : order) sorted.push_back(t.major[i]);
+        t.major = sorted;
+        t.labels.clear();
+        for (double v : t.major) {
+            char buf[32];
+            const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(v) + 1e-9)));
+            std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+            t.labels.emplace_back(buf);
+        }
+    }
+    std::sort(t.minor.begin(), t.minor.end());
     return t;
 }
 

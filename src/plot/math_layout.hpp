@@ -1,0 +1,37 @@
+#pragma once
+// Part of the plot layer's renderer; not a public interface.
+
+#include <string>
+#include <vector>
+
+namespace plot {
+
+/// One piece of a label: a run of markup set on the baseline, then the superscript and
+/// subscript attached to it, stacked one above the other as TeX stacks them.
+struct math_piece {
+    std::string base;      ///< markup on the baseline; may be empty
+    std::string sup;       ///< superscript markup
+    std::string sub;       ///< subscript markup
+    bool has_sup = false;  ///< a superscript follows the base
+    bool has_sub = false;  ///< a subscript follows the base
+};
+
+/// Splits markup at its top-level <sup> and <sub> elements; a <sup> and a <sub> next to
+/// each other belong to one piece. Scripts nested in other elements stay in the base.
+std::vector<math_piece> split_scripts(const std::string& markup);
+
+/// True if the markup is only prime marks (′ ″ ‴): TeX's prime is a superscript whose
+/// glyph stands on the baseline, while the Unicode glyph is drawn already raised.
+bool only_primes(const std::string& markup);
+
+/// Where scripts go, in ems of the base font: TeX's parameters of Computer Modern
+/// (cmsy10's sup1, sub1 and sub2) and its script size.
+struct script_metrics {
+    double size = 0.7;                 ///< script size
+    double sup_shift = 0.413;          ///< superscript baseline raised
+    double sub_shift = 0.15;           ///< subscript baseline lowered, alone
+    double sub_shift_with_sup = 0.247;  ///< subscript baseline lowered, under a superscript
+    double prime_height = 0.28;        ///< ink height of a prime (cmsy7's, as it looks beside the text)
+};
+
+}  // namespace plot

@@ -23,7 +23,9 @@ tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizon
         hi = 1.0;
     }
     // Data-driven limits get a margin so that no curve runs along the frame.
-    if (a.kind == scale::linear && (!a.min || !a.max)) {
+    // Limits rounded out to the enclosing ticks need none: a margin would push them a
+    // whole tick further when the data end just short of one (an amplitude of pi - 1e-6).
+    if (a.kind == scale::linear && (!a.min || !a.max) && !a.round_limits) {
         const double margin = a.margin * (hi - lo);
         if (!a.min) lo -= margin;
         if (!a.max) hi += margin;
@@ -56,7 +58,7 @@ panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th) 
     // Half a digit and a little: the lowest y tick label, centred on the bottom edge, then
     // clears the first x tick label at the same distance from the frame.
     plan.tick_gap = 0.5 * digit.h + 0.15 * th.tick_font_pt;
-    plan.label_gap = 0.6 * th.padding_pt;
+    plan.label_gap = 0.8 * th.padding_pt;
     for (const auto& l : plan.yt.labels) plan.ytick_w = std::max(plan.ytick_w, text.ink(l, th.tick_font_pt).w);
     for (const auto& l : plan.xt.labels) {
         const text_ink i = text.ink(l, th.tick_font_pt);

@@ -17,7 +17,7 @@ struct rgb {
 enum class line_style { none, solid, dashed, dotted, dash_dot };
 
 /// How a series' points are marked.
-enum class marker_style { none, open_circle };
+enum class marker_style { none, open_circle, filled_circle };
 
 /// One curve or set of points, with its legend entry.
 struct series {
@@ -31,6 +31,9 @@ struct series {
     bool autoscale = true;                  ///< false: leaves the axis limits alone (reference lines)
     bool sets_limits = true;                ///< false: data that leaves the axis limits alone and is clipped
     std::string style_key;                  ///< a theme's style for this name replaces line and marker
+    double marker_scale = 1.0;              ///< marker radius in units of the theme's
+    double width_scale = 1.0;               ///< line width in units of the theme's
+    double alpha = 1.0;                     ///< opacity, 0 (invisible) to 1
 };
 
 /// Axis scale.
@@ -62,6 +65,8 @@ struct panel {
     std::vector<series> data;             ///< series, drawn in order
     std::string label;                    ///< panel label such as "(a)"; empty for none
     legend_place legend = legend_place::automatic;  ///< legend placement
+    bool frameless = false;               ///< no frame, ticks or axis labels (a drawing, not a plot)
+    bool equal_aspect = false;            ///< one unit is as long on both axes
 };
 
 /// A grid of panels with a physical size.

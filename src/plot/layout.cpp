@@ -115,6 +115,16 @@ void share_margins(std::vector<panel_plan>& plans, const std::vector<panel_plan>
     }
 }
 
+rect equal_aspect_area(const rect& area, const panel_plan& plan) {
+    const double dx = plan.xt.hi - plan.xt.lo;
+    const double dy = plan.yt.hi - plan.yt.lo;
+    if (!(dx > 0 && dy > 0)) return area;
+    const double scale = std::min(area.w / dx, area.h / dy);
+    const double w = dx * scale;
+    const double h = dy * scale;
+    return {area.x + 0.5 * (area.w - w), area.y + 0.5 * (area.h - h), w, h};
+}
+
 panel_geometry place_panel(const panel& p, const panel_plan& plan, const rect& area) {
     panel_geometry g;
     g.area = area;

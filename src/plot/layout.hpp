@@ -56,6 +56,9 @@ struct panel_geometry {
 /// Maps the panel's data into the axes rectangle `area`.
 panel_geometry place_panel(const panel& p, const panel_plan& plan, const rect& area);
 
+/// The largest rectangle centred in `area` on which one data unit is as long on both axes.
+rect equal_aspect_area(const rect& area, const panel_plan& plan);
+
 /// The axes rectangle of a cell, inside the plan's margins.
 rect axes_area(const panel_plan& plan, const rect& cell);
 

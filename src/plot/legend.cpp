@@ -54,14 +54,14 @@ legend_layout measure_legend(const text_engine& text, const panel& p, const them
 void draw_legend_sample(cairo_t* cr, const theme& th, const series& s, double x, double y, double w) {
     set_color(cr, th, s);
     if (s.line != line_style::none) {
-        set_line_style(cr, th, s.line);
+        set_line_style(cr, th, s.line, s.width_scale);
         cairo_move_to(cr, x, y);
         cairo_line_to(cr, x + w, y);
         cairo_stroke(cr);
     }
     if (s.marker != marker_style::none) {
         device_series d{{x + 0.5 * w}, {y}};
-        draw_markers(cr, th, d, rect{x, y - w, w, 2 * w});
+        draw_markers(cr, th, s, d, rect{x, y - w, w, 2 * w});
     }
 }
 

@@ -71,6 +71,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
                 const rect& cell, bool show_legend) {
     const double pad = th.padding_pt;
     panel_geometry g = place_panel(p, plan, axes_area(plan, cell));
+    if (p.equal_aspect) g = place_panel(p, plan, equal_aspect_area(g.area, plan));
     const legend_layout& lg = plan.legend;
     std::optional<rect> legend_box;
     std::optional<rect> legend_band;
@@ -102,7 +103,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         const auto& s = p.data[k];
         if (s.line == line_style::none) continue;
         set_color(cr, th, s);
-        set_line_style(cr, th, s.line);
+        set_line_style(cr, th, s.line, s.width_scale);
         stroke_polyline(cr, dev[k], clip);
     }
     cairo_restore(cr);
@@ -112,7 +113,16 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         if (p.data[k].marker == marker_style::none) continue;
         set_color(cr, th, p.data[k]);
-        draw_markers(cr, th, dev[k], centres);
+        draw_markers(cr, th, p.data[k], dev[k], centres);
+    }
+
+    if (p.frameless) {
+        // A drawing: only its title and legend.
+        set_foreground(cr, th);
+        if (!p.label.empty()) text.draw(p.label, th.label_font_pt, area.x, area.y - 0.4 * pad, 0.0, 1.0);
+        if (legend_box) draw_legend(cr, text, th, p, lg, *legend_box);
+        if (legend_band) draw_legend_band(cr, text, th, p, lg, *legend_band);
+        return;
     }
 
     // Frame and ticks.

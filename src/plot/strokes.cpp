@@ -12,11 +12,15 @@ void set_foreground(cairo_t* cr, const theme& th) {
 
 void set_color(cairo_t* cr, const theme& th, const series& s) {
     const rgb& c = s.rgb_color ? *s.rgb_color : th.palette[static_cast<std::size_t>(s.color) % th.palette.size()];
-    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    if (s.alpha < 1.0) {
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, s.alpha);
+    } else {
+        cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    }
 }
 
-void set_line_style(cairo_t* cr, const theme& th, line_style style) {
-    const double w = th.line_width_pt;
+void set_line_style(cairo_t* cr, const theme& th, line_style style, double width_scale) {
+    const double w = th.line_width_pt * width_scale;
     cairo_set_line_width(cr, w);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_line_cap(cr, style == line_style::dashed ? CAIRO_LINE_CAP_BUTT : CAIRO_LINE_CAP_ROUND);
@@ -62,8 +66,8 @@ void stroke_polyline(cairo_t* cr, const device_series& d, const rect& clip) {
     cairo_stroke(cr);
 }
 
-void draw_markers(cairo_t* cr, const theme& th, const device_series& d, const rect& area) {
-    const double r = th.marker_radius_pt;
+void draw_markers(cairo_t* cr, const theme& th, const series& s, const device_series& d, const rect& area) {
+    const double r = th.marker_radius_pt * s.marker_scale;
     cairo_set_dash(cr, nullptr, 0, 0);
     cairo_set_line_width(cr, 0.75 * th.line_width_pt);
     for (std::size_t i = 0; i < d.x.size(); ++i) {
@@ -74,6 +78,9 @@ void draw_markers(cairo_t* cr, const theme& th, const device_series& d, const re
         }
         cairo_new_sub_path(cr);
         cairo_arc(cr, d.x[i], d.y[i], r, 0, 2 * M_PI);
+    }
+    if (s.marker == marker_style::filled_circle) {
+        cairo_fill_preserve(cr);
     }
     cairo_stroke(cr);
 }

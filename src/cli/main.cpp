@@ -2,6 +2,7 @@
 #include "cli/angle.hpp"
 #include "cli/eval_columns.hpp"
 #include "cli/table.hpp"
+#include "figures/animation.hpp"
 #include "figures/batch.hpp"
 #include "figures/catalog.hpp"
 #include "figures/spec_build.hpp"
@@ -198,7 +199,36 @@ struct render_options {
     std::optional<double> dpi;  // the theme's when not given
     std::string theta0;
     bool paper_files = false;
+    std::string frames;  // a..b, 1-based, of an animation
+    std::string at;      // t/T of one frame of an animation
 };
+
+/// Parses --frames a..b (1-based, inclusive) into 0-based indices; b may be left out.
+std::pair<int, int> parse_frames(const std::string& text, int count) {
+    const auto dots = text.find("..");
+    const auto number = [&](const std::string& part, int fallback) {
+        if (part.empty()) return fallback;
+        std::size_t used = 0;
+        long long v = -1;
+        try {
+            v = std::stoll(part, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != part.size() || v < 1 || v > count) {
+            throw usage_error("--frames '" + text + "': frames are 1.." + std::to_string(count) + ", as A..B");
+        }
+        return static_cast<int>(v);
+    };
+    if (dots == std::string::npos) {
+        const int one = number(text, 0);
+        return {one - 1, one - 1};
+    }
+    const int a = number(text.substr(0, dots), 1);
+    const int b = number(text.substr(dots + 2), count);
+    if (a > b) throw usage_error("--frames '" + text + "': the first frame comes after the last");
+    return {a - 1, b - 1};
+}
 
 /// The theme of --theme and --set; a bad style file is bad input.
 plot::theme chosen_theme(const std::string& name, const std::vector<std::string>& sets) {
@@ -284,16 +314,66 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
     }
     check_output_dir(o.dir);
 
+    std::vector<const figures::entry*> stills;
+    std::vector<const figures::entry*> animations;
+    for (const auto* e : chosen) (e->spec.animation ? animations : stills).push_back(e);
+    if ((!o.frames.empty() || !o.at.empty()) && animations.empty()) {
+        throw usage_error("--frames and --at apply to animations, and none was chosen (see 'list')");
+    }
+    if (!o.frames.empty() && !o.at.empty()) throw usage_error("give --frames or --at, not both");
+    if (o.paper_files && !animations.empty()) throw usage_error("--paper-files applies to still figures, not to animations");
+
     std::vector<figures::figure_file> jobs;
     try {
-        jobs = figures::files_for(chosen, formats, o.dir, o.paper_files, build);
+        jobs = figures::files_for(stills, formats, o.dir, o.paper_files, build);
     } catch (const std::invalid_argument& e) {
         throw usage_error(e.what());
     }
-    if (jobs.empty()) throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
+    if (jobs.empty() && animations.empty()) {
+        throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
+    }
+    // Every animation is checked before any file is written.
+    struct animation_job {
+        const figures::entry* entry;
+        figures::animation_plan plan;
+        std::pair<int, int> frames;
+    };
+    std::vector<animation_job> moving;
+    std::optional<double> at;
+    if (!o.at.empty()) {
+        try {
+            at = cli::parse_expression(o.at);
+        } catch (const std::invalid_argument& e) {
+            throw usage_error(std::string("--at: ") + e.what());
+        }
+    }
+    for (const auto* e : animations) {
+        try {
+            const auto plan = figures::plan_animation(*e, build);
+            moving.push_back({e, plan, o.frames.empty() ? std::pair{0, plan.frames - 1} : parse_frames(o.frames, plan.frames)});
+        } catch (const std::invalid_argument& err) {
+            throw usage_error(err.what());
+        }
+    }
 
     try {
-        figures::write_figures(jobs, build, theme, plot::output_options{dpi});
+        if (!jobs.empty()) figures::write_figures(jobs, build, theme, plot::output_options{dpi});
+        for (const auto& m : moving) {
+            for (const auto& f : formats) {
+                if (!at && figures::is_animation_format(f)) {
+                    figures::write_animation(*m.entry, build, theme, f, o.dir, dpi, m.frames.first, m.frames.second);
+                    continue;
+                }
+                // A still format, or --at: one frame.
+                figures::build_options still = build;
+                still.animated = true;
+                still.panel_width_cm = theme.panel_width_cm;
+                still.panel_aspect = theme.panel_aspect;
+                const double w0_t = at ? *at * m.plan.reference_period : m.plan.time(m.frames.first);
+                const auto frame = figures::animation_frame(*m.entry, still, m.plan, figures::build(*m.entry, still), w0_t);
+                plot::save(frame, theme, std::filesystem::path(o.dir) / (m.entry->id + "." + f), plot::output_options{dpi});
+            }
+        }
     } catch (const std::exception& e) {
         std::cerr << "pendulum-figures: error: " << e.what() << "\n";
         return 1;
@@ -571,6 +651,11 @@ int main(int argc, char** argv) {
         ->type_name("N");
     render->add_option("--theta0", ro.theta0, "Amplitudes of the trajectory figures, a comma-separated LIST")
         ->type_name("LIST");
+    render->add_option("--frames", ro.frames, "Animations: only frames A..B (from 1; A.. or ..B for the rest)")
+        ->type_name("A..B");
+    render->add_option("--at", ro.at, "Animations: one frame at time t/T (T the exact period of the first "
+                                      "amplitude), in every format")
+        ->type_name("T");
     render->add_flag("--paper-files", ro.paper_files,
                      "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
     render->footer(std::string("\n") + angle_help +

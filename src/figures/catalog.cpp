@@ -14,7 +14,7 @@ namespace figures {
 bool entry::takes_amplitudes() const {
     return std::any_of(spec.panels.begin(), spec.panels.end(), [](const panel_spec& p) {
         return p.plot == plot_kind::trajectory || p.plot == plot_kind::phase || p.plot == plot_kind::convergence ||
-               p.plot == plot_kind::spectrum;
+               p.plot == plot_kind::spectrum || p.plot == plot_kind::pendulum;
     });
 }
 
@@ -55,11 +55,11 @@ entry load(std::string_view id_or_file) {
 }
 
 std::vector<panel_spec> panels_of(const entry& e, const build_options& options) {
-    return panels_with(e.spec, spec_overrides{options.amplitudes, options.panel_width_cm, options.panel_aspect});
+    return panels_with(e.spec, spec_overrides{options.amplitudes, options.panel_width_cm, options.panel_aspect, options.animated});
 }
 
 plot::figure build(const entry& e, const build_options& options) {
-    return build_figure(e.spec, spec_overrides{options.amplitudes, options.panel_width_cm, options.panel_aspect});
+    return build_figure(e.spec, spec_overrides{options.amplitudes, options.panel_width_cm, options.panel_aspect, options.animated});
 }
 
 }  // namespace figures

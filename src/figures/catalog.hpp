@@ -38,6 +38,7 @@ struct build_options {
     std::vector<amplitude> amplitudes;  ///< --theta0: replaces the spec's amplitudes
     double panel_width_cm = 6.0;        ///< panel width where the spec gives none (the theme's)
     double panel_aspect = 0.75;         ///< panel aspect where the spec gives none (the theme's)
+    bool animated = false;              ///< leave out what moves (animation frames add it)
 };
 
 /// The panels the figure will have with these options, as specs (for paper file names).

@@ -31,7 +31,7 @@ std::string join_problems(const std::vector<spec_problem>& problems) {
     return out;
 }
 
-constexpr std::array<plot_row, 6> plots = {{
+constexpr std::array<plot_row, 7> plots = {{
     {"trajectory", plot_kind::trajectory, "time", "theta(t)", "theta0 methods time range angle_unit",
      "the law of motion theta(t) at one amplitude"},
     {"phase", plot_kind::phase, "theta", "theta'/w0", "theta0 methods separatrix angle_unit",
@@ -44,13 +44,16 @@ constexpr std::array<plot_row, 6> plots = {{
      "the period error of the iteration against its order N"},
     {"spectrum", plot_kind::spectrum, "2k+1", "|c_{2k+1}|", "theta0 methods harmonics",
      "the Fourier coefficients' magnitudes, on a log axis"},
+    {"pendulum", plot_kind::pendulum, "", "", "theta0 methods trail",
+     "rod and bob of each method at the frame's time, for animations"},
 }};
 
 /// Keys every panel takes.
 constexpr std::string_view common_panel_keys = "plot title x_label y_label y_range paper_file line";
 constexpr std::string_view figure_keys = "columns panel_width_cm panel_aspect legend title";
 constexpr std::string_view pendulum_keys = "length_m g";
-constexpr std::string_view top_keys = "figure pendulum panel";
+constexpr std::string_view top_keys = "figure pendulum animation panel";
+constexpr std::string_view animation_keys = "fps periods duration_s speed clock";
 constexpr std::string_view line_keys = "x y label style";
 constexpr std::string_view method_keys = "method label style color marker";
 
@@ -289,6 +292,10 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
         }
     }
     if (auto v = r.boolean(t, "separatrix")) p.separatrix = *v;
+    if (auto v = r.number(t, "trail", 0.0, 10.0)) p.trail = *v;
+    if (plot->kind == plot_kind::pendulum && p.theta0.size() > 1) {
+        r.problem(*t.get("theta0"), "a pendulum panel takes one theta0");
+    }
     if (auto v = r.choice(t, "angle_unit", angle_units)) p.degrees = *v;
     if (const toml::node* n = t.get("line")) {
         const auto* a = n->as_array();
@@ -358,7 +365,7 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
     } catch (const toml::parse_error& e) {
         throw spec_error({{r.at(e.source()), "not valid TOML: " + std::string(e.description())}});
     }
-    r.check_keys(doc, words(top_keys), "the spec (tables: [figure], [pendulum], [[panel]])");
+    r.check_keys(doc, words(top_keys), "the spec (tables: [figure], [pendulum], [animation], [[panel]])");
 
     if (const toml::node* n = doc.get("figure")) {
         if (const auto* t = n->as_table()) {
@@ -382,6 +389,26 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
             f.pendulum = p;
         } else {
             r.problem(*n, "'pendulum' must be a table: [pendulum]");
+        }
+    }
+    if (const toml::node* n = doc.get("animation")) {
+        if (const auto* t = n->as_table()) {
+            r.check_keys(*t, words(animation_keys), "[animation]");
+            animation_spec a;
+            if (auto v = r.number(*t, "fps", 1, 120)) a.fps = *v;
+            a.periods = r.number(*t, "periods", 0.0, 1e4, true);
+            a.duration_s = r.number(*t, "duration_s", 0.0, 1e5, true);
+            if (auto v = r.number(*t, "speed", 0.0, 1e4, true)) a.speed = *v;
+            if (auto v = r.boolean(*t, "clock")) a.clock = *v;
+            if (t->contains("periods") && t->contains("duration_s")) {
+                r.problem(*n, "[animation] takes periods or duration_s, not both");
+            } else if (t->contains("duration_s") && !f.pendulum) {
+                r.problem(*t->get("duration_s"), "duration_s needs a [pendulum] table with length_m");
+            }
+            if (!a.periods && !a.duration_s && !t->contains("periods") && !t->contains("duration_s")) a.periods = 1.0;
+            f.animation = a;
+        } else {
+            r.problem(*n, "'animation' must be a table: [animation]");
         }
     }
     const toml::node* panels = doc.get("panel");

@@ -44,7 +44,7 @@ private:
 };
 
 /// What a panel plots; one row of plot_table() each.
-enum class plot_kind { trajectory, phase, period, coefficient, convergence, spectrum };
+enum class plot_kind { trajectory, phase, period, coefficient, convergence, spectrum, pendulum };
 
 /// One row of the plot-kind table.
 struct plot_row {
@@ -107,6 +107,7 @@ struct panel_spec {
     period_axis y = period_axis::value;          ///< period panels: value, error in %, log |error|
     int harmonic = 1;                            ///< coefficient panels: 2k + 1
     int harmonics = 15;                          ///< spectrum panels: how many odd harmonics
+    double trail = 0;                            ///< pendulum panels: fading trace, in exact periods
     std::array<int, 2> orders{0, 40};            ///< convergence panels: first and last N
     bool separatrix = false;                     ///< phase panels: draw the separatrix
     bool degrees = false;                        ///< angle axes in degrees
@@ -119,6 +120,18 @@ struct pendulum_spec {
     double g = 9.80665;     ///< gravity in m/s^2
 };
 
+/// The largest number of frames of an animation.
+inline constexpr int max_frames = 10000;
+
+/// How an animation plays: every panel is drawn once per frame at time t.
+struct animation_spec {
+    double fps = 30;                 ///< frames per second, 1 to 120
+    std::optional<double> periods;   ///< length in exact periods of the first amplitude
+    std::optional<double> duration_s;  ///< or length in seconds (with [pendulum])
+    double speed = 1.0;              ///< playback speed relative to real time
+    bool clock = false;              ///< show "t = 1.25 T" (or seconds) in the first panel's title
+};
+
 /// A figure described as data.
 struct figure_spec {
     std::string id;                             ///< file name without .toml, or the built-in id
@@ -128,6 +141,7 @@ struct figure_spec {
     legend_mode legend = legend_mode::first;    ///< which panels carry a legend
     std::string title;                          ///< document metadata, not drawn
     std::optional<pendulum_spec> pendulum;      ///< physical units
+    std::optional<animation_spec> animation;    ///< present: the figure is an animation
     std::vector<panel_spec> panels;             ///< at least one
 };
 

@@ -111,28 +111,29 @@ std::vector<double> curve_amplitudes(double lo, double hi) {
 struct context {
     const figure_spec& spec;
     double width_cm;
+    bool animated;  // the moving parts are added frame by frame
 };
 
 /// Seconds per unit of w0 t, for a spec with a [pendulum].
 double seconds_per_radian(const figure_spec& spec) { return std::sqrt(spec.pendulum->length_m / spec.pendulum->g); }
+
+/// The x value of a trajectory panel at t = s T, its unit per exact period, and its label.
+std::pair<double, std::string> time_unit_of(const figure_spec& spec, const panel_spec& p,
+                                            const pendulum::exact_solution& exact) {
+    if (p.time == time_unit::small_period) return {exact.period_ratio(), "<i>t</i>/<i>T</i><sub>0</sub>"};
+    if (p.time == time_unit::seconds) return {4 * exact.quarter_period() * seconds_per_radian(spec), "<i>t</i> (s)"};
+    return {1.0, "<i>t</i>/<i>T</i>"};
+}
 
 plot::panel trajectory_panel(const context& c, const panel_spec& p) {
     const amplitude& a = p.theta0.front();
     const pendulum::exact_solution exact(a.value);
     const double period = 4 * exact.quarter_period();  // T in units of 1/w0
     // x = s * unit with s = t/T.
-    double unit = 1.0;
-    std::string x_label = "<i>t</i>/<i>T</i>";
-    if (p.time == time_unit::small_period) {
-        unit = exact.period_ratio();
-        x_label = "<i>t</i>/<i>T</i><sub>0</sub>";
-    } else if (p.time == time_unit::seconds) {
-        unit = period * seconds_per_radian(c.spec);
-        x_label = "<i>t</i> (s)";
-    }
+    const auto [unit, x_label] = time_unit_of(c.spec, p, exact);
     const double lo = p.range ? (*p.range)[0] / unit : 0.0;
     const double hi = p.range ? (*p.range)[1] / unit : 1.0;
-    const auto scaled = [unit](std::vector<double> s) {
+    const auto scaled = [unit = unit](std::vector<double> s) {
         if (unit != 1.0) {
             for (double& v : s) v *= unit;
         }
@@ -377,8 +378,41 @@ plot::panel spectrum_panel(const context&, const panel_spec& p) {
     return panel;
 }
 
+plot::panel pendulum_panel(const context& c, const panel_spec& p) {
+    // The drawing: x to the right, y up, the pivot at the origin and a rod of length 1.
+    plot::panel panel;
+    panel.frameless = true;
+    panel.equal_aspect = true;
+    panel.x.min = -1.2;
+    panel.x.max = 1.2;
+    panel.y.min = -1.2;
+    panel.y.max = 1.2;
+    const double theta0 = p.theta0.front().value;
+    // The bob's path, faint, and the amplitude it is released from.
+    plot::series path;
+    for (double a : grid(0, 2 * pi, 200)) {
+        path.x.push_back(std::sin(a));
+        path.y.push_back(-std::cos(a));
+    }
+    path.alpha = 0.2;
+    path.width_scale = 0.6;
+    panel.data.push_back(std::move(path));
+    for (double side : {1.0, -1.0}) {
+        plot::series mark;
+        mark.x = {0, side * std::sin(theta0)};
+        mark.y = {0, -std::cos(theta0)};
+        mark.line = line_style::dotted;
+        mark.alpha = 0.5;
+        mark.width_scale = 0.6;
+        panel.data.push_back(std::move(mark));
+    }
+    if (!c.animated) add_pendulum_state(panel, p, 0.0);
+    return panel;
+}
+
 plot::panel build_panel(const context& c, const panel_spec& p) {
     switch (p.plot) {
+        case plot_kind::pendulum: return pendulum_panel(c, p);
         case plot_kind::trajectory: return trajectory_panel(c, p);
         case plot_kind::coefficient: return coefficient_panel(c, p);
         case plot_kind::period: return period_panel(c, p);
@@ -415,10 +449,123 @@ std::vector<panel_spec> panels_with(const figure_spec& spec, const spec_override
         panel_spec q = p;
         if (p.plot == plot_kind::phase || p.plot == plot_kind::convergence || p.plot == plot_kind::spectrum) {
             q.theta0 = o.theta0;
+        } else if (p.plot == plot_kind::pendulum) {
+            q.theta0 = {o.theta0.front()};
         }
         out.push_back(std::move(q));
     }
     return out;
+}
+
+void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t) {
+    const double theta0 = p.theta0.front().value;
+    const pendulum::exact_solution exact(theta0);
+    const double period = 4 * exact.quarter_period();
+    for (std::size_t i = 0; i < p.methods.size(); ++i) {
+        const auto& m = p.methods[i];
+        const auto solution = is_exact(m) ? pendulum::fourier_solution{} : pendulum::method_solution(m.method, theta0);
+        const auto theta = [&](double t) {
+            return is_exact(m) ? exact.theta_at_fraction(t / period) : solution.theta(t);
+        };
+        series_style st = style_of(m, static_cast<int>(i));
+        st.style_key.clear();
+        if (p.trail > 0) {
+            // The bob's recent path, fading into the past in eight steps.
+            const double span = std::min(p.trail * period, w0_t);
+            for (int k = 0; k < 8 && span > 0; ++k) {
+                plot::series trail = series_of(st);
+                trail.label.clear();
+                trail.line = line_style::solid;
+                trail.marker = marker_style::none;
+                trail.alpha = 0.08 + 0.06 * k;
+                for (double t : grid(w0_t - span * (8 - k) / 8, w0_t - span * (7 - k) / 8, 12)) {
+                    const double a = theta(t);
+                    trail.x.push_back(std::sin(a));
+                    trail.y.push_back(-std::cos(a));
+                }
+                panel.data.push_back(std::move(trail));
+            }
+        }
+        const double a = theta(w0_t);
+        plot::series rod = series_of(st);
+        rod.line = m.style.value_or(line_style::solid);
+        if (rod.line == line_style::none) rod.line = line_style::solid;
+        rod.marker = marker_style::none;
+        rod.width_scale = 1.2;
+        rod.x = {0, std::sin(a)};
+        rod.y = {0, -std::cos(a)};
+        plot::series bob = series_of(st);
+        bob.label.clear();
+        bob.line = line_style::none;
+        // The exact pendulum's bob is solid; the approximations' are outlines.
+        bob.marker = m.marker.value_or(is_exact(m) ? marker_style::filled_circle : marker_style::open_circle);
+        bob.marker_scale = 3.0;
+        bob.width_scale = 1.5;
+        bob.x = {std::sin(a)};
+        bob.y = {-std::cos(a)};
+        panel.data.push_back(std::move(rod));
+        panel.data.push_back(std::move(bob));
+    }
+    plot::series pivot;
+    pivot.line = line_style::none;
+    pivot.marker = marker_style::filled_circle;
+    pivot.marker_scale = 1.2;
+    pivot.x = {0};
+    pivot.y = {0};
+    panel.data.push_back(std::move(pivot));
+}
+
+void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector<panel_spec>& panels, double w0_t) {
+    for (std::size_t i = 0; i < panels.size() && i < f.panels.size(); ++i) {
+        const panel_spec& p = panels[i];
+        plot::panel& panel = f.panels[i];
+        if (p.plot == plot_kind::pendulum) {
+            add_pendulum_state(panel, p, w0_t);
+            continue;
+        }
+        if (p.plot != plot_kind::trajectory && p.plot != plot_kind::phase) continue;
+        const double angle = p.degrees ? 180 / pi : 1.0;
+        for (const auto& a : p.theta0) {
+            const pendulum::exact_solution exact(a.value);
+            const double period = 4 * exact.quarter_period();
+            double x_now = 0;
+            if (p.plot == plot_kind::trajectory) {
+                // The time cursor.
+                x_now = w0_t / period * time_unit_of(spec, p, exact).first;
+                plot::series cursor;
+                cursor.x = {x_now, x_now};
+                cursor.y = {-1e3, 1e3};
+                cursor.autoscale = false;
+                cursor.alpha = 0.5;
+                cursor.width_scale = 0.6;
+                panel.data.push_back(std::move(cursor));
+            }
+            for (std::size_t j = 0; j < p.methods.size(); ++j) {
+                const auto& m = p.methods[j];
+                series_style st = style_of(m, static_cast<int>(j));
+                plot::series dot = series_of(st);
+                dot.label.clear();
+                dot.style_key.clear();
+                dot.line = line_style::none;
+                dot.marker = marker_style::filled_circle;
+                dot.marker_scale = 1.8;
+                dot.autoscale = false;
+                double theta = 0;
+                double velocity = 0;
+                if (is_exact(m)) {
+                    theta = exact.theta_at_fraction(w0_t / period);
+                    velocity = pendulum::velocity_at_fraction(exact, w0_t / period);
+                } else {
+                    const auto sol = pendulum::method_solution(m.method, a.value);
+                    theta = sol.theta(w0_t);
+                    velocity = pendulum::velocity(sol, w0_t);
+                }
+                dot.x = {p.plot == plot_kind::trajectory ? x_now : angle * theta};
+                dot.y = {p.plot == plot_kind::trajectory ? angle * theta : velocity};
+                panel.data.push_back(std::move(dot));
+            }
+        }
+    }
 }
 
 std::string panel_name(std::size_t i) {
@@ -517,7 +664,7 @@ plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrid
     f.panel_width_cm = spec.panel_width_cm.value_or(overrides.panel_width_cm);
     f.panel_aspect = spec.panel_aspect.value_or(overrides.panel_aspect);
     f.shared_legend = spec.legend == legend_mode::first;
-    const context c{spec, f.panel_width_cm};
+    const context c{spec, f.panel_width_cm, overrides.animated};
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const auto& p = panels[i];
         plot::panel panel = build_panel(c, p);

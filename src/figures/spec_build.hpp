@@ -14,6 +14,7 @@ struct spec_overrides {
     std::vector<amplitude> theta0;  ///< replaces the amplitudes: one trajectory panel each, or the lists
     double panel_width_cm = 6.0;    ///< panel width where the spec gives none (the theme's)
     double panel_aspect = 0.75;     ///< panel aspect where the spec gives none (the theme's)
+    bool animated = false;          ///< leave out the moving parts: add_frame_state adds them per frame
 };
 
 /// The spec's panels with the command line's amplitudes put in: one trajectory panel per
@@ -27,6 +28,13 @@ plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrid
 /// An angle expression as written, typeset as Pango markup: "95pi/100" -> 95π/100 (italic
 /// π), "170deg" -> 170°, "pi-1e-6" -> π − 10⁻⁶.
 std::string typeset_angle(std::string_view text);
+
+/// Adds what moves at time w0 t: the pendulums, a time cursor and a dot per method on
+/// trajectories, a dot per orbit on phase panels. `panels` are the specs f was built from.
+void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector<panel_spec>& panels, double w0_t);
+
+/// Adds the rods, bobs, trails and pivot of a pendulum panel at time w0 t.
+void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t);
 
 /// The name of the i-th panel (from 0): a, b, ..., z, aa, ab, ...
 std::string panel_name(std::size_t i);

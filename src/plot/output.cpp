@@ -1,5 +1,7 @@
 #include "plot/output.hpp"
 
+#include "plot/frames.hpp"
+#include "plot/gif.hpp"
 #include "plot/handles.hpp"
 #include "plot/render.hpp"
 
@@ -90,13 +92,7 @@ std::string render_vector(const figure& fig, const theme& th, std::string_view f
 std::string render_pdf(const figure& fig, const theme& th, const output_options&) {
     return render_vector(fig, th, "pdf", [](std::string* bytes, page_size size) {
         cairo_surface_t* s = cairo_pdf_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
-        if (const auto tm = source_date()) {
-            char date[32];
-            std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &*tm);
-            cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, date);
-        } else {
-            cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, "");
-        }
+        cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
         return s;
     });
 }
@@ -274,6 +270,18 @@ std::string render_eps(const figure& fig, const theme& th, const output_options&
     }));
 }
 
+std::string render_gif(const figure& fig, const theme& th, const output_options& options) {
+    if (!(options.dpi >= min_dpi && options.dpi <= max_dpi)) {
+        throw std::invalid_argument("dpi must be between 10 and 2400");
+    }
+    const argb_image image = render_argb(fig, th, options.dpi);
+    std::vector<rgb> inks = th.palette;
+    inks.push_back(th.foreground);
+    gif_encoder gif(image.width, image.height, gif_palette(inks, th.background, 16), 1);
+    gif.add_frame(image.data.data(), image.stride);
+    return gif.finish();
+}
+
 std::string render_raster(const figure& fig, const theme& th, const output_options& options) {
     if (!(options.dpi >= min_dpi && options.dpi <= max_dpi)) {
         throw std::invalid_argument("dpi must be between 10 and 2400");
@@ -288,11 +296,20 @@ constexpr format_row formats[] = {
     {"pdf", "vector, fonts embedded", render_pdf},
     {"svg", "vector, for the web", render_svg},
     {"eps", "vector, for latex and dvips", render_eps},
+    {"gif", "animation that loops; one frame for a still figure", render_gif},
 };
 
 }  // namespace
 
 std::span<const format_row> format_table() { return formats; }
+
+std::string pdf_creation_date() {
+    const auto tm = source_date();
+    if (!tm) return "";
+    char date[32];
+    std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &*tm);
+    return date;
+}
 
 std::vector<std::string> format_names() {
     std::vector<std::string> names;

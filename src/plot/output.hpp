@@ -40,6 +40,9 @@ std::vector<std::string> format_names();
 /// Throws std::invalid_argument listing the supported formats unless `format` is one.
 void check_format(std::string_view format);
 
+/// The creation date of PDF files, "YYYY-MM-DDTHH:MM:SSZ" from SOURCE_DATE_EPOCH, or empty.
+std::string pdf_creation_date();
+
 /// Renders the figure in the format and returns the file's bytes. The same input always
 /// gives the same bytes: dates come from SOURCE_DATE_EPOCH or are left out.
 std::string render(const figure& fig, const theme& th, std::string_view format, const output_options& options);

@@ -1,0 +1,81 @@
+#include "plot/frames.hpp"
+
+#include "plot/handles.hpp"
+#include "plot/output.hpp"
+#include "plot/render.hpp"
+
+#include <cairo-pdf.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace plot {
+
+namespace {
+
+void check(cairo_surface_t* s) {
+    if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
+        throw std::runtime_error(std::string("cannot draw a frame: ") + cairo_status_to_string(cairo_surface_status(s)));
+    }
+}
+
+cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
+    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+}
+
+}  // namespace
+
+std::pair<int, int> pixel_size(const figure& fig, const theme& th, double dpi) {
+    const page_size size = figure_size(fig, th);
+    const int width = static_cast<int>(std::lround(size.width_pt * dpi / 72.0));
+    const int height = static_cast<int>(std::lround(size.height_pt * dpi / 72.0));
+    if (width < 1 || height < 1 || width > 32767 || height > 32767) {
+        throw std::invalid_argument("a frame of " + std::to_string(width) + " x " + std::to_string(height) +
+                                    " pixels is out of range; choose another --dpi");
+    }
+    return {width, height};
+}
+
+argb_image render_argb(const figure& fig, const theme& th, double dpi) {
+    const auto [width, height] = pixel_size(fig, th, dpi);
+    argb_image image;
+    image.width = width;
+    image.height = height;
+    image.stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32, width);
+    image.data.assign(static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(height), 0);
+    surface_ptr surface(
+        cairo_image_surface_create_for_data(image.data.data(), CAIRO_FORMAT_ARGB32, width, height, image.stride));
+    check(surface.get());
+    {
+        context_ptr cr(cairo_create(surface.get()));
+        cairo_scale(cr.get(), dpi / 72.0, dpi / 72.0);
+        draw_figure(cr.get(), fig, th, figure_size(fig, th));
+        if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
+            throw std::runtime_error(std::string("cannot draw a frame: ") + cairo_status_to_string(cairo_status(cr.get())));
+        }
+    }
+    cairo_surface_flush(surface.get());
+    return image;
+}
+
+std::string render_pdf_pages(int count, const std::function<figure(int)>& frame, const theme& th) {
+    std::string bytes;
+    if (count < 1) throw std::invalid_argument("a PDF of frames needs at least one frame");
+    const figure first = frame(0);
+    const page_size size = figure_size(first, th);
+    surface_ptr surface(cairo_pdf_surface_create_for_stream(append, &bytes, size.width_pt, size.height_pt));
+    check(surface.get());
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
+    context_ptr cr(cairo_create(surface.get()));
+    for (int i = 0; i < count; ++i) {
+        draw_figure(cr.get(), i == 0 ? first : frame(i), th, size);
+        cairo_show_page(cr.get());
+    }
+    cr.reset();
+    cairo_surface_finish(surface.get());
+    check(surface.get());
+    return bytes;
+}
+
+}  // namespace plot

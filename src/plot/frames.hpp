@@ -1,0 +1,30 @@
+#pragma once
+
+#include "plot/figure.hpp"
+#include "plot/theme.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace plot {
+
+/// A figure drawn into pixels: Cairo's ARGB32 (opaque here), `stride` bytes per row.
+struct argb_image {
+    int width = 0;                    ///< pixels
+    int height = 0;                   ///< pixels
+    int stride = 0;                   ///< bytes per row
+    std::vector<unsigned char> data;  ///< height * stride bytes
+};
+
+/// The pixel size of a figure at dpi; throws std::invalid_argument naming it if it is out of range.
+std::pair<int, int> pixel_size(const figure& fig, const theme& th, double dpi);
+
+/// Draws the figure into pixels at dpi.
+argb_image render_argb(const figure& fig, const theme& th, double dpi);
+
+/// A PDF of `count` pages, page i showing frame(i), for Beamer's animate package. Frames
+/// must share one size. Dated by SOURCE_DATE_EPOCH like a still PDF, otherwise undated.
+std::string render_pdf_pages(int count, const std::function<figure(int)>& frame, const theme& th);
+
+}  // namespace plot

@@ -245,13 +245,13 @@ TEST(Markup, InvalidMarkupIsAnErrorNotAWarning) {
 }
 
 TEST(Output, FormatTable) {
-    EXPECT_EQ(format_names(), (std::vector<std::string>{"png", "pdf", "svg", "eps"}));
-    EXPECT_THROW(check_format("gif"), std::invalid_argument);
+    EXPECT_EQ(format_names(), (std::vector<std::string>{"png", "pdf", "svg", "eps", "gif"}));
+    EXPECT_THROW(check_format("bmp"), std::invalid_argument);
     try {
         check_format("jpg");
         FAIL();
     } catch (const std::invalid_argument& e) {
-        EXPECT_STREQ(e.what(), "unknown format 'jpg'; formats: png, pdf, svg, eps");
+        EXPECT_STREQ(e.what(), "unknown format 'jpg'; formats: png, pdf, svg, eps, gif");
     }
     EXPECT_THROW(figures::load_theme("dark"), std::invalid_argument);
     EXPECT_THROW(render(sample_figure(), paper_theme(), "png", {5}), std::invalid_argument);
@@ -351,7 +351,7 @@ TEST(Output, WritesAtomicallyAndKeepsTheOldFileOnFailure) {
     const std::string good = test_support::slurp(path);
     EXPECT_FALSE(good.empty());
     // A render that fails before writing leaves the previous file alone.
-    EXPECT_THROW(save(sample_figure(), paper_theme(), dir / "f.gif", {72}), std::invalid_argument);
+    EXPECT_THROW(save(sample_figure(), paper_theme(), dir / "f.bmp", {72}), std::invalid_argument);
     EXPECT_THROW(save(sample_figure(), paper_theme(), path, {1e6}), std::invalid_argument);
     EXPECT_EQ(test_support::slurp(path), good);
     std::size_t files = 0;

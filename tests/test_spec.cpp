@@ -109,7 +109,7 @@ TEST(Spec, MisspeltKeysGetASuggestionWithFileLineAndColumn) {
               "my-figure.toml:2:1: unknown key 'colums' in [figure]; did you mean columns?");
     EXPECT_EQ(problems_of("[[panel]]\nplot = \"trajectry\"\n"),
               "my-figure.toml:2:8: unknown plot 'trajectry'; plots: trajectory, phase, period, coefficient, "
-              "convergence, spectrum; did you mean trajectory?");
+              "convergence, spectrum, pendulum; did you mean trajectory?");
 }
 
 TEST(Spec, EveryProblemIsReportedOnce) {
@@ -189,7 +189,7 @@ TEST(Spec, Suggestions) {
 }
 
 TEST(Spec, PlotTableHasOneRowPerKind) {
-    EXPECT_EQ(plot_table().size(), 6u);
+    EXPECT_EQ(plot_table().size(), 7u);
     for (const auto& row : plot_table()) {
         EXPECT_FALSE(row.description.empty());
         EXPECT_FALSE(row.keys.empty());

@@ -269,7 +269,10 @@ std::vector<const figures::entry*> selected_figures(const std::vector<std::strin
     if (!all && ids.empty()) throw usage_error("name the figures to render, or use --all (see 'list')");
     std::vector<const figures::entry*> chosen;
     if (all) {
-        for (const auto& e : figures::catalog()) chosen.push_back(&e);
+        // Every still figure; animations are rendered by name.
+        for (const auto& e : figures::catalog()) {
+            if (!e.spec.animation) chosen.push_back(&e);
+        }
     }
     for (const auto& id : ids) {
         const figures::entry* e = nullptr;
@@ -638,7 +641,7 @@ int main(int argc, char** argv) {
     render_options ro;
     auto* render = app.add_subcommand("render", "Draw figures (built-in or spec files) into files: " + format_list() + ".");
     render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), or spec files NAME.toml")->type_name("ID");
-    render->add_flag("--all", ro.all, "Render every built-in figure (and the spec files given with it)");
+    render->add_flag("--all", ro.all, "Render every built-in still figure (and the figures given with it); animations are rendered by name");
     render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR");
     render->add_option("-f,--formats", ro.formats, "Comma-separated formats (default: pdf,png): " + format_help())
         ->type_name("LIST");

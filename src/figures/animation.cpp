@@ -148,8 +148,7 @@ plot::figure animation_frame(const entry& e, const build_options& options, const
                 break;
             }
         }
-        auto& label = f.panels[at].label;
-        label = label.empty() ? clock_text(plan, w0_t) : label + "\u2003" + clock_text(plan, w0_t);
+        f.panels[at].overlay_label = clock_text(plan, w0_t);
     }
     return f;
 }
@@ -194,11 +193,57 @@ void write_animation(const entry& e, const build_options& options, const plot::t
     std::vector<plot::rgb> inks = theme.palette;
     inks.push_back(theme.foreground);
     const auto [width, height] = plot::pixel_size(base, theme, dpi);
-    plot::gif_encoder gif(width, height, plot::gif_palette(inks, theme.background, 16), plan.fps);
-    in_order<plot::argb_image>(
-        first, last, [&](int i) { return plot::render_argb(frame(i), theme, dpi); },
-        [&](int, plot::argb_image image) { gif.add_frame(image.data.data(), image.stride); });
-    plot::write_atomically(dir / (e.id + ".gif"), gif.finish());
+    const auto palette = plot::gif_palette(inks, theme.background, 16);
+    // What stays is drawn once; each frame draws what moves over a copy of it.
+    const plot::argb_image still_image = plot::render_argb(frame(first), theme, dpi, plot::draw_pass::still);
+    const auto draw = [&](int i) {
+        return plot::render_argb(frame(i), theme, dpi, plot::draw_pass::overlay, &still_image);
+    };
+    // Each core encodes a run of consecutive frames on its own (starting from the frame
+    // before its run); the runs join in order into one file.
+    const int count = last - first + 1;
+    const int runs = std::max(1, std::min(count, static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))));
+    std::vector<std::string> parts(static_cast<std::size_t>(runs));
+    std::string head;
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(runs));
+    std::vector<std::thread> threads;
+    for (int r = 0; r < runs; ++r) {
+        threads.emplace_back([&, r] {
+            try {
+                const int from = first + static_cast<int>(static_cast<long long>(count) * r / runs);
+                const int to = first + static_cast<int>(static_cast<long long>(count) * (r + 1) / runs) - 1;
+                plot::gif_encoder gif(width, height, palette, plan.fps, from - first);
+                if (from > first) {
+                    const auto before = draw(from - 1);
+                    gif.prime(before.data.data(), before.stride);
+                }
+                for (int i = from; i <= to; ++i) {
+                    const auto image = draw(i);
+                    gif.add_frame(image.data.data(), image.stride);
+                }
+                const std::size_t head_size = gif.head_size();
+                auto [h, frames] = plot::gif_encoder::split(gif.finish(), head_size);
+                parts[static_cast<std::size_t>(r)] = std::move(frames);
+                if (r == 0) head = std::move(h);
+            } catch (...) {
+                errors[static_cast<std::size_t>(r)] = std::current_exception();
+            }
+        });
+    }
+    for (auto& t : threads) t.join();
+    for (const auto& e : errors) {
+        if (e) std::rethrow_exception(e);
+    }
+    std::size_t size = head.size() + 1;
+    for (const auto& p : parts) size += p.size();
+    std::string bytes = std::move(head);
+    bytes.reserve(size);
+    for (auto& p : parts) {
+        bytes += p;
+        std::string().swap(p);  // each part's memory goes as soon as it is copied
+    }
+    bytes += ';';
+    plot::write_atomically(dir / (e.id + ".gif"), bytes);
 }
 
 }  // namespace figures

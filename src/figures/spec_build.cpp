@@ -519,6 +519,15 @@ void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector
     for (std::size_t i = 0; i < panels.size() && i < f.panels.size(); ++i) {
         const panel_spec& p = panels[i];
         plot::panel& panel = f.panels[i];
+        const std::size_t still = panel.data.size();
+        // Everything added here moves: the overlay pass of a frame draws it.
+        struct mark_overlay {
+            plot::panel& panel;
+            std::size_t from;
+            ~mark_overlay() {
+                for (std::size_t k = from; k < panel.data.size(); ++k) panel.data[k].overlay = true;
+            }
+        } mark{panel, still};
         if (p.plot == plot_kind::pendulum) {
             add_pendulum_state(panel, p, w0_t);
             continue;

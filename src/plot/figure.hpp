@@ -34,6 +34,7 @@ struct series {
     double marker_scale = 1.0;              ///< marker radius in units of the theme's
     double width_scale = 1.0;               ///< line width in units of the theme's
     double alpha = 1.0;                     ///< opacity, 0 (invisible) to 1
+    bool overlay = false;                   ///< moves from frame to frame: drawn in the overlay pass
 };
 
 /// Axis scale.
@@ -67,6 +68,7 @@ struct panel {
     legend_place legend = legend_place::automatic;  ///< legend placement
     bool frameless = false;               ///< no frame, ticks or axis labels (a drawing, not a plot)
     bool equal_aspect = false;            ///< one unit is as long on both axes
+    std::string overlay_label;            ///< text that changes per frame (a clock), top right, overlay pass
 };
 
 /// A grid of panels with a physical size.

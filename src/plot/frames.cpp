@@ -37,20 +37,25 @@ std::pair<int, int> pixel_size(const figure& fig, const theme& th, double dpi) {
     return {width, height};
 }
 
-argb_image render_argb(const figure& fig, const theme& th, double dpi) {
+argb_image render_argb(const figure& fig, const theme& th, double dpi, draw_pass pass, const argb_image* under) {
     const auto [width, height] = pixel_size(fig, th, dpi);
     argb_image image;
-    image.width = width;
-    image.height = height;
-    image.stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32, width);
-    image.data.assign(static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(height), 0);
+    if (under) {
+        if (under->width != width || under->height != height) throw std::invalid_argument("frames differ in size");
+        image = *under;
+    } else {
+        image.width = width;
+        image.height = height;
+        image.stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32, width);
+        image.data.assign(static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(height), 0);
+    }
     surface_ptr surface(
         cairo_image_surface_create_for_data(image.data.data(), CAIRO_FORMAT_ARGB32, width, height, image.stride));
     check(surface.get());
     {
         context_ptr cr(cairo_create(surface.get()));
         cairo_scale(cr.get(), dpi / 72.0, dpi / 72.0);
-        draw_figure(cr.get(), fig, th, figure_size(fig, th));
+        draw_figure(cr.get(), fig, th, figure_size(fig, th), pass);
         if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
             throw std::runtime_error(std::string("cannot draw a frame: ") + cairo_status_to_string(cairo_status(cr.get())));
         }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "plot/figure.hpp"
+#include "plot/render.hpp"
 #include "plot/theme.hpp"
 
 #include <functional>
@@ -20,8 +21,10 @@ struct argb_image {
 /// The pixel size of a figure at dpi; throws std::invalid_argument naming it if it is out of range.
 std::pair<int, int> pixel_size(const figure& fig, const theme& th, double dpi);
 
-/// Draws the figure into pixels at dpi.
-argb_image render_argb(const figure& fig, const theme& th, double dpi);
+/// Draws the figure into pixels at dpi: one pass of it, over a copy of `under` if given
+/// (the still pass of the same figure, so that a frame draws only what moves).
+argb_image render_argb(const figure& fig, const theme& th, double dpi, draw_pass pass = draw_pass::all,
+                       const argb_image* under = nullptr);
 
 /// A PDF of `count` pages, page i showing frame(i), for Beamer's animate package. Frames
 /// must share one size. Dated by SOURCE_DATE_EPOCH like a still PDF, otherwise undated.

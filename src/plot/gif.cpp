@@ -36,7 +36,7 @@ struct color_map_deleter {
 std::vector<rgb8> gif_palette(const std::vector<rgb>& inks, const rgb& background, int shades) {
     std::vector<rgb8> palette{blend(background, background, 1.0)};
     auto add = [&](const rgb8& c) {
-        if (palette.size() < 256 && std::none_of(palette.begin(), palette.end(), [&](const rgb8& p) { return same(p, c); })) {
+        if (palette.size() < 255 && std::none_of(palette.begin(), palette.end(), [&](const rgb8& p) { return same(p, c); })) {
             palette.push_back(c);
         }
     };
@@ -57,8 +57,10 @@ struct gif_encoder::state {
     double fps = 30;
     std::vector<rgb8> palette;
     std::array<std::uint8_t, 32768> nearest{};  // 5 bits per channel -> palette index
-    std::vector<GifPixelType> previous;
-    std::vector<GifPixelType> current;
+    std::vector<std::uint32_t> previous;   // the last frame's pixels, to find what changed
+    std::vector<GifPixelType> rect;        // the changed rectangle, as palette indices
+    int transparent = -1;                  // the index that keeps the previous frame's pixel
+    std::size_t head = 0;                  // bytes before the first frame
     std::string bytes;
     GifFileType* gif = nullptr;
 
@@ -77,11 +79,12 @@ struct gif_encoder::state {
     }
 };
 
-gif_encoder::gif_encoder(int width, int height, std::vector<rgb8> palette, double fps) : state_(std::make_unique<state>()) {
+gif_encoder::gif_encoder(int width, int height, std::vector<rgb8> palette, double fps, int first_frame)
+    : state_(std::make_unique<state>()), first_frame_(first_frame) {
     if (width < 1 || height < 1 || width > 65535 || height > 65535) {
         throw std::invalid_argument("GIF size must be 1 to 65535 pixels each way");
     }
-    if (palette.empty() || palette.size() > 256) throw std::invalid_argument("a GIF palette has 1 to 256 colours");
+    if (palette.empty() || palette.size() > 255) throw std::invalid_argument("a GIF palette has 1 to 255 colours");
     if (!(fps > 0 && fps <= 100)) throw std::invalid_argument("GIF frame rate must be above 0 and at most 100");
     auto& s = *state_;
     s.width = width;
@@ -112,8 +115,10 @@ gif_encoder::gif_encoder(int width, int height, std::vector<rgb8> palette, doubl
     s.gif = EGifOpen(&s, &state::write, &error);
     if (!s.gif) fail("open", error);
     EGifSetGifVersion(s.gif, true);
+    // One index more than the palette: the transparent one, for pixels that did not change.
+    s.transparent = static_cast<int>(s.palette.size());
     int bits = 1;
-    while ((1 << bits) < static_cast<int>(s.palette.size())) ++bits;
+    while ((1 << bits) < s.transparent + 1) ++bits;
     std::unique_ptr<ColorMapObject, color_map_deleter> map(GifMakeMapObject(1 << bits, nullptr));
     if (!map) throw std::bad_alloc();
     for (std::size_t i = 0; i < s.palette.size(); ++i) {
@@ -128,7 +133,7 @@ gif_encoder::gif_encoder(int width, int height, std::vector<rgb8> palette, doubl
         EGifPutExtensionBlock(s.gif, sizeof loop, loop) == GIF_ERROR || EGifPutExtensionTrailer(s.gif) == GIF_ERROR) {
         fail("loop", s.gif->Error);
     }
-    s.current.resize(static_cast<std::size_t>(width) * height);
+    s.head = s.bytes.size();
 }
 
 gif_encoder::~gif_encoder() {
@@ -143,30 +148,22 @@ void gif_encoder::add_frame(const unsigned char* argb, int stride) {
     if (!s.gif) throw std::logic_error("GIF already finished");
     const int w = s.width;
     const int h = s.height;
-    for (int y = 0; y < h; ++y) {
-        const auto* row = reinterpret_cast<const std::uint32_t*>(argb + static_cast<std::ptrdiff_t>(y) * stride);
-        GifPixelType* out = s.current.data() + static_cast<std::ptrdiff_t>(y) * w;
-        std::uint32_t last_pixel = row[0] + 1;
-        GifPixelType last_index = 0;
-        for (int x = 0; x < w; ++x) {
-            if (row[x] != last_pixel) {
-                last_pixel = row[x];
-                last_index = s.index_of(last_pixel);
-            }
-            out[x] = last_index;
-        }
-    }
+    const auto row = [&](int y) {
+        return reinterpret_cast<const std::uint32_t*>(argb + static_cast<std::ptrdiff_t>(y) * stride);
+    };
+    const auto previous_row = [&](int y) { return s.previous.data() + static_cast<std::ptrdiff_t>(y) * w; };
+    const bool first = s.previous.empty();
     // The rectangle that changed since the previous frame (the whole frame at first).
     int x0 = 0, y0 = 0, x1 = w - 1, y1 = h - 1;
-    if (!s.previous.empty()) {
+    if (!first) {
         x0 = w;
         y0 = h;
         x1 = -1;
         y1 = -1;
         for (int y = 0; y < h; ++y) {
-            const auto* a = s.current.data() + static_cast<std::ptrdiff_t>(y) * w;
-            const auto* b = s.previous.data() + static_cast<std::ptrdiff_t>(y) * w;
-            if (std::memcmp(a, b, static_cast<std::size_t>(w)) == 0) continue;
+            const auto* a = row(y);
+            const auto* b = previous_row(y);
+            if (std::memcmp(a, b, static_cast<std::size_t>(w) * 4) == 0) continue;
             y0 = std::min(y0, y);
             y1 = y;
             int left = 0;
@@ -178,27 +175,66 @@ void gif_encoder::add_frame(const unsigned char* argb, int stride) {
         }
         if (x1 < 0) x0 = y0 = x1 = y1 = 0;  // unchanged: one pixel keeps the frame's delay
     }
+    const int rw = x1 - x0 + 1;
+    const int rh = y1 - y0 + 1;
+    // Palette indices of the rectangle; a pixel equal to the previous frame's is transparent,
+    // which keeps it, so runs of them compress to almost nothing.
+    s.rect.resize(static_cast<std::size_t>(rw) * static_cast<std::size_t>(rh));
+    for (int y = y0; y <= y1; ++y) {
+        const auto* a = row(y);
+        const auto* b = first ? nullptr : previous_row(y);
+        GifPixelType* out = s.rect.data() + static_cast<std::ptrdiff_t>(y - y0) * rw;
+        std::uint32_t last_pixel = a[x0] + 1;
+        GifPixelType last_index = 0;
+        for (int x = x0; x <= x1; ++x) {
+            if (b && a[x] == b[x]) {
+                out[x - x0] = static_cast<GifPixelType>(s.transparent);
+                continue;
+            }
+            if (a[x] != last_pixel) {
+                last_pixel = a[x];
+                last_index = s.index_of(last_pixel);
+            }
+            out[x - x0] = last_index;
+        }
+    }
     // Delays in hundredths of a second, rounded so that they add up to the true time.
     const auto centiseconds = [&](int n) { return static_cast<int>(std::lround(100.0 * n / s.fps)); };
     GraphicsControlBlock gcb{};
     gcb.DisposalMode = DISPOSE_DO_NOT;
     gcb.UserInputFlag = false;
-    gcb.DelayTime = centiseconds(frames_ + 1) - centiseconds(frames_);
-    gcb.TransparentColor = NO_TRANSPARENT_COLOR;
+    const int n = first_frame_ + frames_;
+    gcb.DelayTime = centiseconds(n + 1) - centiseconds(n);
+    gcb.TransparentColor = first ? NO_TRANSPARENT_COLOR : s.transparent;
     GifByteType ext[4];
     EGifGCBToExtension(&gcb, ext);
     if (EGifPutExtension(s.gif, GRAPHICS_EXT_FUNC_CODE, sizeof ext, ext) == GIF_ERROR) fail("delay", s.gif->Error);
-    const int rw = x1 - x0 + 1;
-    const int rh = y1 - y0 + 1;
     if (EGifPutImageDesc(s.gif, x0, y0, rw, rh, false, nullptr) == GIF_ERROR) fail("frame", s.gif->Error);
-    for (int y = y0; y <= y1; ++y) {
-        if (EGifPutLine(s.gif, s.current.data() + static_cast<std::ptrdiff_t>(y) * w + x0, rw) == GIF_ERROR) {
+    for (int y = 0; y < rh; ++y) {
+        if (EGifPutLine(s.gif, s.rect.data() + static_cast<std::ptrdiff_t>(y) * rw, rw) == GIF_ERROR) {
             fail("pixels", s.gif->Error);
         }
     }
-    s.previous.swap(s.current);
-    if (s.current.empty()) s.current.resize(s.previous.size());
+    // Keep this frame's pixels (only the changed rows differ from the previous ones).
+    if (first) s.previous.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+    for (int y = y0; y <= y1; ++y) std::memcpy(previous_row(y), row(y), static_cast<std::size_t>(w) * 4);
     ++frames_;
+}
+
+void gif_encoder::prime(const unsigned char* argb, int stride) {
+    auto& s = *state_;
+    s.previous.resize(static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height));
+    for (int y = 0; y < s.height; ++y) {
+        std::memcpy(s.previous.data() + static_cast<std::ptrdiff_t>(y) * s.width,
+                    argb + static_cast<std::ptrdiff_t>(y) * stride, static_cast<std::size_t>(s.width) * 4);
+    }
+}
+
+std::size_t gif_encoder::head_size() const { return state_->head; }
+
+std::pair<std::string, std::string> gif_encoder::split(const std::string& file, std::size_t head_size) {
+    if (file.size() < head_size + 1 || file.back() != ';') throw std::invalid_argument("not a finished GIF");
+    return {file.substr(0, head_size), file.substr(head_size, file.size() - head_size - 1)};
 }
 
 std::string gif_encoder::finish() {

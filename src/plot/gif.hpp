@@ -17,16 +17,18 @@ struct rgb8 {
 };
 
 /// The palette of an animation: the background, then each ink blended over it in `shades`
-/// steps (the anti-aliasing shades of lines and text), then mid-tones between inks; at most 256.
+/// steps (the anti-aliasing shades of lines and text), then mid-tones between inks; at most
+/// 255 (the GIF encoder keeps one index for unchanged pixels).
 std::vector<rgb8> gif_palette(const std::vector<rgb>& inks, const rgb& background, int shades);
 
 /// Encodes frames of one size into an animated GIF in memory (giflib). Each frame is mapped
 /// to the palette (nearest colour, no dithering, so lines stay crisp) and only the rectangle
-/// that changed since the previous frame is stored.
+/// that changed since the previous frame is stored, its unchanged pixels transparent.
 class gif_encoder {
 public:
     /// Starts a GIF of width x height pixels showing `fps` frames per second, looping forever.
-    gif_encoder(int width, int height, std::vector<rgb8> palette, double fps);
+    /// `first_frame` numbers the first frame added, for the delays of a part of an animation.
+    gif_encoder(int width, int height, std::vector<rgb8> palette, double fps, int first_frame = 0);
     ~gif_encoder();
     gif_encoder(const gif_encoder&) = delete;
     gif_encoder& operator=(const gif_encoder&) = delete;
@@ -34,8 +36,19 @@ public:
     /// Adds a frame given as Cairo ARGB32 pixels (premultiplied, native-endian) with `stride` bytes per row.
     void add_frame(const unsigned char* argb, int stride);
 
+    /// Takes a frame as the one before the next, without adding it: a part of an animation
+    /// encoded on its own then stores only what changed since the frame before the part.
+    void prime(const unsigned char* argb, int stride);
+
     /// Ends the file and returns its bytes; the encoder is finished afterwards.
     std::string finish();
+
+    /// The bytes of a finished file before its first frame, and those of its frames (no
+    /// trailer): parts encoded apart with one palette join as head + frames... + ";".
+    static std::pair<std::string, std::string> split(const std::string& file, std::size_t head_size);
+
+    /// The size of the file's head (signature, screen, palette and loop), for split().
+    std::size_t head_size() const;
 
     /// The number of frames added so far.
     int frames() const { return frames_; }
@@ -44,6 +57,7 @@ private:
     struct state;
     std::unique_ptr<state> state_;
     int frames_ = 0;
+    int first_frame_ = 0;
 };
 
 }  // namespace plot

@@ -11,6 +11,8 @@ int overlap(const rect& box, const std::vector<series>& data, const std::vector<
     int count = 0;
     for (std::size_t k = 0; k < data.size(); ++k) {
         const auto& d = dev[k];
+        // What moves in an animation must not move the legend from frame to frame.
+        if (data[k].overlay) continue;
         if (data[k].line != line_style::none) {
             for (std::size_t i = 1; i < d.x.size(); ++i) {
                 double x0 = d.x[i - 1], y0 = d.y[i - 1], x1 = d.x[i], y1 = d.y[i];

@@ -68,7 +68,11 @@ void draw_ticks(cairo_t* cr, const theme& th, const tick_set& t, const axis_map&
 /// Draws one panel; with show_legend, its legend goes inside the axes where it covers no
 /// data, otherwise in a row of its own above them.
 void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
-                const rect& cell, bool show_legend) {
+                const rect& cell, bool show_legend, draw_pass pass) {
+    // Which series this pass draws.
+    const auto drawn = [pass](const series& s) {
+        return pass == draw_pass::all || (pass == draw_pass::overlay) == s.overlay;
+    };
     const double pad = th.padding_pt;
     panel_geometry g = place_panel(p, plan, axes_area(plan, cell));
     if (p.equal_aspect) g = place_panel(p, plan, equal_aspect_area(g.area, plan));
@@ -101,7 +105,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
                     area.h + 2 * th.line_width_pt};
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         const auto& s = p.data[k];
-        if (s.line == line_style::none) continue;
+        if (s.line == line_style::none || !drawn(s)) continue;
         set_color(cr, th, s);
         set_line_style(cr, th, s.line, s.width_scale);
         stroke_polyline(cr, dev[k], clip);
@@ -111,10 +115,16 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     const double inward = th.marker_radius_pt - 1e-6 * (area.w + area.h);
     const rect centres{area.x + inward, area.y + inward, area.w - 2 * inward, area.h - 2 * inward};
     for (std::size_t k = 0; k < p.data.size(); ++k) {
-        if (p.data[k].marker == marker_style::none) continue;
+        if (p.data[k].marker == marker_style::none || !drawn(p.data[k])) continue;
         set_color(cr, th, p.data[k]);
         draw_markers(cr, th, p.data[k], dev[k], centres);
     }
+
+    if (!p.overlay_label.empty() && pass != draw_pass::still) {
+        set_foreground(cr, th);
+        text.draw(p.overlay_label, th.label_font_pt, area.x + area.w, area.y - 0.4 * pad, 1.0, 1.0);
+    }
+    if (pass == draw_pass::overlay) return;
 
     if (p.frameless) {
         // A drawing: only its title and legend.
@@ -193,7 +203,7 @@ figure with_theme_styles(const figure& fig, const theme& th) {
 
 }  // namespace
 
-void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size) {
+void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass) {
     const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), [](const panel& p) {
         return std::any_of(p.data.begin(), p.data.end(), [](const series& s) { return !s.style_key.empty(); });
     });
@@ -204,8 +214,10 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     }
     if (th.palette.empty()) throw std::invalid_argument("theme has no colours");
     const text_engine text(cr, th.font_family);
-    cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
-    cairo_paint(cr);
+    if (pass != draw_pass::overlay) {
+        cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
+        cairo_paint(cr);
+    }
 
     // Shared margins keep the axes of neighbouring panels aligned, and those of panels drawn
     // alone in files of their own (the peers).
@@ -226,7 +238,9 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     };
     std::vector<rect> cells = make_cells(0);
     if (!fig.shared_legend || fig.panels.empty()) {
-        for (std::size_t i = 0; i < fig.panels.size(); ++i) draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], true);
+        for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+            draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], true, pass);
+        }
         return;
     }
     // A shared legend goes to the first panel with room for it inside the axes; failing
@@ -240,13 +254,15 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     }
     if (!legend_panel && !lg.entries.empty()) {
         const double band = legend_band_height(lg, th, size.width_pt - 2 * th.padding_pt);
-        draw_legend_band(cr, text, th, fig.panels[0], lg,
-                         rect{th.padding_pt, 0.3 * th.padding_pt, size.width_pt - 2 * th.padding_pt, band});
+        if (pass != draw_pass::overlay) {
+            draw_legend_band(cr, text, th, fig.panels[0], lg,
+                             rect{th.padding_pt, 0.3 * th.padding_pt, size.width_pt - 2 * th.padding_pt, band});
+        }
         cells = make_cells(band + 0.3 * th.padding_pt);
     }
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
         if (legend_panel && i == *legend_panel) plans[i].legend = lg;
-        draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], legend_panel && i == *legend_panel);
+        draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], legend_panel && i == *legend_panel, pass);
     }
 }
 

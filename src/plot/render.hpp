@@ -16,8 +16,12 @@ struct page_size {
 /// The size of a figure drawn with a theme: the theme's fixed size, or the panels' size.
 page_size figure_size(const figure& fig, const theme& th);
 
+/// What draw_figure draws: everything, what stays the same in every frame of an
+/// animation (no overlay series or labels), or only what moves (on top of the former).
+enum class draw_pass { all, still, overlay };
+
 /// Draws the figure on cr, whose user units are points, filling [0, w] x [0, h].
 /// Throws std::runtime_error if the theme's font is not installed.
-void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size);
+void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size, draw_pass pass = draw_pass::all);
 
 }  // namespace plot

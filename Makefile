@@ -15,6 +15,8 @@ DEB_PACKAGES := g++ cmake make pkgconf
 DEB_PACKAGES += libgsl-dev libcairo2-dev libpango1.0-dev libcli11-dev libpng-dev
 DEB_PACKAGES += libgtest-dev libbenchmark-dev
 DEB_PACKAGES += libtomlplusplus-dev libgif-dev
+# Beamer and animate, for the test that plays an animation's PDF pages.
+DEB_PACKAGES += texlive-latex-base texlive-latex-recommended texlive-latex-extra
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
 
 .PHONY: all deps build test bench figures update-baselines clean

@@ -52,10 +52,12 @@ bench: build
 	$(BUILD)/bench_pendulum --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
 	  --benchmark_min_time=0.2
 	bench/time_render.sh $(BUILD)/pendulum-figures 11
+	bench/time_animation.sh $(BUILD)/pendulum-figures 3
 
 figures: build
 	mkdir -p figures
 	$(BUILD)/pendulum-figures render --all examples/*.toml -o figures -f pdf,png
+	$(BUILD)/pendulum-figures render swing --theme slides --dpi 48 -f gif -o figures
 
 # Regenerates the images the tests compare renders to; run it after a deliberate change
 # to the figures, look at the new images, and commit them.

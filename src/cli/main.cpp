@@ -668,7 +668,14 @@ int main(int argc, char** argv) {
                    "Examples:\n"
                    "  pendulum-figures render --all -o figures -f pdf,png\n"
                    "  pendulum-figures render fig2 --theta0 170deg --theme slides -f png --dpi 150\n"
-                   "  pendulum-figures render --all --paper-files -f eps -o paper/");
+                   "  pendulum-figures render --all --paper-files -f eps -o paper/\n"
+                   "\nAnimations (a spec with [animation]; built in: swing, separatrix) are written as a looping "
+                   "GIF, a PDF of one page per frame, or PNG frames ID-0001.png ...; SVG and EPS, and every format "
+                   "with --at, get one frame. In Beamer: \\usepackage{animate} and "
+                   "\\animategraphics[loop,autoplay]{30}{swing}{}{} (30: the spec's fps). A video: ffmpeg -framerate "
+                   "30 -i swing-%04d.png -pix_fmt yuv420p swing.mp4\n"
+                   "  pendulum-figures render swing --theme slides -f gif,pdf\n"
+                   "  pendulum-figures render swing --at 0.25 -f svg");
 
     bool list_markdown_flag = false;
     auto* list = app.add_subcommand("list", "List the figures, the methods and the plot kinds.");

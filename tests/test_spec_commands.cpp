@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -172,6 +173,23 @@ TEST(SpecCommands, AMethodsOwnColour) {
     // The curve and its legend sample, in the paper theme whose palette is black only.
     EXPECT_NE(svg.find("rgb(83.529412%,36.862745%,0%)"), std::string::npos);
     fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(SpecCommands, EvalPeriodInSeconds) {
+    const auto r = run_cli("eval --theta0 170deg --length 0.5 --format json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto at = r.out.find("\"T_s\": ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    // 2 pi sqrt(L/g) T/T0, with T/T0 at 170 degrees from the 80-digit references' formula.
+    const double t_s = std::stod(r.out.substr(at + 7));
+    EXPECT_NEAR(t_s, 2 * 3.141592653589793 * std::sqrt(0.5 / 9.80665) * 2.4393627196738827, 1e-14);
+    EXPECT_EQ(run_cli("eval --theta0 1 --length 0").status, 2);
+    EXPECT_EQ(run_cli("eval --theta0 1 --length 1 --g -9.8").status, 2);
+    EXPECT_EQ(run_cli("eval --theta0 1").out.find("T_s"), std::string::npos);
 }
 
 }  // namespace

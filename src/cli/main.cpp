@@ -102,6 +102,8 @@ struct eval_options {
     std::vector<std::string> orders;
     std::vector<std::string> methods;
     std::string format = "csv";
+    std::optional<double> length;  // metres: adds the period in seconds
+    double g = 9.80665;
 };
 
 cli::table eval_table(const eval_options& o) {
@@ -114,12 +116,22 @@ cli::table eval_table(const eval_options& o) {
     for (const auto& c : cli::eval_columns()) t.columns.emplace_back(c.name);
     for (int n : orders) t.columns.push_back("period_order" + std::to_string(n));
     for (const auto& m : methods) t.columns.push_back("period_" + m.text());
+    double small_period_s = 0;
+    if (o.length) {
+        if (!(*o.length > 0 && *o.length <= 1e6)) {
+            throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
+        }
+        if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
+        small_period_s = 2 * std::acos(-1.0) * std::sqrt(*o.length / o.g);
+        t.columns.push_back("T_s");
+    }
     for (const auto& a : amplitudes) {
         const cli::eval_point point(a.value);
         std::vector<double> row;
         for (const auto& c : cli::eval_columns()) row.push_back(c.value(point));
         for (int n : orders) row.push_back(iterated(a.value, n).period_ratio());
         for (const auto& m : methods) row.push_back(method_period(m, a.value));
+        if (o.length) row.push_back(small_period_s * point.exact.period_ratio());
         t.rows.push_back(std::move(row));
     }
     return t;
@@ -194,7 +206,7 @@ struct render_options {
     bool all = false;
     std::string dir = ".";
     std::string formats = "pdf,png";
-    std::string theme = "paper";
+    std::string theme;  // empty: paper for still figures, slides for animations
     std::vector<std::string> sets;
     std::optional<double> dpi;  // the theme's when not given
     std::string theta0;
@@ -301,11 +313,16 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
         plot::check_format(f);
         if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
     }
-    const plot::theme theme = chosen_theme(o.theme, o.sets);
+    const plot::theme theme = chosen_theme(o.theme.empty() ? "paper" : o.theme, o.sets);
+    // Animations are for slides: theirs unless a theme is asked for.
+    const plot::theme moving_theme = o.theme.empty() ? chosen_theme("slides", o.sets) : theme;
     const double dpi = o.dpi.value_or(theme.dpi);
-    if (!(dpi >= plot::min_dpi && dpi <= plot::max_dpi)) {
-        throw usage_error("--dpi " + format_double(dpi) + ": must be between " + format_double(plot::min_dpi) +
-                          " and " + format_double(plot::max_dpi));
+    const double moving_dpi = o.dpi.value_or(moving_theme.dpi);
+    for (const double d : {dpi, moving_dpi}) {
+        if (!(d >= plot::min_dpi && d <= plot::max_dpi)) {
+            throw usage_error("--dpi " + format_double(d) + ": must be between " + format_double(plot::min_dpi) +
+                              " and " + format_double(plot::max_dpi));
+        }
     }
     figures::build_options build;
     if (!o.theta0.empty()) {
@@ -364,17 +381,19 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
         for (const auto& m : moving) {
             for (const auto& f : formats) {
                 if (!at && figures::is_animation_format(f)) {
-                    figures::write_animation(*m.entry, build, theme, f, o.dir, dpi, m.frames.first, m.frames.second);
+                    figures::write_animation(*m.entry, build, moving_theme, f, o.dir, moving_dpi, m.frames.first,
+                                             m.frames.second);
                     continue;
                 }
                 // A still format, or --at: one frame.
                 figures::build_options still = build;
                 still.animated = true;
-                still.panel_width_cm = theme.panel_width_cm;
-                still.panel_aspect = theme.panel_aspect;
+                still.panel_width_cm = moving_theme.panel_width_cm;
+                still.panel_aspect = moving_theme.panel_aspect;
                 const double w0_t = at ? *at * m.plan.reference_period : m.plan.time(m.frames.first);
                 const auto frame = figures::animation_frame(*m.entry, still, m.plan, figures::build(*m.entry, still), w0_t);
-                plot::save(frame, theme, std::filesystem::path(o.dir) / (m.entry->id + "." + f), plot::output_options{dpi});
+                plot::save(frame, moving_theme, std::filesystem::path(o.dir) / (m.entry->id + "." + f),
+                           plot::output_options{moving_dpi});
             }
         }
     } catch (const std::exception& e) {
@@ -602,14 +621,18 @@ int main(int argc, char** argv) {
         ->type_name("NAME")
         ->take_all()
         ->delimiter(',');
+    eval->add_option("--length", ev.length, "Pendulum length in metres: adds T_s, the exact period in seconds")
+        ->type_name("L");
+    eval->add_option("--g", ev.g, "Gravity in m/s^2 for --length (default 9.80665)")->type_name("G");
     eval->add_option("--format", ev.format, "Output format: csv (default) or json")
         ->type_name("csv|json");
     eval->footer(std::string("\n") + angle_help + "\n\nColumns: " + cli::eval_columns_help() +
-                 "; then period_orderN for each --order N and period_NAME for each --method NAME. Periods are "
-                 "T/T0. Numbers round-trip a double.\n\n"
+                 "; then period_orderN for each --order N, period_NAME for each --method NAME, and T_s with "
+                 "--length. Periods are T/T0. Numbers round-trip a double.\n\n"
                  "Examples:\n"
                  "  pendulum-figures eval --theta0 'pi/2,9pi/10' --order 12\n"
-                 "  pendulum-figures eval --theta0 170deg --method kidd-fogg,lima-arun,ganley,agm:2");
+                 "  pendulum-figures eval --theta0 170deg --method kidd-fogg,lima-arun,ganley,agm:2\n"
+                 "  pendulum-figures eval --theta0 170deg --length 0.5");
 
     trajectory_options tr;
     auto* traj = app.add_subcommand(
@@ -645,7 +668,8 @@ int main(int argc, char** argv) {
     render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR");
     render->add_option("-f,--formats", ro.formats, "Comma-separated formats (default: pdf,png): " + format_help())
         ->type_name("LIST");
-    render->add_option("--theme", ro.theme, figures::theme_help() + "; default paper")->type_name("NAME");
+    render->add_option("--theme", ro.theme, figures::theme_help() + "; default paper, slides for animations")
+        ->type_name("NAME");
     render->add_option("--set", ro.sets, "KEY=VALUE of a style file on top of the theme, e.g. tick_font_pt=9; "
                                          "repeatable ('show --theme paper' lists the keys)")
         ->type_name("KEY=VALUE");

@@ -308,7 +308,8 @@ plot::panel phase_panel(const context&, const panel_spec& p) {
         const double period = 4 * exact.quarter_period();
         for (std::size_t j = 0; j < p.methods.size(); ++j) {
             const auto& m = p.methods[j];
-            series_style st = style_of(m, static_cast<int>(j));
+            // One method: each orbit its own colour; several: a colour per method.
+            series_style st = style_of(m, static_cast<int>(p.methods.size() == 1 ? i : j));
             if (i > 0) st.label.clear();  // one legend entry per method
             plot::series s = series_of(st);
             if (is_exact(m)) {
@@ -551,7 +552,9 @@ void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector
             }
             for (std::size_t j = 0; j < p.methods.size(); ++j) {
                 const auto& m = p.methods[j];
-                series_style st = style_of(m, static_cast<int>(j));
+                const std::size_t amplitude_index = static_cast<std::size_t>(&a - p.theta0.data());
+                const bool by_orbit = p.plot == plot_kind::phase && p.methods.size() == 1;
+                series_style st = style_of(m, static_cast<int>(by_orbit ? amplitude_index : j));
                 plot::series dot = series_of(st);
                 dot.label.clear();
                 dot.style_key.clear();

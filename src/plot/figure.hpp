@@ -68,7 +68,7 @@ struct panel {
     legend_place legend = legend_place::automatic;  ///< legend placement
     bool frameless = false;               ///< no frame, ticks or axis labels (a drawing, not a plot)
     bool equal_aspect = false;            ///< one unit is as long on both axes
-    std::string overlay_label;            ///< text that changes per frame (a clock), top right, overlay pass
+    std::string overlay_label;            ///< text that changes per frame (a clock), top left inside, overlay pass
 };
 
 /// A grid of panels with a physical size.

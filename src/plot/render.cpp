@@ -122,7 +122,8 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
 
     if (!p.overlay_label.empty() && pass != draw_pass::still) {
         set_foreground(cr, th);
-        text.draw(p.overlay_label, th.label_font_pt, area.x + area.w, area.y - 0.4 * pad, 1.0, 1.0);
+        // Inside the top left corner, which a drawing of the pendulum and a phase portrait leave free.
+        text.draw(p.overlay_label, th.label_font_pt, area.x + pad, area.y + pad, 0.0, 0.0);
     }
     if (pass == draw_pass::overlay) return;
 

@@ -30,12 +30,6 @@ namespace plot {
 
 namespace {
 
-/// strerror, lowercased to match the project's messages ("no such file or directory").
-std::string error_text(int e) {
-    std::string s = std::strerror(e);
-    if (!s.empty() && s[0] >= 'A' && s[0] <= 'Z') s[0] = static_cast<char>(s[0] - 'A' + 'a');
-    return s;
-}
 
 /// SOURCE_DATE_EPOCH as a UTC time, if set and valid.
 std::optional<std::tm> source_date() {
@@ -330,40 +324,6 @@ void check_format(std::string_view format) { find_format(format); }
 
 std::string render(const figure& fig, const theme& th, std::string_view format, const output_options& options) {
     return find_format(format).write(fig, th, options);
-}
-
-void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
-    const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-    std::string temp = (dir / ("." + path.filename().string() + ".XXXXXX")).string();
-    const int fd = ::mkstemp(temp.data());
-    if (fd < 0) {
-        throw std::runtime_error("cannot write " + path.string() + ": " + error_text(errno));
-    }
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            const int e = errno;
-            ::close(fd);
-            ::unlink(temp.c_str());
-            throw std::runtime_error("cannot write " + path.string() + ": " + error_text(e));
-        }
-        done += static_cast<std::size_t>(n);
-    }
-    // mkstemp makes the file private; figures are ordinary files. The umask is read once:
-    // reading it means setting it, which must not race with other writers.
-    static const mode_t mask = [] {
-        const mode_t m = ::umask(022);
-        ::umask(m);
-        return m;
-    }();
-    ::fchmod(fd, 0666 & ~mask);
-    if (::close(fd) != 0 || std::rename(temp.c_str(), path.c_str()) != 0) {
-        const int e = errno;
-        ::unlink(temp.c_str());
-        throw std::runtime_error("cannot write " + path.string() + ": " + error_text(e));
-    }
 }
 
 void save(const figure& fig, const theme& th, const std::filesystem::path& path, const output_options& options) {

@@ -1,0 +1,133 @@
+// Writing output files: whole or not at all, into what the path names.
+#include "plot/output.hpp"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <stdexcept>
+#include <string>
+
+namespace plot {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// strerror, lowercased to match the project's messages ("no space left on device").
+std::string error_text(int e) {
+    std::string s = std::strerror(e);
+    if (!s.empty() && s[0] >= 'A' && s[0] <= 'Z') s[0] = static_cast<char>(s[0] - 'A' + 'a');
+    return s;
+}
+
+[[noreturn]] void fail(const fs::path& path, int e) {
+    throw std::runtime_error("cannot write " + path.string() + ": " + error_text(e));
+}
+
+/// Writes all bytes to fd; returns 0 or the errno of the failure.
+int write_all(int fd, const std::string& bytes) {
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    return 0;
+}
+
+/// The file a path leads to through any symbolic links (which are kept: their target is
+/// what gets replaced).
+fs::path resolve_links(const fs::path& path) {
+    fs::path target = path;
+    for (int i = 0; i < 40; ++i) {
+        struct stat st {};
+        if (::lstat(target.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return target;
+        std::error_code ec;
+        const fs::path link = fs::read_symlink(target, ec);
+        if (ec) fail(path, ec.value());
+        target = link.is_absolute() ? link : target.parent_path() / link;
+    }
+    fail(path, ELOOP);
+}
+
+/// Temporary files are named ".pf-XXXXXX" beside their target.
+constexpr const char* temp_prefix = ".pf-";
+
+/// Removes our temporary files in dir that a killed run left more than an hour ago (a
+/// running writer's are younger).
+void remove_stale_temporaries(const fs::path& dir) {
+    DIR* d = ::opendir(dir.c_str());
+    if (!d) return;
+    const std::time_t now = std::time(nullptr);
+    while (const dirent* e = ::readdir(d)) {
+        const std::string name = e->d_name;
+        if (name.size() != std::strlen(temp_prefix) + 6 || name.rfind(temp_prefix, 0) != 0) continue;
+        const fs::path p = dir / name;
+        struct stat st {};
+        if (::lstat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode) && now - st.st_mtime > 3600) ::unlink(p.c_str());
+    }
+    ::closedir(d);
+}
+
+}  // namespace
+
+void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
+    const fs::path target = resolve_links(path);
+    struct stat st {};
+    const bool exists = ::stat(target.c_str(), &st) == 0;
+    if (exists && S_ISDIR(st.st_mode)) fail(path, EISDIR);
+    if (exists && !S_ISREG(st.st_mode)) {
+        // A device, FIFO or socket: written through, in place, never replaced.
+        const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+        if (fd < 0) fail(path, errno);
+        const int e = write_all(fd, bytes);
+        if (::close(fd) != 0 && e == 0) fail(path, errno);
+        if (e != 0) fail(path, e);
+        return;
+    }
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    remove_stale_temporaries(dir);
+    std::string temp = (dir / (std::string(temp_prefix) + "XXXXXX")).string();
+    const int fd = ::mkstemp(temp.data());
+    if (fd < 0) fail(path, errno);
+    const auto give_up = [&](int e) {
+        ::close(fd);
+        ::unlink(temp.c_str());
+        fail(path, e);
+    };
+    if (const int e = write_all(fd, bytes)) give_up(e);
+    // An existing file keeps its mode (and owner, where we may set it); a new one gets the
+    // usual 0666 less the umask, which is read once: reading it means setting it.
+    static const mode_t mask = [] {
+        const mode_t m = ::umask(022);
+        ::umask(m);
+        return m;
+    }();
+    if (::fchmod(fd, exists ? (st.st_mode & 07777) : (0666 & ~mask)) != 0) give_up(errno);
+    if (exists && (st.st_uid != ::geteuid() || st.st_gid != ::getegid())) {
+        if (::fchown(fd, st.st_uid, st.st_gid) != 0 && errno != EPERM) give_up(errno);
+    }
+    // On disk before it takes the name: a crash leaves the old file or the new one.
+    if (::fsync(fd) != 0) give_up(errno);
+    if (::close(fd) != 0) {
+        const int e = errno;
+        ::unlink(temp.c_str());
+        fail(path, e);
+    }
+    if (std::rename(temp.c_str(), target.c_str()) != 0) {
+        const int e = errno;
+        ::unlink(temp.c_str());
+        fail(path, e);
+    }
+}
+
+}  // namespace plot

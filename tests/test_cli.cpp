@@ -189,7 +189,7 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
     };
     for (const char* args : cases) {
         const auto r = run_cli(args);
-        EXPECT_NE(r.status, 0) << args;
+        EXPECT_EQ(r.status, 2) << args;  // bad input: 2, as --help says
         EXPECT_EQ(r.out, "") << args;
         const auto l = lines(r.err);
         ASSERT_EQ(l.size(), 1u) << args << "\n" << r.err;

@@ -288,7 +288,7 @@ TEST(RenderCommand, BadInputTouchesNoFile) {
     };
     for (const auto& args : cases) {
         const auto r = run_cli(args);
-        EXPECT_NE(r.status, 0) << args;
+        EXPECT_EQ(r.status, 2) << args;  // bad input: 2, as --help says
         EXPECT_EQ(r.out, "") << args;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
         EXPECT_EQ(r.err.rfind("pendulum-figures: error: ", 0), 0u) << r.err;

@@ -39,8 +39,11 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& why) const {
-        throw std::invalid_argument("invalid value '" + std::string(text_) + "': " + why + "; " +
-                                    std::string(allowed));
+        // A long value is shown by its ends.
+        const std::string shown = text_.size() <= 80 ? std::string(text_)
+                                                      : std::string(text_.substr(0, 40)) + "..." +
+                                                            std::string(text_.substr(text_.size() - 20));
+        throw std::invalid_argument("invalid value '" + shown + "': " + why + "; " + std::string(allowed));
     }
 
     void skip_space() {
@@ -93,7 +96,23 @@ private:
         }
     }
 
+    /// Parentheses and signs nest; deeper than this is no angle anyone types, and it would
+    /// exhaust the stack.
+    static constexpr int max_depth = 500;
+
+    /// Counts one level of nesting for the rest of the enclosing call.
+    struct nesting {
+        explicit nesting(parser& p) : p_(p) {
+            if (++p_.depth_ > max_depth) p_.fail("expression nested too deeply (at most " + std::to_string(max_depth) + " levels)");
+        }
+        ~nesting() { --p_.depth_; }
+        nesting(const nesting&) = delete;
+        nesting& operator=(const nesting&) = delete;
+        parser& p_;
+    };
+
     double unary() {
+        const nesting level(*this);
         if (take("-")) return -unary();
         if (take("+")) return unary();
         return primary();
@@ -102,6 +121,7 @@ private:
     double primary() {
         skip_space();
         if (take("(")) {
+            const nesting level(*this);
             const double v = sum();
             if (!take(")")) fail("missing ')'");
             return v;
@@ -132,7 +152,11 @@ private:
             }
         }
         const std::string digits(text_.substr(pos_, end - pos_));
-        if (digits == ".") fail("'.' is not a number");
+        // A number has a digit before its exponent: ".e5" is no number.
+        const std::string mantissa = digits.substr(0, digits.find_first_of("eE"));
+        if (mantissa.find_first_of("0123456789") == std::string::npos) {
+            fail("'" + digits + "' is not a number");
+        }
         errno = 0;
         const double v = std::strtod(digits.c_str(), nullptr);
         if (errno == ERANGE && std::isinf(v)) fail("number " + digits + " is out of range");
@@ -142,6 +166,7 @@ private:
 
     std::string_view text_;
     std::size_t pos_ = 0;
+    int depth_ = 0;
 };
 
 }  // namespace

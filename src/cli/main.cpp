@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <deque>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -50,7 +51,8 @@ std::vector<figures::amplitude> parse_amplitudes(const std::string& text) {
             check_amplitude(v);
             values.push_back({item, v});
         } catch (const std::invalid_argument& e) {
-            throw usage_error("--theta0 '" + item + "': " + e.what());
+            const std::string shown = item.size() <= 80 ? item : item.substr(0, 40) + "..." + item.substr(item.size() - 20);
+            throw usage_error("--theta0 '" + shown + "': " + e.what());
         }
     }
     return values;
@@ -87,6 +89,36 @@ int parse_order(const std::string& text) {
     }
     check_order(order);
     return order;
+}
+
+/// Prints an error on standard error, one line per line of the message, with control
+/// characters shown escaped (a typed ESC or CR must not retitle or clear the terminal).
+void report_error(const std::string& message) {
+    std::string out = "pendulum-figures: error: ";
+    for (const char c : message) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '\n') {
+            out += '\n';
+        } else if (u < 0x20 || u == 0x7f) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", u);
+            out += buf;
+        } else {
+            out += c;
+        }
+    }
+    std::cerr << out << '\n';
+}
+
+/// Prints help or the version as CLI11 does, and fails with 1 if it could not be written.
+int exit_with_help(const CLI::App& app, const CLI::Error& e) {
+    const int code = app.exit(e);
+    std::cout.flush();
+    if (!std::cout) {
+        report_error("cannot write to standard output");
+        return 1;
+    }
+    return code;
 }
 
 /// CLI11's messages, lowercased at the start to match ours.
@@ -308,6 +340,12 @@ std::vector<const figures::entry*> selected_figures(const std::vector<std::strin
 
 /// Renders the chosen figures with the options of `o` other than the ids.
 int render_entries(const std::vector<const figures::entry*>& chosen, const render_options& o) {
+    // The environment is input too: a bad SOURCE_DATE_EPOCH stops the run before any work.
+    try {
+        plot::pdf_creation_date();
+    } catch (const std::invalid_argument& e) {
+        throw usage_error(e.what());
+    }
     std::vector<std::string> formats;
     for (const auto& f : cli::split_list(o.formats)) {
         plot::check_format(f);
@@ -397,7 +435,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
             }
         }
     } catch (const std::exception& e) {
-        std::cerr << "pendulum-figures: error: " << e.what() << "\n";
+        report_error(e.what());
         return 1;
     }
     return 0;
@@ -801,11 +839,11 @@ int main(int argc, char** argv) {
         }
         return 0;
     } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
+        return exit_with_help(app, e);
     } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
+        return exit_with_help(app, e);
     } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
+        return exit_with_help(app, e);
     } catch (const CLI::ParseError& e) {
         std::string message = lowercase_first(e.what());
         if (app.get_subcommands().empty()) {
@@ -817,16 +855,16 @@ int main(int argc, char** argv) {
                           "'; commands: eval, trajectory, list, show, render, plot, data (see --help)";
             }
         }
-        std::cerr << "pendulum-figures: error: " << message << "\n";
+        report_error(message);
         return 2;
     } catch (const usage_error& e) {
-        std::cerr << "pendulum-figures: error: " << e.what() << "\n";
+        report_error(e.what());
         return 2;
     } catch (const std::invalid_argument& e) {
-        std::cerr << "pendulum-figures: error: " << e.what() << "\n";
+        report_error(e.what());
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "pendulum-figures: error: " << e.what() << "\n";
+        report_error(e.what());
         return 1;
     }
 }

@@ -35,13 +35,21 @@ namespace {
 std::optional<std::tm> source_date() {
     const char* text = std::getenv("SOURCE_DATE_EPOCH");
     if (!text || !*text) return std::nullopt;
-    char* end = nullptr;
-    errno = 0;
-    const long long seconds = std::strtoll(text, &end, 10);
-    if (errno != 0 || *end != '\0' || seconds < 0) return std::nullopt;
-    const std::time_t t = static_cast<std::time_t>(seconds);
+    // The reproducible-builds specification: a whole number of seconds since 1970, and an
+    // error otherwise, not a silent fallback. PDF dates have four-digit years.
+    const std::string value = text;
+    const bool digits = value.size() <= 12 && value.find_first_not_of("0123456789") == std::string::npos;
+    const long long seconds = digits ? std::stoll(value) : -1;
+    constexpr long long last = 253402300799;  // 9999-12-31T23:59:59Z
     std::tm tm{};
-    if (!gmtime_r(&t, &tm)) return std::nullopt;
+    const std::time_t t = static_cast<std::time_t>(seconds);
+    if (!digits || seconds > last || !gmtime_r(&t, &tm)) {
+        std::string shown;
+        for (const char c : value.substr(0, 40)) shown += static_cast<unsigned char>(c) < 0x20 ? '?' : c;
+        throw std::invalid_argument("SOURCE_DATE_EPOCH '" + shown +
+                                    "' must be a whole number of seconds since 1970-01-01, 0 to " +
+                                    std::to_string(last));
+    }
     return tm;
 }
 

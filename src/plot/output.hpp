@@ -40,7 +40,8 @@ std::vector<std::string> format_names();
 /// Throws std::invalid_argument listing the supported formats unless `format` is one.
 void check_format(std::string_view format);
 
-/// The creation date of PDF files, "YYYY-MM-DDTHH:MM:SSZ" from SOURCE_DATE_EPOCH, or empty.
+/// The creation date of PDF files, "YYYY-MM-DDTHH:MM:SSZ" from SOURCE_DATE_EPOCH, or empty;
+/// throws std::invalid_argument naming it if it is set and not 0 to 253402300799 seconds.
 std::string pdf_creation_date();
 
 /// Renders the figure in the format and returns the file's bytes. The same input always

@@ -1,0 +1,103 @@
+// Hostile input: deep nesting, malformed numbers, control characters, a bad
+// SOURCE_DATE_EPOCH, an unwritable standard output, many panels, too many amplitudes.
+#include "cli/angle.hpp"
+#include "process.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using test_support::files_in;
+using test_support::run_cli;
+using test_support::run_command;
+using test_support::temp_dir;
+
+std::string why(const std::string& text) {
+    try {
+        pendulum::cli::parse_angle(text);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+TEST(Hardening, DeepNestingIsAnErrorNotACrash) {
+    for (const std::string& text : {std::string(50000, '(') + "1" + std::string(50000, ')'),
+                                    std::string(30000, '(') + "1", std::string(30000, '-') + "1",
+                                    std::string(300, '(') + "1" + std::string(300, ')')}) {
+        EXPECT_NE(why(text).find("nested too deeply"), std::string::npos) << text.size();
+        EXPECT_LT(why(text).size(), 300u);  // the value is shown by its ends
+    }
+    EXPECT_EQ(pendulum::cli::parse_angle(std::string(100, '(') + "1" + std::string(100, ')')), 1.0);
+    const auto r = run_cli("eval --theta0 '" + std::string(40000, '(') + "1'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("nested too deeply"), std::string::npos);
+}
+
+TEST(Hardening, NumbersNeedADigit) {
+    for (const char* text : {".e5", "1+.e5", ".", "-.e-3", "2*.E1"}) {
+        EXPECT_NE(why(text).find("is not a number"), std::string::npos) << text << ": " << why(text);
+    }
+    EXPECT_EQ(pendulum::cli::parse_angle("1.e-1"), 0.1);
+    EXPECT_EQ(pendulum::cli::parse_angle(".5e1"), 5.0);
+}
+
+TEST(Hardening, ControlCharactersAreShownEscaped) {
+    const auto s = run_command("'" + std::string(PENDULUM_EXE) + "' eval --theta0 \"$(printf '\\033[2J1\\r')\"");
+    EXPECT_EQ(s.status, 2);
+    EXPECT_EQ(s.err.find('\x1b'), std::string::npos) << s.err;
+    EXPECT_EQ(s.err.find('\r'), std::string::npos);
+    EXPECT_NE(s.err.find("\\x1b[2J1\\x0d"), std::string::npos) << s.err;
+}
+
+TEST(Hardening, SourceDateEpochMustBeValid) {
+    const auto dir = temp_dir("epoch");
+    for (const char* bad : {"garbage", "-1", "1.5", "0x10", "253402300800", " 5"}) {
+        const auto r = run_command("SOURCE_DATE_EPOCH='" + std::string(bad) + "' '" + PENDULUM_EXE +
+                                   "' render fig1 -f pdf -o '" + dir.string() + "'");
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_NE(r.err.find("SOURCE_DATE_EPOCH"), std::string::npos) << r.err;
+    }
+    EXPECT_TRUE(files_in(dir).empty());
+    const auto good = run_command("SOURCE_DATE_EPOCH=253402300799 '" + std::string(PENDULUM_EXE) +
+                                  "' render fig1 -f pdf -o '" + dir.string() + "'");
+    EXPECT_EQ(good.status, 0) << good.err;
+    EXPECT_NE(test_support::slurp(dir / "c1-lowest.pdf").find("99991231235959"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(Hardening, UnwritableStandardOutputIsAnError) {
+    for (const char* args : {"--help", "render --help", "--version", "list", "eval --theta0 1", "data fig1"}) {
+        const auto r = run_command("'" + std::string(PENDULUM_EXE) + "' " + args + " > /dev/full");
+        EXPECT_EQ(r.status, 1) << args;
+        EXPECT_NE(r.err.find("cannot write"), std::string::npos) << args << ": " << r.err;
+    }
+}
+
+TEST(Hardening, ManyPanelsAreLetteredInPlainAscii) {
+    std::string amplitudes;
+    for (int i = 1; i <= 30; ++i) amplitudes += (i > 1 ? "," : "") + std::to_string(i * 0.1);
+    const auto r = run_cli("data fig2 --theta0 '" + amplitudes + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("\nz,"), std::string::npos);
+    EXPECT_NE(r.out.find("\naa,"), std::string::npos);
+    EXPECT_NE(r.out.find("\nad,"), std::string::npos);
+    for (const char c : r.out) EXPECT_LT(static_cast<unsigned char>(c), 0x80u);
+}
+
+TEST(Hardening, TooManyAmplitudesForThePaperFilesIsCheckedFirst) {
+    const auto dir = temp_dir("paper-files");
+    const auto r = run_cli("render fig2 --paper-files --theta0 0.5,1,1.5,2,2.5 -f pdf -o '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("no paper file name"), std::string::npos) << r.err;
+    EXPECT_TRUE(files_in(dir).empty());
+    fs::remove_all(dir);
+}
+
+}  // namespace

@@ -101,3 +101,31 @@ TEST(Hardening, TooManyAmplitudesForThePaperFilesIsCheckedFirst) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Hardening, EmptyValuesAndOrdersAreReported) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"eval --theta0 ''", "--theta0: empty value"},
+        {"render fig1 --theta0 ''", "--theta0: empty value"},
+        {"render fig1 -o ''", "--output-dir: empty value"},
+        {"data fig1 -o ''", "--output: empty value"},
+        {"eval --theta0 1 --order 1,,2", "--order: empty value"},
+        {"eval --theta0 1 --order 2147483648", "order must be between 0 and 200"},
+        {"eval --theta0 1 --order 5x", "not a whole number"},
+        {"data fig1 -o /", "is a directory; give a file name"},
+        {"data fig1 -o /nonexistent-dir/x.csv", "does not exist"},
+    };
+    for (const auto& [args, message] : cases) {
+        const auto r = run_cli(args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+    }
+    // Spaces on either side of an order, and repeated orders give one column.
+    const auto r = run_cli("eval --theta0 1 --order ' 5 ' --order 5,5");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto header = r.out.substr(0, r.out.find('\n'));
+    EXPECT_EQ(header.find("period_order5"), header.rfind("period_order5"));
+}
+
+}  // namespace

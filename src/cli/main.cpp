@@ -76,20 +76,34 @@ void check_order(int order) {
 
 /// Parses an order N given as text, with a message that names it.
 int parse_order(const std::string& text) {
-    std::size_t used = 0;
-    int order = -1;
-    try {
-        order = std::stoi(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
+    // Spaces around the number are allowed on both sides, as in angles.
+    const auto first = text.find_first_not_of(" \t");
+    const auto last = text.find_last_not_of(" \t");
+    const std::string digits = first == std::string::npos ? "" : text.substr(first, last - first + 1);
+    if (digits.empty()) throw usage_error("--order: empty value; orders are 0.." + std::to_string(max_order));
+    if (digits.find_first_not_of("0123456789") != std::string::npos) {
+        throw usage_error("--order '" + text + "': not a whole number; orders are 0.." + std::to_string(max_order));
     }
-    if (used == 0 || used != text.size()) {
-        throw usage_error("--order '" + text + "': not a whole number; orders are 0.." +
-                          std::to_string(max_order));
+    if (digits.size() > 9) {
+        throw usage_error("--order " + digits + ": order must be between 0 and " + std::to_string(max_order));
     }
+    const int order = std::stoi(digits);
     check_order(order);
     return order;
 }
+
+/// A comma-separated option value as its items, empty ones kept so that they are reported.
+std::vector<std::string> list_items(const std::vector<std::string>& values) {
+    std::vector<std::string> items;
+    for (const auto& v : values) {
+        for (auto& item : cli::split_list(v)) items.push_back(std::move(item));
+    }
+    return items;
+}
+
+/// Refuses an empty value (CLI11 validator): '' is never a figure, directory or amplitude.
+const CLI::Validator non_empty(
+    [](std::string& value) { return value.empty() ? std::string("empty value") : std::string(); }, "", "NON-EMPTY");
 
 /// Prints an error on standard error, one line per line of the message, with control
 /// characters shown escaped (a typed ESC or CR must not retitle or clear the terminal).
@@ -141,9 +155,19 @@ struct eval_options {
 cli::table eval_table(const eval_options& o) {
     const auto amplitudes = parse_amplitudes(o.theta0);
     std::vector<int> orders;
-    for (const auto& text : o.orders) orders.push_back(parse_order(text));
+    for (const auto& text : list_items(o.orders)) {
+        const int n = parse_order(text);
+        // A repeated order is one column.
+        if (std::find(orders.begin(), orders.end(), n) == orders.end()) orders.push_back(n);
+    }
     std::vector<method_choice> methods;
-    for (const auto& text : o.methods) methods.push_back(parse_method_option("--method", text));
+    for (const auto& text : list_items(o.methods)) {
+        if (text.empty()) throw usage_error("--method: empty value; see 'list' for the methods");
+        const auto m = parse_method_option("--method", text);
+        if (std::none_of(methods.begin(), methods.end(), [&](const method_choice& c) { return c.text() == m.text(); })) {
+            methods.push_back(m);
+        }
+    }
     cli::table t;
     for (const auto& c : cli::eval_columns()) t.columns.emplace_back(c.name);
     for (int n : orders) t.columns.push_back("period_order" + std::to_string(n));
@@ -646,19 +670,17 @@ int main(int argc, char** argv) {
         "eval", "Print periods T/T0 and Fourier coefficients, exact and approximate, per amplitude.");
     eval->add_option("--theta0", ev.theta0, "Amplitudes, a comma-separated LIST of angles")
         ->required()
-        ->type_name("LIST");
+        ->type_name("LIST")->check(non_empty);
     eval->add_option("--order", ev.orders,
                      "Add a column period_orderN for the iteration to order N (0.." +
                          std::to_string(max_order) + "); repeatable")
         ->type_name("N")
-        ->take_all()
-        ->delimiter(',');
+        ->take_all();
     eval->add_option("--method", ev.methods,
                      "Add a column period_NAME for any method of 'list', e.g. kidd-fogg, agm:2, series:3; "
                      "repeatable")
         ->type_name("NAME")
-        ->take_all()
-        ->delimiter(',');
+        ->take_all();
     eval->add_option("--length", ev.length, "Pendulum length in metres: adds T_s, the exact period in seconds")
         ->type_name("L");
     eval->add_option("--g", ev.g, "Gravity in m/s^2 for --length (default 9.80665)")->type_name("G");
@@ -675,7 +697,7 @@ int main(int argc, char** argv) {
     trajectory_options tr;
     auto* traj = app.add_subcommand(
         "trajectory", "Print theta(t) for one amplitude, exact or approximate, at times t/T.");
-    traj->add_option("--theta0", tr.theta0, "Amplitude, one angle")->required()->type_name("ANGLE");
+    traj->add_option("--theta0", tr.theta0, "Amplitude, one angle")->required()->type_name("ANGLE")->check(non_empty);
     traj->add_option("--method", tr.method,
                      "A method with a law of motion: exact (default), harmonic, lowest, first, second, "
                      "polynomial, or order:N (or order with --order N); see 'list'")
@@ -684,7 +706,7 @@ int main(int argc, char** argv) {
                                                                 std::to_string(max_order) + ")")
                           ->type_name("N");
     traj->add_option("--at", tr.at, "Times t/T, a comma-separated list (T is the exact period)")
-        ->type_name("LIST");
+        ->type_name("LIST")->check(non_empty);
     traj->add_option("--samples", tr.samples, "Number of equally spaced times from 0 to --periods")
         ->type_name("N");
     auto* periods_opt =
@@ -703,24 +725,24 @@ int main(int argc, char** argv) {
     auto* render = app.add_subcommand("render", "Draw figures (built-in or spec files) into files: " + format_list() + ".");
     render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), or spec files NAME.toml")->type_name("ID");
     render->add_flag("--all", ro.all, "Render every built-in still figure (and the figures given with it); animations are rendered by name");
-    render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR");
+    render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR")->check(non_empty);
     render->add_option("-f,--formats", ro.formats, "Comma-separated formats (default: pdf,png): " + format_help())
-        ->type_name("LIST");
+        ->type_name("LIST")->check(non_empty);
     render->add_option("--theme", ro.theme, figures::theme_help() + "; default paper, slides for animations")
-        ->type_name("NAME");
+        ->type_name("NAME")->check(non_empty);
     render->add_option("--set", ro.sets, "KEY=VALUE of a style file on top of the theme, e.g. tick_font_pt=9; "
                                          "repeatable ('show --theme paper' lists the keys)")
-        ->type_name("KEY=VALUE");
+        ->type_name("KEY=VALUE")->check(non_empty);
     render->add_option("--dpi", ro.dpi, "PNG resolution in dots per inch, 10..2400 (default: the theme's, 300 for "
                                         "paper)")
         ->type_name("N");
     render->add_option("--theta0", ro.theta0, "Amplitudes of the trajectory figures, a comma-separated LIST")
-        ->type_name("LIST");
+        ->type_name("LIST")->check(non_empty);
     render->add_option("--frames", ro.frames, "Animations: only frames A..B (from 1; A.. or ..B for the rest)")
-        ->type_name("A..B");
+        ->type_name("A..B")->check(non_empty);
     render->add_option("--at", ro.at, "Animations: one frame at time t/T (T the exact period of the first "
                                       "amplitude), in every format")
-        ->type_name("T");
+        ->type_name("T")->check(non_empty);
     render->add_flag("--paper-files", ro.paper_files,
                      "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
     render->footer(std::string("\n") + angle_help +
@@ -753,7 +775,7 @@ int main(int argc, char** argv) {
     show->add_option("id", show_id, "Figure id or alias (see 'list')")->type_name("ID");
     show->add_option("--theme", show_theme, "Print this built-in theme's style file instead: " +
                                                 figures::theme_names())
-        ->type_name("NAME");
+        ->type_name("NAME")->check(non_empty);
     show->footer("\nThe spec is TOML: [figure], an optional [pendulum], and one [[panel]] per panel. Edit it and "
                  "render it with 'render FILE.toml'.\n\nExample:\n"
                  "  pendulum-figures show fig2 > my-figure.toml\n  pendulum-figures render my-figure.toml -f png\n"
@@ -766,20 +788,20 @@ int main(int argc, char** argv) {
         ->required()
         ->type_name("KIND");
     plot_cmd->add_option("--theta0", po.theta0, "Amplitudes, a comma-separated LIST (one for trajectory)")
-        ->type_name("LIST");
+        ->type_name("LIST")->check(non_empty);
     plot_cmd->add_option("--methods", po.methods, "Methods, a comma-separated LIST (see 'list')")->type_name("LIST");
     plot_cmd->add_option("--range", po.range, "x range a,b: times, or amplitudes as angles")->type_name("A,B");
     plot_cmd->add_option("--time", po.time, "Time axis of a trajectory: t/T (default) or t/T0")->type_name("UNIT");
     plot_cmd->add_option("--harmonic", po.harmonic, "Coefficient plots: the harmonic 2k+1 (default 1)")
         ->type_name("N");
     plot_cmd->add_option("--y", po.y, "Period plots: value (default), error-percent or error-log")->type_name("AXIS");
-    plot_cmd->add_option("--name", po.name, "File name without extension (default: the kind)")->type_name("NAME");
-    plot_cmd->add_option("-o,--output-dir", po.dir, "Existing directory for the files (default: .)")->type_name("DIR");
+    plot_cmd->add_option("--name", po.name, "File name without extension (default: the kind)")->type_name("NAME")->check(non_empty);
+    plot_cmd->add_option("-o,--output-dir", po.dir, "Existing directory for the files (default: .)")->type_name("DIR")->check(non_empty);
     plot_cmd->add_option("-f,--formats", po.formats, "Comma-separated formats: " + format_list() + " (default: pdf,png)")
-        ->type_name("LIST");
-    plot_cmd->add_option("--theme", po.theme, figures::theme_help() + "; default paper")->type_name("NAME");
+        ->type_name("LIST")->check(non_empty);
+    plot_cmd->add_option("--theme", po.theme, figures::theme_help() + "; default paper")->type_name("NAME")->check(non_empty);
     plot_cmd->add_option("--set", po.sets, "KEY=VALUE of a style file on top of the theme; repeatable")
-        ->type_name("KEY=VALUE");
+        ->type_name("KEY=VALUE")->check(non_empty);
     plot_cmd->add_option("--dpi", po.dpi, "PNG resolution in dots per inch, 10..2400 (default: the theme's)")
         ->type_name("N");
     plot_cmd->footer(std::string("\n") + angle_help +
@@ -794,9 +816,9 @@ int main(int argc, char** argv) {
     std::string data_theta0;
     auto* data = app.add_subcommand("data", "Print the data of a figure as CSV: panel,series,x,y.");
     data->add_option("id", data_id, "Figure id or alias (see 'list')")->required()->type_name("ID");
-    data->add_option("-o,--output", data_file, "Write to FILE instead of standard output")->type_name("FILE");
+    data->add_option("-o,--output", data_file, "Write to FILE instead of standard output")->type_name("FILE")->check(non_empty);
     data->add_option("--theta0", data_theta0, "Amplitudes of a trajectory figure, a comma-separated LIST")
-        ->type_name("LIST");
+        ->type_name("LIST")->check(non_empty);
     data->footer("\nOne row per plotted point; panels are a, b, c, ... as in the paper's captions.\n\n"
                  "Example:\n  pendulum-figures data period -o period.csv");
 
@@ -819,6 +841,15 @@ int main(int argc, char** argv) {
         } else if (*list) {
             out << (list_markdown_flag ? list_markdown() : list_text());
         } else if (*data) {
+            if (!data_file.empty()) {
+                // Where the file goes is checked before the work, as render checks its directory.
+                std::error_code ec;
+                if (std::filesystem::is_directory(data_file, ec)) {
+                    throw usage_error("--output '" + data_file + "' is a directory; give a file name");
+                }
+                const auto parent = std::filesystem::path(data_file).parent_path();
+                if (!parent.empty()) check_output_dir(parent.string());
+            }
             const std::string csv = figure_data(data_id, data_theta0);
             if (!data_file.empty()) {
                 plot::write_atomically(data_file, csv);

@@ -129,3 +129,20 @@ TEST(Hardening, EmptyValuesAndOrdersAreReported) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Hardening, HugeRastersAreRefusedBeforeAnyWork) {
+    const auto dir = temp_dir("huge");
+    auto r = run_cli("render --all -f pdf,png --dpi 2400 --theme slides -o '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("24000 x 13500 pixels is too large"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--dpi 1333 is the most"), std::string::npos) << r.err;
+    EXPECT_TRUE(files_in(dir).empty());  // not even the PDFs
+    r = run_cli("render swing -f gif --dpi 2400 -o '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(files_in(dir).empty());
+    fs::remove_all(dir);
+}
+
+}  // namespace

@@ -429,6 +429,20 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
             throw usage_error(std::string("--at: ") + e.what());
         }
     }
+    // Rasters too large for Cairo or for memory are refused before any work.
+    for (const auto* e : chosen) {
+        const bool moving = e->spec.animation.has_value();
+        const plot::theme& th = moving ? moving_theme : theme;
+        figures::spec_overrides grid{build.amplitudes, th.panel_width_cm, th.panel_aspect};
+        for (const auto& f : formats) {
+            if (f != "png" && f != "gif") continue;
+            try {
+                plot::check_raster_size(figures::figure_grid(e->spec, grid), th, moving ? moving_dpi : dpi);
+            } catch (const std::invalid_argument& err) {
+                throw usage_error(e->id + "." + f + ": " + err.what());
+            }
+        }
+    }
     for (const auto* e : animations) {
         try {
             const auto plan = figures::plan_animation(*e, build);
@@ -894,6 +908,9 @@ int main(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
         report_error(e.what());
         return 2;
+    } catch (const std::bad_alloc&) {
+        report_error("out of memory; a lower --dpi or fewer figures at once need less");
+        return 1;
     } catch (const std::exception& e) {
         report_error(e.what());
         return 1;

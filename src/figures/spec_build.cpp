@@ -666,16 +666,21 @@ std::string typeset_angle(std::string_view text) {
     return out;
 }
 
-plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrides) {
-    const auto panels = panels_with(spec, overrides);
-    if (panels.empty()) throw std::invalid_argument("figure '" + spec.id + "' has no panels");
+plot::figure figure_grid(const figure_spec& spec, const spec_overrides& overrides) {
+    const int n = static_cast<int>(panels_with(spec, overrides).size());
+    if (n == 0) throw std::invalid_argument("figure '" + spec.id + "' has no panels");
     plot::figure f;
-    const int n = static_cast<int>(panels.size());
     f.cols = std::min(spec.columns.value_or(3), n);
     f.rows = (n + f.cols - 1) / f.cols;
     f.panel_width_cm = spec.panel_width_cm.value_or(overrides.panel_width_cm);
     f.panel_aspect = spec.panel_aspect.value_or(overrides.panel_aspect);
     f.shared_legend = spec.legend == legend_mode::first;
+    return f;
+}
+
+plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrides) {
+    const auto panels = panels_with(spec, overrides);
+    plot::figure f = figure_grid(spec, overrides);
     const context c{spec, f.panel_width_cm, overrides.animated};
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const auto& p = panels[i];

@@ -22,6 +22,9 @@ struct spec_overrides {
 /// and the amplitude lists of phase, convergence and spectrum panels replaced.
 std::vector<panel_spec> panels_with(const figure_spec& spec, const spec_overrides& overrides);
 
+/// The figure's grid and sizes, without its panels: enough to know its page size.
+plot::figure figure_grid(const figure_spec& spec, const spec_overrides& overrides = {});
+
 /// The figure a spec describes, its data computed by the core library.
 plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrides = {});
 

@@ -27,6 +27,7 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
 }  // namespace
 
 std::pair<int, int> pixel_size(const figure& fig, const theme& th, double dpi) {
+    check_raster_size(fig, th, dpi);
     const page_size size = figure_size(fig, th);
     const int width = static_cast<int>(std::lround(size.width_pt * dpi / 72.0));
     const int height = static_cast<int>(std::lround(size.height_pt * dpi / 72.0));

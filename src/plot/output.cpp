@@ -171,14 +171,11 @@ bool encode_png(png_sink* sink, png_bytepp rows, png_uint_32 width, png_uint_32 
 }
 
 std::string render_png(const figure& fig, const theme& th, double dpi) {
+    check_raster_size(fig, th, dpi);
     const page_size size = figure_size(fig, th);
     const double scale = dpi / 72.0;
     const int width = static_cast<int>(std::lround(size.width_pt * scale));
     const int height = static_cast<int>(std::lround(size.height_pt * scale));
-    if (width < 1 || height < 1 || static_cast<double>(width) * height > 4e8) {
-        throw std::invalid_argument("a PNG of " + std::to_string(width) + " x " + std::to_string(height) +
-                                    " pixels is out of range; choose another --dpi");
-    }
     surface_ptr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
     draw_on(surface.get(), fig, th, size, scale, "png");
     cairo_surface_flush(surface.get());
@@ -304,6 +301,22 @@ constexpr format_row formats[] = {
 }  // namespace
 
 std::span<const format_row> format_table() { return formats; }
+
+void check_raster_size(const figure& fig, const theme& th, double dpi) {
+    const page_size size = figure_size(fig, th);
+    const double w = std::round(size.width_pt * dpi / 72.0);
+    const double h = std::round(size.height_pt * dpi / 72.0);
+    if (w >= 1 && h >= 1 && w <= max_raster_side && h <= max_raster_side && w * h <= max_raster_pixels) return;
+    // The largest dpi that fits both limits.
+    const double by_side = max_raster_side * 72.0 / std::max(size.width_pt, size.height_pt);
+    const double by_area = std::sqrt(max_raster_pixels / (size.width_pt * size.height_pt)) * 72.0;
+    char fits[32];
+    std::snprintf(fits, sizeof fits, "%.0f", std::floor(std::min(by_side, by_area)));
+    throw std::invalid_argument("a raster of " + std::to_string(static_cast<long long>(w)) + " x " +
+                                std::to_string(static_cast<long long>(h)) + " pixels is too large (at most " +
+                                std::to_string(max_raster_side) + " a side and 100 million in all); --dpi " +
+                                fits + " is the most for this figure");
+}
 
 std::string pdf_creation_date() {
     const auto tm = source_date();

@@ -21,6 +21,15 @@ inline constexpr double min_dpi = 10;
 /// The largest accepted dpi.
 inline constexpr double max_dpi = 2400;
 
+/// The largest raster: Cairo's limit per side, and a bound on memory (4 bytes a pixel).
+inline constexpr int max_raster_side = 32767;
+/// The most pixels in one raster (400 MB as Cairo holds it).
+inline constexpr double max_raster_pixels = 1e8;
+
+/// Throws std::invalid_argument, naming the size and the largest dpi that fits, if the
+/// figure at dpi would be a raster larger than the limits above.
+void check_raster_size(const figure& fig, const theme& th, double dpi);
+
 /// One output format: its file extension, what it is, and the function that writes it.
 struct format_row {
     std::string_view name;         ///< file extension

@@ -21,6 +21,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -42,8 +44,34 @@ public:
 constexpr int max_samples = 10'000'000;
 constexpr double max_periods = 1e6;
 
+/// A list option's text: as given, or read from FILE for @FILE and from standard input
+/// for -, one item per line or comma-separated, with # comments.
+std::string list_source(const std::string& text, const std::string& option) {
+    if (text != "-" && (text.empty() || text[0] != '@')) return text;
+    std::string content;
+    if (text == "-") {
+        content.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+    } else {
+        std::ifstream in(text.substr(1), std::ios::binary);
+        if (!in) throw usage_error(option + " " + text + ": cannot read '" + text.substr(1) + "'");
+        content.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    std::string joined;
+    std::istringstream lines(content);
+    for (std::string line; std::getline(lines, line);) {
+        line = line.substr(0, line.find('#'));
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos) continue;
+        line = line.substr(first, line.find_last_not_of(" \t\r") - first + 1);
+        joined += (joined.empty() ? "" : ",") + line;
+    }
+    if (joined.empty()) throw usage_error(option + " " + text + ": no values");
+    return joined;
+}
+
 /// Amplitudes as typed and their values; figure titles show them as typed.
-std::vector<figures::amplitude> parse_amplitudes(const std::string& text) {
+std::vector<figures::amplitude> parse_amplitudes(const std::string& given) {
+    const std::string text = list_source(given, "--theta0");
     std::vector<figures::amplitude> values;
     for (const auto& item : cli::split_list(text)) {
         try {
@@ -267,6 +295,7 @@ struct render_options {
     std::optional<double> dpi;  // the theme's when not given
     std::string theta0;
     bool paper_files = false;
+    bool force = false;  // rewrite files that would not change
     std::string frames;  // a..b, 1-based, of an animation
     std::string at;      // t/T of one frame of an animation
 };
@@ -394,6 +423,31 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
         }
         build.amplitudes = parse_amplitudes(o.theta0);
     }
+    if (o.dir == "-") {
+        // One still figure in one format, to standard output.
+        if (chosen.size() != 1 || formats.size() != 1 || o.paper_files || chosen.front()->spec.animation) {
+            throw usage_error("-o - writes one still figure in one format to standard output");
+        }
+        figures::build_options one = build;
+        one.panel_width_cm = theme.panel_width_cm;
+        one.panel_aspect = theme.panel_aspect;
+        try {
+            plot::check_raster_size(figures::figure_grid(chosen.front()->spec, {build.amplitudes, theme.panel_width_cm,
+                                                                                 theme.panel_aspect}),
+                                    theme, dpi);
+        } catch (const std::invalid_argument& e) {
+            throw usage_error(e.what());
+        }
+        const std::string bytes = plot::render(figures::build(*chosen.front(), one), theme, formats.front(),
+                                               plot::output_options{dpi});
+        std::cout.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        std::cout.flush();
+        if (!std::cout) {
+            report_error("cannot write to standard output");
+            return 1;
+        }
+        return 0;
+    }
     check_output_dir(o.dir);
 
     std::vector<const figures::entry*> stills;
@@ -453,7 +507,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
     }
 
     try {
-        if (!jobs.empty()) figures::write_figures(jobs, build, theme, plot::output_options{dpi});
+        if (!jobs.empty()) figures::write_figures(jobs, build, theme, plot::output_options{dpi, o.force});
         for (const auto& m : moving) {
             for (const auto& f : formats) {
                 if (!at && figures::is_animation_format(f)) {
@@ -469,7 +523,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
                 const double w0_t = at ? *at * m.plan.reference_period : m.plan.time(m.frames.first);
                 const auto frame = figures::animation_frame(*m.entry, still, m.plan, figures::build(*m.entry, still), w0_t);
                 plot::save(frame, moving_theme, std::filesystem::path(o.dir) / (m.entry->id + "." + f),
-                           plot::output_options{moving_dpi});
+                           plot::output_options{moving_dpi, o.force});
             }
         }
     } catch (const std::exception& e) {
@@ -668,7 +722,13 @@ int main(int argc, char** argv) {
         "pendulum-figures: the simple pendulum solved exactly (Jacobi elliptic functions) and "
         "through the Fourier/Bessel approximants of R. Borghi, arXiv:1303.5023."};
     app.name("pendulum-figures");
-    app.set_version_flag("--version", std::string("pendulum-figures ") + "0.1.0");
+    // GNU style: name and version, then copyright and licence.
+    app.set_version_flag("--version", std::string("pendulum-figures ") + PENDULUM_VERSION +
+                                          "\nCopyright (C) 2026 the pendulum-figures authors.\n"
+                                          "License GPL-3.0-or-later: GNU GPL version 3 or later "
+                                          "<https://gnu.org/licenses/gpl.html>.\n"
+                                          "This is free software: you are free to change and redistribute it.\n"
+                                          "There is NO WARRANTY, to the extent permitted by law.");
     app.require_subcommand(1);
     app.footer(std::string("\n") + angle_help +
                "\n\nExamples:\n"
@@ -739,7 +799,8 @@ int main(int argc, char** argv) {
     auto* render = app.add_subcommand("render", "Draw figures (built-in or spec files) into files: " + format_list() + ".");
     render->add_option("ids", ro.ids, "Figure ids or aliases (see 'list'), or spec files NAME.toml")->type_name("ID");
     render->add_flag("--all", ro.all, "Render every built-in still figure (and the figures given with it); animations are rendered by name");
-    render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .)")->type_name("DIR")->check(non_empty);
+    render->add_option("-o,--output-dir", ro.dir, "Existing directory for the files (default: .); - writes one "
+                                                  "figure in one format to standard output")->type_name("DIR")->check(non_empty);
     render->add_option("-f,--formats", ro.formats, "Comma-separated formats (default: pdf,png): " + format_help())
         ->type_name("LIST")->check(non_empty);
     render->add_option("--theme", ro.theme, figures::theme_help() + "; default paper, slides for animations")
@@ -757,6 +818,8 @@ int main(int argc, char** argv) {
     render->add_option("--at", ro.at, "Animations: one frame at time t/T (T the exact period of the first "
                                       "amplitude), in every format")
         ->type_name("T")->check(non_empty);
+    render->add_flag("--force", ro.force, "Rewrite files that would not change (by default they are left alone, "
+                                          "so their time stays and make does not rebuild)");
     render->add_flag("--paper-files", ro.paper_files,
                      "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
     render->footer(std::string("\n") + angle_help +
@@ -830,7 +893,7 @@ int main(int argc, char** argv) {
     std::string data_theta0;
     auto* data = app.add_subcommand("data", "Print the data of a figure as CSV: panel,series,x,y.");
     data->add_option("id", data_id, "Figure id or alias (see 'list')")->required()->type_name("ID");
-    data->add_option("-o,--output", data_file, "Write to FILE instead of standard output")->type_name("FILE")->check(non_empty);
+    data->add_option("-o,--output", data_file, "Write to FILE instead of standard output (- is standard output)")->type_name("FILE")->check(non_empty);
     data->add_option("--theta0", data_theta0, "Amplitudes of a trajectory figure, a comma-separated LIST")
         ->type_name("LIST")->check(non_empty);
     data->footer("\nOne row per plotted point; panels are a, b, c, ... as in the paper's captions.\n\n"
@@ -855,6 +918,7 @@ int main(int argc, char** argv) {
         } else if (*list) {
             out << (list_markdown_flag ? list_markdown() : list_text());
         } else if (*data) {
+            if (data_file == "-") data_file.clear();  // standard output
             if (!data_file.empty()) {
                 // Where the file goes is checked before the work, as render checks its directory.
                 std::error_code ec;
@@ -898,6 +962,9 @@ int main(int argc, char** argv) {
             } else if (argv[1][0] != '-') {
                 message = std::string("unknown command '") + argv[1] +
                           "'; commands: eval, trajectory, list, show, render, plot, data (see --help)";
+            } else {
+                message = std::string("unknown option '") + argv[1] +
+                          "'; options before the command are --help and --version (see --help)";
             }
         }
         report_error(message);

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <ctime>
 #include <fcntl.h>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <regex>
@@ -347,10 +348,26 @@ std::string render(const figure& fig, const theme& th, std::string_view format, 
     return find_format(format).write(fig, th, options);
 }
 
+bool write_if_changed(const std::filesystem::path& path, const std::string& bytes) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) == bytes.size() && !ec) {
+        std::ifstream in(path, std::ios::binary);
+        std::string old(bytes.size(), '\0');
+        if (in.read(old.data(), static_cast<std::streamsize>(old.size())) && old == bytes) return false;
+    }
+    write_atomically(path, bytes);
+    return true;
+}
+
 void save(const figure& fig, const theme& th, const std::filesystem::path& path, const output_options& options) {
     std::string ext = path.extension().string();
     if (!ext.empty()) ext.erase(0, 1);
-    write_atomically(path, render(fig, th, ext, options));
+    const std::string bytes = render(fig, th, ext, options);
+    if (options.force) {
+        write_atomically(path, bytes);
+    } else {
+        write_if_changed(path, bytes);
+    }
 }
 
 }  // namespace plot

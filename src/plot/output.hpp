@@ -13,7 +13,8 @@ namespace plot {
 
 /// Options that apply when a figure is written.
 struct output_options {
-    double dpi = 300;  ///< raster resolution (PNG)
+    double dpi = 300;    ///< raster resolution (PNG)
+    bool force = false;  ///< rewrite a file even if it already holds the same bytes
 };
 
 /// The smallest and largest accepted --dpi.
@@ -61,7 +62,12 @@ std::string render(const figure& fig, const theme& th, std::string_view format, 
 /// file is either the old one or the complete new one. Throws std::runtime_error naming the path.
 void write_atomically(const std::filesystem::path& path, const std::string& bytes);
 
-/// Renders and writes the figure; the format is the path's extension.
+/// Writes bytes to path unless it is a regular file that already holds them (so its
+/// modification time stays, and make does not rebuild what depends on it); true if written.
+bool write_if_changed(const std::filesystem::path& path, const std::string& bytes);
+
+/// Renders and writes the figure; the format is the path's extension. A file that would not
+/// change is left alone unless options.force.
 void save(const figure& fig, const theme& th, const std::filesystem::path& path, const output_options& options);
 
 }  // namespace plot

@@ -1,8 +1,11 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # pendulum-figures: thin front end to CMake.
 #   make            build (installs missing Debian packages when run as root)
 #   make test       build and run every test
 #   make figures    build and write every figure into figures/
 #   make bench      run the benchmarks
+#   make install    install under PREFIX (default /usr/local), DESTDIR honoured
+#   make deb        build a Debian package
 #   make clean      remove the build directory
 
 BUILD ?= build
@@ -17,9 +20,11 @@ DEB_PACKAGES += libgtest-dev libbenchmark-dev
 DEB_PACKAGES += libtomlplusplus-dev libgif-dev
 # Beamer and animate, for the test that plays an animation's PDF pages.
 DEB_PACKAGES += texlive-latex-base texlive-latex-recommended texlive-latex-extra
+# The man page (help2man, checked with man), the Debian package (dpkg-dev), completion.
+DEB_PACKAGES += help2man man-db dpkg-dev bash-completion
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
 
-.PHONY: all deps build test bench figures update-baselines clean
+.PHONY: all deps build test bench figures update-baselines install deb clean
 
 all: build
 
@@ -65,6 +70,16 @@ update-baselines: build
 	mkdir -p tests/baselines/paper tests/baselines/slides
 	$(BUILD)/pendulum-figures render --all -o tests/baselines/paper -f png --dpi 100
 	$(BUILD)/pendulum-figures render --all -o tests/baselines/slides -f png --dpi 50 --theme slides
+
+# make install PREFIX=/usr/local DESTDIR=/tmp/stage: the tool, man page, completions,
+# examples and the core library (headers, CMake package, pkg-config file).
+PREFIX ?= /usr/local
+install: build
+	DESTDIR=$(DESTDIR) cmake --install $(BUILD) --prefix $(PREFIX)
+
+# make deb: build/pendulum-figures_VERSION_ARCH.deb
+deb: build
+	cd $(BUILD) && cpack -G DEB
 
 clean:
 	rm -rf $(BUILD)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Time per amplitude of the exact solution and of each approximant.
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"

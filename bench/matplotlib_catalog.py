@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The same work as `pendulum-figures render --all -f png,pdf --dpi 300`, done the usual
 way with numpy, scipy and matplotlib: the yardstick for `make bench`.
 

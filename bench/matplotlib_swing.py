@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The `swing` animation done the usual way, with matplotlib's FuncAnimation and its
 Pillow GIF writer: the yardstick for `make bench`.
 

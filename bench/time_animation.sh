@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The swing animation as a GIF (1280 x 720, 30 fps, three periods: 441 frames), timed and
 # measured against matplotlib's FuncAnimation and Pillow writer doing the same
 # (bench/matplotlib_swing.py), run by run in turn so that a busy machine slows both alike.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Whole-process timing of the figure catalog: every figure as PNG (300 dpi) and PDF, the
 # median of RUNS runs. When python3 has matplotlib and scipy, the same work done with them
 # (bench/matplotlib_catalog.py) is timed too, interleaved run by run so that a busy machine

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Writes OUT, a C++ fragment holding each TOML file of FILES (figure specs, themes) (a ;-list) as
 # {"stem", R"toml(...)toml"}, so that the built-in specs are compiled into the program.
 # FILES is |-separated, as a ;-list would be split on the command line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Decodes PNG files for image comparisons in tests: grey and RGB pixels, the frame box of
 // a plot, and an RMS comparison after matplotlib's compare_images.

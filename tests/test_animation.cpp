@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Animations: the frame plan, GIF, PDF pages and PNG sequences, one frame with --at, a
 // Beamer document that plays the PDF, and bad input.
 #include "figures/animation.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The built-in specs: every one reads and builds, and the paper's figures hold the data
 // the catalog computed before they became specs.
 #include "figures/builtin.hpp"

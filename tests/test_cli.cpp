@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the command line: angle expressions, output tables and every kind of bad input.
 #include "cli/angle.hpp"
 #include "cli/table.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Command-line conventions: --version, unknown options, - for standard output and input,
 // @FILE lists, and files left alone when they would not change.
 #include "process.hpp"

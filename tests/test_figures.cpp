@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the figure catalog and of the render, list and data commands: the figures hold
 // the right data, match the committed baseline images, and bad input touches no file.
 #include "figures/batch.hpp"

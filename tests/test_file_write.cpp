@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Output files: written whole into what the path names, a FIFO written through, a
 // symbolic link's target replaced, an existing file's mode kept, long names, leftovers.
 #include "plot/output.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The renderer's geometry: axis maps, segment clipping and polyline simplification.
 #include "plot/geometry.hpp"
 

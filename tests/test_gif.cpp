@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The GIF encoder: frames, delays, looping, palette mapping and reproducible bytes,
 // checked by decoding the file with giflib.
 #include "plot/gif.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile input: deep nesting, malformed numbers, control characters, a bad
 // SOURCE_DATE_EPOCH, an unwritable standard output, many panels, too many amplitudes.
 #include "cli/angle.hpp"

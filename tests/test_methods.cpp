@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The method table: names, N, dispatch to the core.
 #include "pendulum/amplitude.hpp"
 #include "pendulum/approximants.hpp"

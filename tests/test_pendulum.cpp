@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the core library against 80-digit mpmath references (tests/data), identities,
 // limits, an ODE integration, the paper's own claims, and bad input.
 #include "pendulum/amplitude.hpp"

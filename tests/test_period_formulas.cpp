@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The period formulas of the literature against 50-digit references
 // (tests/data/make_period_formulas.py).
 #include "pendulum/amplitude.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Angular velocities for the phase plane, against 60-digit references (tests/data/make_phase.py).
 #include "pendulum/amplitude.hpp"
 #include "pendulum/approximants.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the plot layer: tick location and labels, output formats, reproducible bytes,
 // atomic writes, and errors.
 #include "plot/figure.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Figure specs: what a good spec reads as, and one message per problem for bad ones.
 #include "figures/spec.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The command line with figure specs, themes and the method table: show, render and data
 // of spec files, plot, list, eval --method, trajectory --method NAME:N.
 #include "process.hpp"

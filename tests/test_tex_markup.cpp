@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // TeX math in labels, turned into Pango markup and plain text.
 #include "plot/tex_markup.hpp"
 

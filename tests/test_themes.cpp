@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Themes are style files: the built-in ones, a user's file on a base, --set, and bad files.
 #include "figures/spec.hpp"
 #include "figures/themes.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // pendulum-figures: the command line. Parsing and validation only; the work is in the libraries.
 #include "cli/angle.hpp"
 #include "cli/eval_columns.hpp"
@@ -730,6 +731,7 @@ int main(int argc, char** argv) {
                                           "This is free software: you are free to change and redistribute it.\n"
                                           "There is NO WARRANTY, to the extent permitted by law.");
     app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "Print the help of every command and exit");
     app.footer(std::string("\n") + angle_help +
                "\n\nExamples:\n"
                "  pendulum-figures eval --theta0 pi/2\n"
@@ -737,7 +739,9 @@ int main(int argc, char** argv) {
                "  pendulum-figures trajectory --theta0 162deg --method first --samples 101\n"
                "  pendulum-figures list\n"
                "  pendulum-figures render --all -o figures -f pdf,png\n"
-               "\nRun 'pendulum-figures COMMAND --help' for the options of each command.");
+               "\nRun 'pendulum-figures COMMAND --help' for the options of each command, --help-all for all.\n"
+               "\nExit status: 0 on success; 2 for bad input (an option, a value, a spec or style file, "
+               "SOURCE_DATE_EPOCH), with nothing written; 1 when writing or the work itself fails.");
 
     eval_options ev;
     auto* eval = app.add_subcommand(

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Writes period_series_coefficients.inc: the Taylor coefficients of T/T0 in theta0^2.
 
 T/T0 = sum_n a_n k^(2n), a_n = ((2n)! / (4^n (n!)^2))^2, k^2 = sin^2(theta0/2)

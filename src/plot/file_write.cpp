@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing output files: whole or not at all, into what the path names.
 #include "plot/output.hpp"
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Reference values of the period formulas of the literature (period_formulas.csv).
 
 Each formula is evaluated with mpmath at 50 digits at the same doubles as the C++ code.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Reference angular velocities theta'/w0 of the exact pendulum (phase.csv).
 
 theta'/w0 is the numerical derivative (mpmath.diff, 60 digits) of the law of motion

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """High-precision reference values for the pendulum-figures tests.
 
 Every value is computed with mpmath at 80 significant digits from the double

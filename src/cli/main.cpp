@@ -45,45 +45,62 @@ public:
 constexpr int max_samples = 10'000'000;
 constexpr double max_periods = 1e6;
 
-/// A list option's text: as given, or read from FILE for @FILE and from standard input
-/// for -, one item per line or comma-separated, with # comments.
-std::string list_source(const std::string& text, const std::string& option) {
-    if (text != "-" && (text.empty() || text[0] != '@')) return text;
-    std::string content;
-    if (text == "-") {
-        content.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-    } else {
-        std::ifstream in(text.substr(1), std::ios::binary);
-        if (!in) throw usage_error(option + " " + text + ": cannot read '" + text.substr(1) + "'");
-        content.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+/// Calls take(item) for each item of a list option: its text, or the lines (each
+/// comma-separated, # comments) of FILE for @FILE and of standard input for -, read as
+/// they come, so that a million amplitudes need no more memory than their values.
+template <class Take>
+void for_each_item(const std::string& text, const std::string& option, Take take) {
+    if (text != "-" && (text.empty() || text[0] != '@')) {
+        for (const auto& item : cli::split_list(text)) take(item);
+        return;
     }
-    std::string joined;
-    std::istringstream lines(content);
-    for (std::string line; std::getline(lines, line);) {
+    std::ifstream file;
+    if (text != "-") {
+        file.open(text.substr(1), std::ios::binary);
+        if (!file) throw usage_error(option + " " + text + ": cannot read '" + text.substr(1) + "'");
+    }
+    std::istream& in = text == "-" ? std::cin : file;
+    bool any = false;
+    for (std::string line; std::getline(in, line);) {
         line = line.substr(0, line.find('#'));
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos) continue;
-        line = line.substr(first, line.find_last_not_of(" \t\r") - first + 1);
-        joined += (joined.empty() ? "" : ",") + line;
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        for (auto& item : cli::split_list(line)) {
+            const auto first = item.find_first_not_of(" \t\r");
+            take(first == std::string::npos ? std::string()
+                                             : item.substr(first, item.find_last_not_of(" \t\r") - first + 1));
+            any = true;
+        }
     }
-    if (joined.empty()) throw usage_error(option + " " + text + ": no values");
-    return joined;
+    if (!any) throw usage_error(option + " " + text + ": no values");
 }
 
-/// Amplitudes as typed and their values; figure titles show them as typed.
-std::vector<figures::amplitude> parse_amplitudes(const std::string& given) {
-    const std::string text = list_source(given, "--theta0");
-    std::vector<figures::amplitude> values;
-    for (const auto& item : cli::split_list(text)) {
+/// One --theta0 item, checked; take(text, value) receives it.
+template <class Take>
+void for_each_amplitude(const std::string& given, Take take) {
+    for_each_item(given, "--theta0", [&](const std::string& item) {
+        double v = 0;
         try {
-            const double v = cli::parse_angle(item);
+            v = cli::parse_angle(item);
             check_amplitude(v);
-            values.push_back({item, v});
         } catch (const std::invalid_argument& e) {
             const std::string shown = item.size() <= 80 ? item : item.substr(0, 40) + "..." + item.substr(item.size() - 20);
             throw usage_error("--theta0 '" + shown + "': " + e.what());
         }
-    }
+        take(item, v);
+    });
+}
+
+/// The values of --theta0, checked (a million of them take 8 MB).
+std::vector<double> parse_amplitude_values(const std::string& given) {
+    std::vector<double> values;
+    for_each_amplitude(given, [&](const std::string&, double v) { values.push_back(v); });
+    return values;
+}
+
+/// Amplitudes as typed and their values; figure titles show them as typed.
+std::vector<figures::amplitude> parse_amplitudes(const std::string& given) {
+    std::vector<figures::amplitude> values;
+    for_each_amplitude(given, [&](const std::string& item, double v) { values.push_back({item, v}); });
     return values;
 }
 
@@ -181,8 +198,11 @@ struct eval_options {
     double g = 9.80665;
 };
 
-cli::table eval_table(const eval_options& o) {
-    const auto amplitudes = parse_amplitudes(o.theta0);
+/// Writes eval's table row by row: every input is checked first (nothing is written for
+/// bad input), then each amplitude's row goes out as it is computed.
+void eval_stream(std::ostream& out, const eval_options& o) {
+    const auto format = cli::parse_table_format(o.format);
+    const auto amplitudes = parse_amplitude_values(o.theta0);
     std::vector<int> orders;
     for (const auto& text : list_items(o.orders)) {
         const int n = parse_order(text);
@@ -197,10 +217,10 @@ cli::table eval_table(const eval_options& o) {
             methods.push_back(m);
         }
     }
-    cli::table t;
-    for (const auto& c : cli::eval_columns()) t.columns.emplace_back(c.name);
-    for (int n : orders) t.columns.push_back("period_order" + std::to_string(n));
-    for (const auto& m : methods) t.columns.push_back("period_" + m.text());
+    std::vector<std::string> columns;
+    for (const auto& c : cli::eval_columns()) columns.emplace_back(c.name);
+    for (int n : orders) columns.push_back("period_order" + std::to_string(n));
+    for (const auto& m : methods) columns.push_back("period_" + m.text());
     double small_period_s = 0;
     if (o.length) {
         if (!(*o.length > 0 && *o.length <= 1e6)) {
@@ -208,18 +228,19 @@ cli::table eval_table(const eval_options& o) {
         }
         if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
         small_period_s = 2 * std::acos(-1.0) * std::sqrt(*o.length / o.g);
-        t.columns.push_back("T_s");
+        columns.push_back("T_s");
     }
-    for (const auto& a : amplitudes) {
-        const cli::eval_point point(a.value);
+    cli::table_writer writer(out, columns, format);
+    for (const double value : amplitudes) {
+        const cli::eval_point point(value);
         std::vector<double> row;
         for (const auto& c : cli::eval_columns()) row.push_back(c.value(point));
-        for (int n : orders) row.push_back(iterated(a.value, n).period_ratio());
-        for (const auto& m : methods) row.push_back(method_period(m, a.value));
+        for (int n : orders) row.push_back(iterated(value, n).period_ratio());
+        for (const auto& m : methods) row.push_back(method_period(m, value));
         if (o.length) row.push_back(small_period_s * point.exact.period_ratio());
-        t.rows.push_back(std::move(row));
+        writer.row(row);
     }
-    return t;
+    writer.finish();
 }
 
 struct trajectory_options {
@@ -232,7 +253,9 @@ struct trajectory_options {
     std::string format = "csv";
 };
 
-cli::table trajectory_table(const trajectory_options& o, bool order_given, bool periods_given) {
+/// Writes trajectory's table row by row; every input is checked before the first row.
+void trajectory_stream(std::ostream& out, const trajectory_options& o, bool order_given, bool periods_given) {
+    const auto format = cli::parse_table_format(o.format);
     const auto amplitudes = parse_amplitudes(o.theta0);
     if (amplitudes.size() != 1) throw usage_error("--theta0 takes one amplitude for trajectory");
     const double theta0 = amplitudes.front().value;
@@ -269,21 +292,24 @@ cli::table trajectory_table(const trajectory_options& o, bool order_given, bool 
             throw usage_error("--periods " + format_double(o.periods) +
                               ": must be greater than 0 and at most " + format_double(max_periods));
         }
-        for (int i = 0; i < o.samples; ++i) times.push_back(o.periods * i / (o.samples - 1));
     }
 
     const exact_solution exact(theta0);
     const bool is_exact = method.row->name == "exact";
     const fourier_solution approx = is_exact ? fourier_solution{} : method_solution(method, theta0);
 
-    cli::table t;
-    t.columns = {"t_over_T", "theta"};
     const double period = 4.0 * exact.quarter_period();  // exact T in units of 1/w0
-    for (double s : times) {
-        const double theta = is_exact ? exact.theta_at_fraction(s) : approx.theta(s * period);
-        t.rows.push_back({s, theta});
+    cli::table_writer writer(out, {"t_over_T", "theta"}, format);
+    const auto write = [&](double s) {
+        writer.row({s, is_exact ? exact.theta_at_fraction(s) : approx.theta(s * period)});
+    };
+    if (o.at.empty()) {
+        // Sample times computed as they are written: ten million rows need no memory.
+        for (int i = 0; i < o.samples; ++i) write(o.periods * i / (o.samples - 1));
+    } else {
+        for (double s : times) write(s);
     }
-    return t;
+    writer.finish();
 }
 
 struct render_options {
@@ -939,11 +965,9 @@ int main(int argc, char** argv) {
             }
             out << csv;
         } else if (*eval) {
-            cli::write_table(out, eval_table(ev), cli::parse_table_format(ev.format));
+            eval_stream(std::cout, ev);
         } else if (*traj) {
-            const auto format = cli::parse_table_format(tr.format);
-            cli::write_table(out, trajectory_table(tr, order_opt->count() > 0, periods_opt->count() > 0),
-                             format);
+            trajectory_stream(std::cout, tr, order_opt->count() > 0, periods_opt->count() > 0);
         }
         std::cout << out.str() << std::flush;
         if (!std::cout) {

@@ -14,27 +14,39 @@ table_format parse_table_format(std::string_view text) {
     throw std::invalid_argument("unknown format '" + std::string(text) + "'; use csv or json");
 }
 
+table_writer::table_writer(std::ostream& out, std::vector<std::string> columns, table_format format)
+    : out_(out), columns_(std::move(columns)), format_(format) {
+    if (format_ == table_format::csv) {
+        for (std::size_t i = 0; i < columns_.size(); ++i) out_ << (i ? "," : "") << columns_[i];
+        out_ << '\n';
+    } else {
+        out_ << "[";
+    }
+}
+
+void table_writer::row(const std::vector<double>& values) {
+    if (format_ == table_format::csv) {
+        for (std::size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << format_double(values[i]);
+        out_ << '\n';
+    } else {
+        out_ << (rows_ ? ",\n " : "\n ") << "{";
+        for (std::size_t i = 0; i < columns_.size() && i < values.size(); ++i) {
+            const double v = values[i];
+            out_ << (i ? ", " : "") << '"' << columns_[i] << "\": " << (std::isfinite(v) ? format_double(v) : "null");
+        }
+        out_ << "}";
+    }
+    ++rows_;
+}
+
+void table_writer::finish() {
+    if (format_ == table_format::json) out_ << (rows_ ? "\n]\n" : "]\n");
+}
+
 void write_table(std::ostream& out, const table& t, table_format format) {
-    if (format == table_format::csv) {
-        for (std::size_t i = 0; i < t.columns.size(); ++i) out << (i ? "," : "") << t.columns[i];
-        out << '\n';
-        for (const auto& row : t.rows) {
-            for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << format_double(row[i]);
-            out << '\n';
-        }
-        return;
-    }
-    out << "[";
-    for (std::size_t r = 0; r < t.rows.size(); ++r) {
-        out << (r ? ",\n " : "\n ") << "{";
-        for (std::size_t i = 0; i < t.columns.size(); ++i) {
-            const double v = t.rows[r][i];
-            out << (i ? ", " : "") << '"' << t.columns[i] << "\": "
-                << (std::isfinite(v) ? format_double(v) : "null");
-        }
-        out << "}";
-    }
-    out << (t.rows.empty() ? "]\n" : "\n]\n");
+    table_writer w(out, t.columns, format);
+    for (const auto& row : t.rows) w.row(row);
+    w.finish();
 }
 
 }  // namespace pendulum::cli

@@ -20,6 +20,23 @@ enum class table_format { csv, json };
 /// Parses "csv" or "json"; throws std::invalid_argument naming the text otherwise.
 table_format parse_table_format(std::string_view text);
 
+/// Writes a table row by row as it is computed, so that long tables need no memory.
+class table_writer {
+public:
+    /// Writes the header (CSV) or the opening bracket (JSON).
+    table_writer(std::ostream& out, std::vector<std::string> columns, table_format format);
+    /// Writes one row, one value per column.
+    void row(const std::vector<double>& values);
+    /// Ends the table (JSON's closing bracket).
+    void finish();
+
+private:
+    std::ostream& out_;
+    std::vector<std::string> columns_;
+    table_format format_;
+    std::size_t rows_ = 0;
+};
+
 /// Writes the table: CSV with a header line, or JSON as an array of objects. Numbers use
 /// the shortest form that reads back to the same double; NaN is written as nan / null.
 void write_table(std::ostream& out, const table& t, table_format format);

@@ -6,6 +6,7 @@
 #   make bench      run the benchmarks
 #   make install    install under PREFIX (default /usr/local), DESTDIR honoured
 #   make deb        build a Debian package
+#   make fuzz       run the fuzzers (FUZZ_SECONDS each)
 #   make clean      remove the build directory
 
 BUILD ?= build
@@ -22,9 +23,11 @@ DEB_PACKAGES += libtomlplusplus-dev libgif-dev
 DEB_PACKAGES += texlive-latex-base texlive-latex-recommended texlive-latex-extra
 # The man page (help2man, checked with man), the Debian package (dpkg-dev), completion.
 DEB_PACKAGES += help2man man-db dpkg-dev bash-completion
+# clang and its sanitizer runtimes: the sanitizer run of make test, and make fuzz.
+DEB_PACKAGES += clang libclang-rt-14-dev
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
 
-.PHONY: all deps build test bench figures update-baselines install deb clean
+.PHONY: all deps build test bench figures update-baselines install deb fuzz clean
 
 all: build
 
@@ -76,6 +79,21 @@ update-baselines: build
 PREFIX ?= /usr/local
 install: build
 	DESTDIR=$(DESTDIR) cmake --install $(BUILD) --prefix $(PREFIX)
+
+# make fuzz: libFuzzer harnesses for the angle parser and the spec reader (clang, ASan,
+# UBSan), each run for FUZZ_SECONDS on a copy of its seed corpus in fuzz/corpus.
+FUZZ_SECONDS ?= 60
+FUZZ_FLAGS := -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -Isrc
+fuzz: deps
+	mkdir -p build-fuzz
+	clang++ $(FUZZ_FLAGS) fuzz/angle_fuzzer.cpp src/cli/angle.cpp -o build-fuzz/angle_fuzzer
+	clang++ $(FUZZ_FLAGS) fuzz/spec_fuzzer.cpp src/figures/spec.cpp src/figures/toml_reader.cpp src/cli/angle.cpp \
+	  src/pendulum/*.cpp $$(pkg-config --cflags --libs tomlplusplus gsl) -o build-fuzz/spec_fuzzer
+	rm -rf build-fuzz/corpus-angle build-fuzz/corpus-spec
+	cp -r fuzz/corpus/angle build-fuzz/corpus-angle
+	cp -r fuzz/corpus/spec build-fuzz/corpus-spec
+	build-fuzz/angle_fuzzer -max_total_time=$(FUZZ_SECONDS) -artifact_prefix=build-fuzz/ build-fuzz/corpus-angle
+	build-fuzz/spec_fuzzer -max_total_time=$(FUZZ_SECONDS) -artifact_prefix=build-fuzz/ build-fuzz/corpus-spec
 
 # make deb: build/pendulum-figures_VERSION_ARCH.deb
 deb: build

@@ -2,6 +2,7 @@
 # pendulum-figures: thin front end to CMake.
 #   make            build (installs missing Debian packages when run as root)
 #   make test       build and run every test
+#   make check-sanitizers  the tests again under ASan and UBSan (run by .ci/run)
 #   make figures    build and write every figure into figures/
 #   make bench      run the benchmarks
 #   make install    install under PREFIX (default /usr/local), DESTDIR honoured
@@ -27,7 +28,7 @@ DEB_PACKAGES += help2man man-db dpkg-dev bash-completion
 DEB_PACKAGES += clang libclang-rt-14-dev
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
 
-.PHONY: all deps build test bench figures update-baselines install deb fuzz clean
+.PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz clean
 
 all: build
 
@@ -55,6 +56,18 @@ build: deps
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+# The whole suite again under AddressSanitizer and UndefinedBehaviorSanitizer, in a second
+# build directory (a slow build: .ci/run runs it after make test). Only fontconfig's
+# process-lifetime allocations are suppressed; the install tests, which link the installed
+# (instrumented) library into an uninstrumented program, are left out.
+SANITIZE := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+check-sanitizers: deps
+	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_BUILD_BENCH=OFF \
+	  -DCMAKE_CXX_FLAGS="$(SANITIZE) -O1" -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE)"
+	cmake --build build-asan -j $(JOBS)
+	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -E '^Install\.'
 
 bench: build
 	$(BUILD)/bench_pendulum --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \

@@ -336,3 +336,21 @@ TEST(BadInput, LibraryThrowsNamingTheValue) {
         EXPECT_STREQ(e.what(), "theta0 must be strictly between 0 and pi, got -0.5");
     }
 }
+
+TEST(SmallAmplitudes, EveryColumnFromTheSeries) {
+    // Below 1e-8 the series is exact to double: c1 = theta0 (1 + theta0^2/192), c3 = -theta0^3/192,
+    // c5 = theta0^5/20480, T/T0 = 1; a Bessel value below the smallest double is 0, not an error.
+    for (double t : {1e-9, 1e-38, 1e-100, 1e-300}) {
+        const pendulum::exact_solution e(t);
+        EXPECT_EQ(e.period_ratio(), 1.0) << t;
+        EXPECT_NEAR(e.coefficient(0) / t, 1.0, 1e-16) << t;
+        const double c3 = -t * t * t / 192;
+        if (c3 != 0) EXPECT_NEAR(e.coefficient(1) / c3, 1.0, 1e-15) << t;
+        const double c5 = std::pow(t, 5) / 20480;
+        if (c5 > 1e-300) EXPECT_NEAR(e.coefficient(2) / c5, 1.0, 1e-15) << t;
+        EXPECT_EQ(pendulum::lowest_order(t).period_ratio(), 1.0) << t;
+        EXPECT_NO_THROW(pendulum::second_order(t)) << t;
+        EXPECT_EQ(pendulum::first_order(t).coefficients[0], t) << t;
+        EXPECT_NO_THROW(pendulum::iterated(t, 4)) << t;
+    }
+}

@@ -31,7 +31,10 @@ void check_gsl(int status, const std::string& what) {
 double bessel_j(int n, double x) {
     use_gsl_status_codes();
     gsl_sf_result r;
-    check_gsl(gsl_sf_bessel_Jn_e(n, x, &r), "bessel J" + std::to_string(n));
+    const int status = gsl_sf_bessel_Jn_e(n, x, &r);
+    // A value below the smallest double is zero to double precision, not a failure.
+    if (status == GSL_EUNDRFLW) return 0.0;
+    check_gsl(status, "bessel J" + std::to_string(n));
     return r.val;
 }
 

@@ -281,14 +281,18 @@ plot::panel convergence_panel(const context&, const panel_spec& p) {
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
         const amplitude& a = p.theta0[i];
         const double exact = pendulum::period_ratio(a.value);
-        const auto levels = pendulum::iterated_sequence(a.value, p.orders[1]);
+        const auto levels = pendulum::iterated_periods(a.value, p.orders[1]);
         const series_style st = amplitude_style(i, std::string(theta0_markup) + " = " + typeset_angle(a.text));
         plot::series s = series_of(st);
         for (int n = p.orders[0]; n <= p.orders[1]; ++n) {
-            const double err = std::fabs(levels[static_cast<std::size_t>(n)].period_ratio() / exact - 1);
+            const auto& level = levels[static_cast<std::size_t>(n)];
+            const double err = std::fabs(level.value / exact - 1);
+            // A point is drawn only where it is right to 10 %: its error, the level's rounding
+            // and that of T and of the ratio (1 ulp each), is below a tenth of it. Levels
+            // without a period (close to pi) are gaps too.
+            const double uncertainty = level.rounding / exact + 2 * std::numeric_limits<double>::epsilon();
             s.x.push_back(n);
-            // Below 1e-16 the difference is rounding: leave it out of a log plot.
-            s.y.push_back(err > 1e-16 ? err : std::nan(""));
+            s.y.push_back(err >= 10 * uncertainty ? err : std::nan(""));
         }
         panel.data.push_back(std::move(s));
     }

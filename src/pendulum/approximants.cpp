@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <string>
 
@@ -27,7 +28,7 @@ double fourier_solution::theta(double w0_t) const {
 double besinc(double x) {
     if (!std::isfinite(x)) throw domain_error("besinc needs a finite argument, got " + format_double(x));
     if (x == 0.0) return 1.0;
-    return 2.0 * bessel_j(1, x) / x;
+    return 2.0 * bessel_j_over_x(1, x);
 }
 
 fourier_solution harmonic(double theta0) {
@@ -42,27 +43,33 @@ fourier_solution lowest_order(double theta0) {
 
 fourier_solution first_order(double theta0) {
     check_amplitude(theta0);
-    const double eta = -bessel_j(3, theta0) / (9.0 * bessel_j(1, theta0));
+    // Ratios J_n(theta0)/theta0 keep every digit down to the smallest subnormal amplitude.
+    const double j1 = bessel_j_over_x(1, theta0);
+    const double eta = -bessel_j_over_x(3, theta0) / (9.0 * j1);
     const double c1 = theta0 / (1.0 + eta);
-    return {std::sqrt(besinc(theta0) * (1.0 + eta)), {c1, eta * c1}};
+    return {std::sqrt(2.0 * j1 * (1.0 + eta)), {c1, eta * c1}};
 }
 
 fourier_solution second_order(double theta0) {
-    const auto first = first_order(theta0);
-    const double a = first.coefficients[0];
-    const double b = first.coefficients[1];
+    check_amplitude(theta0);
+    const double j1 = bessel_j_over_x(1, theta0);
+    const double eta = -bessel_j_over_x(3, theta0) / (9.0 * j1);
+    const double a = theta0 / (1.0 + eta);
+    // The projection and lambda in units of theta0: a/theta0 and b/theta0 are of order one.
+    const double a_ratio = 1.0 / (1.0 + eta);
+    const double b_ratio = eta / (1.0 + eta);
     double C[3];
     double sum = 0.0;
     for (int k = 0; k < 3; ++k) {
         // J_{2k-2} with J_{-2} = J_2 (integer-order reflection).
-        const double inner =
-            2.0 * bessel_j(2 * k + 1, a) + b * (bessel_j(2 * k + 4, a) - bessel_j(std::abs(2 * k - 2), a));
+        const double inner = 2.0 * bessel_j_over_x(2 * k + 1, a) * a_ratio +
+                             b_ratio * (bessel_j(2 * k + 4, a) - bessel_j(std::abs(2 * k - 2), a));
         C[k] = (k % 2 == 0) ? inner : -inner;
         sum += C[k] / ((2 * k + 1) * (2 * k + 1));
     }
-    const double lambda = sum / theta0;
+    const double lambda = sum;
     fourier_solution s{std::sqrt(lambda), {}};
-    for (int k = 0; k < 3; ++k) s.coefficients.push_back(C[k] / ((2 * k + 1) * (2 * k + 1) * lambda));
+    for (int k = 0; k < 3; ++k) s.coefficients.push_back(theta0 * (C[k] / ((2 * k + 1) * (2 * k + 1) * lambda)));
     return s;
 }
 
@@ -78,52 +85,107 @@ fourier_solution polynomial(double theta0) {
 
 namespace {
 
-/// C_{2k+1} = (1/pi) int_0^{2pi} cos((2k+1)x) sin(theta(x)) dx for k = 0..count-1, where
-/// theta(x) = sum_j c_j cos((2j+1)x), by the midpoint rule on [0, pi/2] with L points.
-/// The integrand is even and antisymmetric about pi/2, so this equals the trapezoidal rule
-/// on 4L points over the whole period: exact for every harmonic below 4L - (2 count - 1).
-std::vector<double> project_sine(const std::vector<double>& c, int count, int L) {
-    std::vector<double> C(count, 0.0);
-    std::vector<double> odd_cos(std::max<std::size_t>(c.size(), count));
+/// cos(m pi / (4L)) for m = 0 .. 8L - 1: every cosine the rule with L points needs, each
+/// correctly rounded (a recurrence in j would lose about j^2 ulps near x = 0).
+template <class Real>
+std::vector<Real> cosine_table(int L) {
+    std::vector<Real> table(static_cast<std::size_t>(8 * L));
+    const Real step = std::numbers::pi_v<Real> / (4 * L);
+    for (int m = 0; m < 8 * L; ++m) table[static_cast<std::size_t>(m)] = std::cos(m * step);
+    return table;
+}
+
+/// sin(theta0 u) / theta0, exact for every theta0 in (0, pi), subnormals included.
+template <class Real>
+Real sine_over(Real theta0, Real u) {
+    const Real t = theta0 * u;
+    if (theta0 < small_amplitude) return u * (1 - t * t / 6);
+    return std::sin(t) / theta0;
+}
+
+/// C_{2k+1}/theta0 = (1/(pi theta0)) int_0^{2pi} cos((2k+1)x) sin(theta(x)) dx, k < count,
+/// where theta(x) = theta0 sum_j u_j cos((2j+1)x), by the midpoint rule on [0, pi/2] with L
+/// points. The integrand is even and antisymmetric about pi/2, so this is the trapezoidal
+/// rule on 4L points over the period: its error is the aliasing of the harmonics of
+/// sin(theta) above 4L - 2 count, which fall off geometrically.
+template <class Real>
+std::vector<Real> project_sine(const std::vector<Real>& u, int count, Real theta0, int L,
+                               const std::vector<Real>& table) {
+    const int period = 8 * L;
+    std::vector<Real> C(static_cast<std::size_t>(count), 0);
+    std::vector<Real> odd_cos(std::max<std::size_t>(u.size(), static_cast<std::size_t>(count)));
     for (int i = 0; i < L; ++i) {
-        const double x = (i + 0.5) * pi / (2.0 * L);
-        const double c1 = std::cos(x);
-        const double two_c2 = 2.0 * std::cos(2.0 * x);
-        // cos((2j+3)x) = 2 cos(2x) cos((2j+1)x) - cos((2j-1)x), starting from cos(-x) = cos(x).
-        double prev = c1;
-        double cur = c1;
-        for (std::size_t j = 0; j < odd_cos.size(); ++j) {
-            odd_cos[j] = cur;
-            const double next = two_c2 * cur - prev;
-            prev = cur;
-            cur = next;
+        // cos((2j+1) x_i) with x_i = (2i+1) pi / (4L) is table[(2j+1)(2i+1) mod 8L].
+        const int step = 2 * (2 * i + 1);
+        int index = 2 * i + 1;
+        for (Real& v : odd_cos) {
+            v = table[static_cast<std::size_t>(index)];
+            index += step;
+            if (index >= period) index -= period;
         }
-        double theta = 0.0;
-        for (std::size_t j = 0; j < c.size(); ++j) theta += c[j] * odd_cos[j];
-        const double f = std::sin(theta);
-        for (int k = 0; k < count; ++k) C[k] += f * odd_cos[k];
+        Real theta = 0;
+        for (std::size_t j = 0; j < u.size(); ++j) theta += u[j] * odd_cos[j];
+        const Real f = sine_over(theta0, theta);
+        for (int k = 0; k < count; ++k) C[static_cast<std::size_t>(k)] += f * odd_cos[static_cast<std::size_t>(k)];
     }
-    for (double& v : C) v *= 2.0 / L;
+    for (Real& v : C) v *= Real(2) / L;
     return C;
 }
 
-/// project_sine with L doubled until two successive rules agree to rounding, relative to
-/// the size of the integrand (|sin theta| <= min(1, theta0)).
-std::vector<double> project_sine_converged(const std::vector<double>& c, int count, double theta0) {
-    const double tolerance = 8.0 * std::numeric_limits<double>::epsilon() * std::min(1.0, theta0);
-    int L = 8 * count + 16;
-    auto coarse = project_sine(c, count, L);
-    for (;;) {
-        L *= 2;
-        auto fine = project_sine(c, count, L);
-        double diff = 0.0;
-        for (int k = 0; k < count; ++k) diff = std::max(diff, std::fabs(fine[k] - coarse[k]));
-        if (diff <= tolerance || L >= (1 << 16)) return fine;
-        coarse = std::move(fine);
+/// The projection with L doubled until two rules agree to 1e-11 (in units of theta0), or to
+/// 1e-13 in extended precision. The rules converge geometrically, so the error of the finer
+/// one is about the square of that: far below rounding, which a test on the rounding level
+/// itself could never see.
+template <class Real>
+class sine_projector {
+public:
+    std::vector<Real> operator()(const std::vector<Real>& u, int count, Real theta0) {
+        // Harmonics up to 2 count - 1 need 4L > 2 count; the rule's L only grows from level to level.
+        L_ = std::max(L_, count / 2 + 16);
+        auto coarse = project_sine(u, count, theta0, L_, table(L_));
+        const Real agreement = sizeof(Real) > sizeof(double) ? 1e-13 : 1e-11;
+        for (;;) {
+            auto fine = project_sine(u, count, theta0, 2 * L_, table(2 * L_));
+            Real diff = 0;
+            for (std::size_t k = 0; k < fine.size(); ++k) diff = std::max(diff, std::fabs(fine[k] - coarse[k]));
+            if (diff <= agreement || 2 * L_ >= max_points) return fine;
+            L_ *= 2;
+            coarse = std::move(fine);
+        }
     }
+
+private:
+    static constexpr int max_points = 1 << 16;
+
+    const std::vector<Real>& table(int L) {
+        auto it = tables_.find(L);
+        if (it == tables_.end()) it = tables_.emplace(L, cosine_table<Real>(L)).first;
+        return it->second;
+    }
+
+    int L_ = 0;
+    std::map<int, std::vector<Real>> tables_;
+};
+
+/// One level from its projection C (in units of theta0): lambda = sum C_k/(2k+1)^2 and the
+/// new u_k = C_k / ((2k+1)^2 lambda). Returns lambda.
+template <class Real>
+Real next_level(const std::vector<Real>& C, std::vector<Real>& u) {
+    Real lambda = 0;
+    for (std::size_t k = 0; k < C.size(); ++k) lambda += C[k] / Real((2 * k + 1) * (2 * k + 1));
+    u.resize(C.size());
+    for (std::size_t k = 0; k < C.size(); ++k) u[k] = C[k] / ((2 * k + 1) * (2 * k + 1) * lambda);
+    return lambda;
 }
 
 }  // namespace
+
+void check_order(int order) {
+    if (order < 0 || order > max_order) {
+        throw domain_error("order must be between 0 and " + std::to_string(max_order) + ", got " +
+                           std::to_string(order));
+    }
+}
 
 fourier_solution iterated(double theta0, int order) {
     return std::move(iterated_sequence(theta0, order).back());
@@ -131,32 +193,52 @@ fourier_solution iterated(double theta0, int order) {
 
 std::vector<fourier_solution> iterated_sequence(double theta0, int order) {
     check_amplitude(theta0);
-    if (order < 0 || order > max_order) {
-        throw domain_error("order must be between 0 and " + std::to_string(max_order) + ", got " +
-                           std::to_string(order));
-    }
+    check_order(order);
     std::vector<fourier_solution> levels;
-    std::vector<double> c{theta0};
+    sine_projector<double> project;
+    // The coefficients in units of theta0, so that no amplitude underflows.
+    std::vector<double> u{1.0};
     for (int level = 0; level <= order; ++level) {
         const int count = level + 1;
         std::vector<double> C;
         if (level <= 1) {
             // Exact in closed form: sin(theta0 cos x) = 2 sum (-1)^k J_{2k+1}(theta0) cos((2k+1)x).
             for (int k = 0; k < count; ++k) {
-                const double j = 2.0 * bessel_j(2 * k + 1, theta0);
+                const double j = 2.0 * bessel_j_over_x(2 * k + 1, theta0);
                 C.push_back(k % 2 == 0 ? j : -j);
             }
         } else {
-            C = project_sine_converged(c, count, theta0);
+            C = project(u, count, theta0);
         }
-        double sum = 0.0;
-        for (int k = 0; k < count; ++k) sum += C[k] / ((2.0 * k + 1) * (2.0 * k + 1));
-        const double lambda = sum / theta0;
-        c.assign(count, 0.0);
-        for (int k = 0; k < count; ++k) c[k] = C[k] / ((2.0 * k + 1) * (2.0 * k + 1) * lambda);
-        levels.push_back({std::sqrt(lambda), c});
+        const double lambda = next_level(C, u);
+        fourier_solution level_solution;
+        for (double v : u) level_solution.coefficients.push_back(theta0 * v);
+        // lambda = (w/w0)^2; where it is not positive the level has no real frequency (the
+        // scheme breaks down there, close to pi), and the iteration goes on from its c_k.
+        level_solution.frequency_ratio = lambda > 0 ? std::sqrt(lambda) : std::nan("");
+        levels.push_back(std::move(level_solution));
     }
     return levels;
+}
+
+std::vector<level_period> iterated_periods(double theta0, int order) {
+    const auto levels = iterated_sequence(theta0, order);
+    // The same iteration in extended precision, every level projected (no double Bessel
+    // values), so that the difference shows how far the double run's rounding has grown.
+    sine_projector<long double> project;
+    std::vector<long double> u{1.0L};
+    std::vector<level_period> out;
+    for (int level = 0; level <= order; ++level) {
+        const long double lambda = next_level(project(u, level + 1, static_cast<long double>(theta0)), u);
+        const double value = levels[static_cast<std::size_t>(level)].period_ratio();
+        if (!(lambda > 0) || std::isnan(value)) {
+            out.push_back({std::nan(""), std::nan("")});
+            continue;
+        }
+        const long double extended = 1 / std::sqrt(lambda);
+        out.push_back({value, static_cast<double>(std::fabs(value - extended))});
+    }
+    return out;
 }
 
 }  // namespace pendulum

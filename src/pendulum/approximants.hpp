@@ -10,8 +10,10 @@ struct fourier_solution {
     double frequency_ratio = 1.0;      ///< w/w0
     std::vector<double> coefficients;  ///< c1, c3, c5, ...
 
-    /// The period ratio T/T0 = w0/w.
+    /// The period ratio T/T0 = w0/w (NaN where the solution has no period).
     double period_ratio() const { return 1.0 / frequency_ratio; }
+    /// False where the scheme has no real frequency (the order-N iteration close to pi).
+    bool exists() const { return frequency_ratio > 0; }
     /// theta at time w0 t.
     double theta(double w0_t) const;
 };
@@ -35,11 +37,25 @@ fourier_solution second_order(double theta0);
 fourier_solution polynomial(double theta0);
 
 /// The paper's iteration carried to `order` (order + 1 harmonics), projecting
-/// sin(theta) exactly; orders 0 and 1 equal lowest_order() and first_order().
+/// sin(theta) exactly; orders 0 and 1 equal lowest_order() and first_order(). Close to pi
+/// some levels have lambda = (w/w0)^2 <= 0: there frequency_ratio is NaN and exists() false.
 fourier_solution iterated(double theta0, int order);
 
 /// Every level of the iteration, 0 to `order`: element n is iterated(theta0, n).
 std::vector<fourier_solution> iterated_sequence(double theta0, int order);
+
+/// Throws domain_error naming the order unless 0 <= order <= max_order.
+void check_order(int order);
+
+/// The period of one level of the iteration, with an estimate of its rounding error.
+struct level_period {
+    double value = 0;     ///< T_N/T0, NaN where the level has no period
+    double rounding = 0;  ///< |value - the same level in extended precision|
+};
+
+/// The period of every level 0 to `order`, each with its rounding estimate (close to pi the
+/// iteration amplifies the rounding of its coefficients).
+std::vector<level_period> iterated_periods(double theta0, int order);
 
 /// (w/w0)^2 = 2 J1(x) / x, the "besinc" function of optics (1 at x = 0).
 double besinc(double x);

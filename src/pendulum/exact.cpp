@@ -40,6 +40,12 @@ jacobi_values jacobi(double u, double kp) {
         const double sech = 1.0 / std::cosh(u);
         return {std::tanh(u), sech, sech};
     }
+    if (std::fabs(u) < 1e-8) {
+        // The Maclaurin series: the next terms are u^2/6 and u^4/24 times smaller, below
+        // rounding. (The Landen recursion below would overflow for |u| < 1e-154.)
+        const double m = (1.0 - kp) * (1.0 + kp);
+        return {u, 1.0 - 0.5 * u * u, 1.0 - 0.5 * m * u * u};
+    }
     std::array<double, 32> em{};
     std::array<double, 32> en{};
     double a = 1.0;
@@ -80,6 +86,14 @@ exact_solution::exact_solution(double theta0) : theta0_(theta0) {
     k_ = std::sin(0.5 * theta0);
     kp_ = std::cos(0.5 * theta0);
     quarter_ = 0.5 * pi / agm(1.0, kp_);
+    if (theta0 < small_amplitude) {
+        // q = (k/4)^2 (1 + k^2/2 + ...) with k = theta0/2 (1 - theta0^2/24): ln q to double,
+        // for subnormal theta0 too (where k itself would round).
+        log_nome_ = 2.0 * std::log(theta0) - std::log(64.0);
+        small_c1_ = theta0 + theta0 * theta0 * theta0 / 192.0;
+        small_c3_ = -theta0 * theta0 * theta0 / 192.0;
+        return;
+    }
     // K(k')/K(k) = AGM(1, k')/AGM(1, k).
     log_nome_ = -pi * agm(1.0, kp_) / agm(1.0, k_);
 }
@@ -90,7 +104,19 @@ double exact_solution::frequency_ratio() const { return 0.5 * pi / quarter_; }
 
 double exact_solution::nome() const { return std::exp(log_nome_); }
 
+double exact_solution::small_theta(double phase, bool complementary) const {
+    // theta = c1 cos x + c3 cos 3x; with y = pi/2 - x, cos x = sin y and cos 3x = -sin 3y.
+    if (complementary) return small_c1_ * std::sin(phase) - small_c3_ * std::sin(3.0 * phase);
+    return small_c1_ * std::cos(phase) + small_c3_ * std::cos(3.0 * phase);
+}
+
 double exact_solution::theta_in_quarter(double r, double sign) const {
+    if (theta0_ < small_amplitude) {
+        // Two harmonics are exact to double here (c5/c1 < 1e-33), and k = sin(theta0/2)
+        // would lose digits for subnormal theta0. w/w0 = pi/(2K).
+        const double w = frequency_ratio();
+        return r <= 0.5 * quarter_ ? sign * small_theta(w * r, false) : sign * small_theta(w * (quarter_ - r), true);
+    }
     // r in [0, K]. The cn form is exact where cn is far from its zero (first half of the
     // quarter); the sn/dn form with u = K - r small is exact in the second half.
     if (r <= 0.5 * quarter_) {
@@ -132,6 +158,7 @@ double exact_solution::theta_at_fraction(double s) const {
         s = 0.5 - s;
     }
     if (s <= 0.125) return theta_in_quarter(4.0 * quarter_ * s, sign);
+    if (theta0_ < small_amplitude) return sign * small_theta(0.5 * pi * (1.0 - 4.0 * s), true);
     // u = K (1 - 4 s) is formed without cancellation, then handed over as r = K - u.
     const auto j = jacobi(quarter_ * (1.0 - 4.0 * s), kp_);
     return sign * 2.0 * std::atan2(k_ * j.sn, j.dn);
@@ -139,7 +166,7 @@ double exact_solution::theta_at_fraction(double s) const {
 
 double exact_solution::coefficient(int n) const {
     if (n < 0) throw domain_error("harmonic index must be >= 0, got " + std::to_string(n));
-    if (theta0_ < 1e-8) {
+    if (theta0_ < small_amplitude) {
         // Small amplitudes: the nome's closed form loses digits like eps |ln q|; the series
         // c_{2n+1} = 8 (-1)^n (theta0/8)^(2n+1) / (2n+1) (1 + O(theta0^2)) is exact to double
         // here (c1 = theta0 + theta0^3/192, c3 = -theta0^3/192 to within theta0^2/16).

@@ -42,12 +42,15 @@ public:
 
 private:
     double theta_in_quarter(double r, double sign) const;
+    double small_theta(double phase, bool complementary) const;
 
     double theta0_;
     double k_;
     double kp_;
     double quarter_;
     double log_nome_;
+    double small_c1_ = 0;  // c1 and c3 below small_amplitude
+    double small_c3_ = 0;
 };
 
 /// The exact period ratio T/T0 for amplitude theta0.

@@ -30,4 +30,11 @@ void check_gsl(int status, const std::string& what);
 /// The Bessel function J_n(x) of integer order (negative n allowed); throws on GSL failure.
 double bessel_j(int n, double x);
 
+/// J_n(x)/x for n >= 1, accurate for every double x != 0, subnormals included (the power
+/// series below |x| = 1e-8, where J_n(x)/x = (x/2)^(n-1) / (2 n!) (1 - x^2/(4(n+1)))).
+double bessel_j_over_x(int n, double x);
+
+/// Amplitudes below this are "small": the power series in theta0 are exact to double there.
+inline constexpr double small_amplitude = 1e-8;
+
 }  // namespace pendulum

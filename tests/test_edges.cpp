@@ -5,9 +5,11 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "process.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -196,5 +198,71 @@ TEST(Iteration, TheConvergenceFigurePlotsOnlyPointsRightTo10Percent) {
         // Nothing that can be computed to 10 % is left out.
         EXPECT_GE(drawn, drawable) << names[i];
         std::cout << names[i] << ": " << drawn << " of " << series[i].x.size() << " points drawn\n";
+    }
+}
+
+TEST(EdgesCli, TinyAmplitudesAndTimesGiveNumbersNotErrors) {
+    // These were exit 1 (a Bessel underflow), exit 2 (agm of 1 and 0) and nan.
+    for (const char* t : {"5e-324", "1e-320", "1e-300", "1e-100", "1e-38"}) {
+        const auto r = test_support::run_cli(std::string("eval --theta0 ") + t + " --order 6 --method second");
+        EXPECT_EQ(r.status, 0) << t << r.err;
+        EXPECT_EQ(r.out.find("nan"), std::string::npos) << t;
+        for (const char* m : {"exact", "first", "second", "order:6"}) {
+            const auto tr = test_support::run_cli(std::string("trajectory --samples 3 --theta0 ") + t + " --method " + m);
+            EXPECT_EQ(tr.status, 0) << t << " " << m << tr.err;
+            EXPECT_EQ(tr.out.find("nan"), std::string::npos) << t << " " << m;
+        }
+    }
+    const auto r = test_support::run_cli("trajectory --theta0 1 --at 1e-155,1e-320,-1e-200");
+    EXPECT_EQ(r.out, "t_over_T,theta\n1e-155,1\n1e-320,1\n-1e-200,1\n");
+    const auto p = test_support::run_cli("trajectory --theta0 1 --periods 1e-320 --samples 10");
+    EXPECT_EQ(p.status, 0);
+    EXPECT_EQ(p.out.find("nan"), std::string::npos) << p.out;
+}
+
+TEST(EdgesCli, TheBreakdownOfTheIterationIsSaidNotPrintedAsNan) {
+    // At pi - 1e-6 the levels 6, 8, 16, 17 have lambda < 0: empty fields, JSON null, a warning.
+    const auto r = test_support::run_cli("eval --theta0 'pi-1e-6,pi/2' --order 5..8");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+    const auto first_row = r.out.substr(r.out.find('\n') + 1);
+    const auto fields = first_row.substr(0, first_row.find('\n'));
+    // ..., period_order5, period_order6 (empty), period_order7, period_order8 (empty)
+    EXPECT_NE(fields.find(",,"), std::string::npos) << fields;
+    EXPECT_EQ(fields.back(), ',') << fields;
+    EXPECT_NE(r.err.find("theta0 = 3.141591653589793: the iteration has no period at order 6, 8"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("1.5707963267948966"), std::string::npos) << "no warning for pi/2: " << r.err;
+    const auto j = test_support::run_cli("eval --theta0 pi-1e-6 --order 6 --format json");
+    EXPECT_NE(j.out.find("\"period_order6\": null"), std::string::npos) << j.out;
+    // A trajectory of a level that does not exist is an error naming --theta0.
+    const auto t = test_support::run_cli("trajectory --theta0 pi-1e-6 --method order:6 --at 0");
+    EXPECT_EQ(t.status, 2);
+    EXPECT_EQ(t.out, "");
+    EXPECT_NE(t.err.find("--theta0 pi-1e-6: the iteration has no period at order 6"), std::string::npos) << t.err;
+}
+
+TEST(EdgesCli, OrdersAreRangesComputedOnceAndEachAColumn) {
+    // --order 0..200 in one call: one sequence per amplitude (it took 167 s as 201 sequences).
+    const auto r = test_support::run_cli("eval --theta0 pi/2 --order 0..200 --order 7 --method order:200");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto header = r.out.substr(0, r.out.find('\n'));
+    EXPECT_NE(header.find(",period_order0,period_order1,"), std::string::npos);
+    EXPECT_NE(header.find(",period_order200,period_order:200"), std::string::npos) << header;
+    EXPECT_EQ(std::count(header.begin(), header.end(), ','), 17 + 201 + 1 - 1) << "order 7 is one column";
+    const auto levels = pendulum::iterated_sequence(pi / 2, 200);
+    const auto row = r.out.substr(r.out.find('\n') + 1);
+    std::vector<std::string> f;
+    std::stringstream fields(row.substr(0, row.find('\n')));
+    for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+    ASSERT_EQ(f.size(), 17u + 201 + 1);
+    for (int n = 0; n <= 200; ++n) {
+        EXPECT_EQ(std::stod(f[static_cast<std::size_t>(17 + n)]), levels[static_cast<std::size_t>(n)].period_ratio()) << n;
+    }
+    EXPECT_EQ(f.back(), f[17 + 200]);
+    for (const char* bad : {"5..2", "0..201", "..4", "1..", "a..b", "1...3"}) {
+        const auto b = test_support::run_cli(std::string("eval --theta0 1 --order '") + bad + "'");
+        EXPECT_EQ(b.status, 2) << bad;
+        EXPECT_NE(b.err.find("--order"), std::string::npos) << bad << ": " << b.err;
     }
 }

@@ -138,6 +138,37 @@ int parse_order(const std::string& text) {
     return order;
 }
 
+/// Parses --order items: orders N and ranges a..b, in the order given, each order once.
+std::vector<int> parse_orders(const std::vector<std::string>& items) {
+    std::vector<int> orders;
+    const auto add = [&](int n) {
+        if (std::find(orders.begin(), orders.end(), n) == orders.end()) orders.push_back(n);
+    };
+    for (const auto& text : items) {
+        const auto dots = text.find("..");
+        if (dots == std::string::npos) {
+            add(parse_order(text));
+            continue;
+        }
+        const int from = parse_order(text.substr(0, dots));
+        const int to = parse_order(text.substr(dots + 2));
+        if (from > to) {
+            throw usage_error("--order '" + text + "': a range a..b needs a <= b, e.g. 0.." + std::to_string(max_order));
+        }
+        for (int n = from; n <= to; ++n) add(n);
+    }
+    return orders;
+}
+
+/// Says on standard error which levels of the iteration have no period at this amplitude.
+void warn_breakdown(double theta0, const std::vector<int>& levels) {
+    std::string list;
+    for (int n : levels) list += (list.empty() ? "" : ", ") + std::to_string(n);
+    std::cerr << "pendulum-figures: warning: theta0 = " << format_double(theta0) << ": the iteration has no period at order "
+              << list << " (lambda = (w/w0)^2 < 0 there: the scheme itself breaks down near pi); "
+              << (levels.size() == 1 ? "that field is" : "those fields are") << " left empty\n";
+}
+
 /// A comma-separated option value as its items, empty ones kept so that they are reported.
 std::vector<std::string> list_items(const std::vector<std::string>& values) {
     std::vector<std::string> items;
@@ -203,12 +234,7 @@ struct eval_options {
 void eval_stream(std::ostream& out, const eval_options& o) {
     const auto format = cli::parse_table_format(o.format);
     const auto amplitudes = parse_amplitude_values(o.theta0);
-    std::vector<int> orders;
-    for (const auto& text : list_items(o.orders)) {
-        const int n = parse_order(text);
-        // A repeated order is one column.
-        if (std::find(orders.begin(), orders.end(), n) == orders.end()) orders.push_back(n);
-    }
+    const std::vector<int> orders = parse_orders(list_items(o.orders));
     std::vector<method_choice> methods;
     for (const auto& text : list_items(o.methods)) {
         if (text.empty()) throw usage_error("--method: empty value; see 'list' for the methods");
@@ -230,15 +256,30 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         small_period_s = 2 * std::acos(-1.0) * std::sqrt(*o.length / o.g);
         columns.push_back("T_s");
     }
+    // The iteration is computed once per amplitude, to the highest level asked for, and
+    // every --order and --method order:N column is read off that one sequence.
+    int highest = -1;
+    for (int n : orders) highest = std::max(highest, n);
+    for (const auto& m : methods) {
+        if (m.row->name == "order") highest = std::max(highest, m.n);
+    }
     cli::table_writer writer(out, columns, format);
     for (const double value : amplitudes) {
         const cli::eval_point point(value);
+        const auto levels = highest >= 0 ? iterated_sequence(value, highest) : std::vector<fourier_solution>{};
+        std::vector<int> broken;
+        const auto level_period = [&](int n) {
+            const auto& level = levels[static_cast<std::size_t>(n)];
+            if (!level.exists() && std::find(broken.begin(), broken.end(), n) == broken.end()) broken.push_back(n);
+            return level.period_ratio();
+        };
         std::vector<double> row;
         for (const auto& c : cli::eval_columns()) row.push_back(c.value(point));
-        for (int n : orders) row.push_back(iterated(value, n).period_ratio());
-        for (const auto& m : methods) row.push_back(method_period(m, value));
+        for (int n : orders) row.push_back(level_period(n));
+        for (const auto& m : methods) row.push_back(m.row->name == "order" ? level_period(m.n) : method_period(m, value));
         if (o.length) row.push_back(small_period_s * point.exact.period_ratio());
         writer.row(row);
+        if (!broken.empty()) warn_breakdown(value, broken);
     }
     writer.finish();
 }
@@ -297,6 +338,11 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     const exact_solution exact(theta0);
     const bool is_exact = method.row->name == "exact";
     const fourier_solution approx = is_exact ? fourier_solution{} : method_solution(method, theta0);
+    if (!is_exact && !approx.exists()) {
+        throw usage_error("--theta0 " + amplitudes.front().text + ": the iteration has no period at order " +
+                          std::to_string(method.n) + " there (lambda = (w/w0)^2 < 0: the scheme itself breaks down " +
+                          "near pi); choose another order, or an amplitude further from pi");
+    }
 
     const double period = 4.0 * exact.quarter_period();  // exact T in units of 1/w0
     cli::table_writer writer(out, {"t_over_T", "theta"}, format);
@@ -777,7 +823,7 @@ int main(int argc, char** argv) {
         ->type_name("LIST")->check(non_empty);
     eval->add_option("--order", ev.orders,
                      "Add a column period_orderN for the iteration to order N (0.." +
-                         std::to_string(max_order) + "); repeatable")
+                         std::to_string(max_order) + "), or one for each N of a range a..b; repeatable")
         ->type_name("N")
         ->take_all();
     eval->add_option("--method", ev.methods,
@@ -793,8 +839,13 @@ int main(int argc, char** argv) {
     eval->footer(std::string("\n") + angle_help + "\n\nColumns: " + cli::eval_columns_help() +
                  "; then period_orderN for each --order N, period_NAME for each --method NAME, and T_s with "
                  "--length. Periods are T/T0. Numbers round-trip a double.\n\n"
+                 "Close to pi (from about pi - 3e-4) some levels of the iteration have lambda = (w/w0)^2 < 0, "
+                 "so no period: at pi - 1e-6 the orders 6, 8, 16 and 17. That field is left empty (null in "
+                 "JSON), a warning on standard error names the amplitude and the orders, and the exit status "
+                 "stays 0: the table is complete, the value does not exist.\n\n"
                  "Examples:\n"
                  "  pendulum-figures eval --theta0 'pi/2,9pi/10' --order 12\n"
+                 "  pendulum-figures eval --theta0 0.99pi --order 0..40\n"
                  "  pendulum-figures eval --theta0 170deg --method kidd-fogg,lima-arun,ganley,agm:2\n"
                  "  pendulum-figures eval --theta0 170deg --length 0.5");
 

@@ -26,7 +26,10 @@ table_writer::table_writer(std::ostream& out, std::vector<std::string> columns, 
 
 void table_writer::row(const std::vector<double>& values) {
     if (format_ == table_format::csv) {
-        for (std::size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << format_double(values[i]);
+        // A value that does not exist (the iteration's breakdown) is an empty field.
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            out_ << (i ? "," : "") << (std::isfinite(values[i]) ? format_double(values[i]) : "");
+        }
         out_ << '\n';
     } else {
         out_ << (rows_ ? ",\n " : "\n ") << "{";

@@ -266,3 +266,24 @@ TEST(EdgesCli, OrdersAreRangesComputedOnceAndEachAColumn) {
         EXPECT_NE(b.err.find("--order"), std::string::npos) << bad << ": " << b.err;
     }
 }
+
+TEST(Edges, TheExactCirclesOfTheCoefficientFiguresAreRightTo1e13) {
+    // c5 at pi/24 from mpmath (40 digits): 8 q^(5/2) / (5 (1 + q^5)).
+    EXPECT_NEAR(pendulum::exact_solution(pi / 24).coefficient(2) / 1.879917827205231314298837e-9, 1.0, 1e-13);
+    EXPECT_NEAR(pendulum::exact_solution(pi / 24).coefficient(1) / -0.000011694457029861857183856, 1.0, 1e-13);
+    // Every circle of the paper's coefficient figures (the exact series) is the closed form.
+    int circles = 0;
+    for (const char* id : {"c1-lowest", "coefficients-first", "coefficients-second"}) {
+        const auto fig = figures::build(figures::find(id), {});
+        for (std::size_t p = 0; p < fig.panels.size(); ++p) {
+            const auto& s = fig.panels[p].data.front();  // the exact series comes first
+            for (std::size_t i = 0; i < s.x.size(); ++i) {
+                if (!(s.x[i] > 0 && s.x[i] < pi)) continue;
+                const double c = pendulum::exact_solution(s.x[i]).coefficient(static_cast<int>(p));
+                EXPECT_NEAR(s.y[i] / c, 1.0, 1e-13) << id << " panel " << p << " at " << s.x[i];
+                ++circles;
+            }
+        }
+    }
+    EXPECT_GT(circles, 100);
+}

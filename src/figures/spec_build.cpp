@@ -195,9 +195,11 @@ plot::panel coefficient_panel(const context& c, const panel_spec& p) {
         std::vector<double> x;
         plot::series s;
         if (is_exact(m)) {
-            // The paper's own definition, its Eq. (Lamb.12.1), by quadrature.
+            // The exact values from the closed form through the nome. The paper's Eq. (Lamb.12.1),
+            // by quadrature in doubles, is right only to about 1e-16 theta0 in absolute terms:
+            // c5 at pi/24 (1.9e-9) would be off by 8e-9 of itself.
             s = make_series(st, circle_amplitudes(lo, hi),
-                            [n](double t) { return pendulum::exact_solution(t).coefficient_by_quadrature(n); });
+                            [n](double t) { return pendulum::exact_solution(t).coefficient(n); });
         } else {
             s = make_series(st, curve_amplitudes(lo, hi), [&](double t) {
                 const auto sol = pendulum::method_solution(m.method, t);

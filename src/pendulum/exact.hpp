@@ -37,7 +37,9 @@ public:
 
     /// The Fourier coefficient c_{2n+1} (n >= 0) from its closed form through the nome.
     double coefficient(int n) const;
-    /// The coefficient c_{2n+1} by quadrature of the exact solution (the paper's Eq. Lamb.12.1).
+    /// The coefficient c_{2n+1} by quadrature of the exact solution (the paper's Eq. Lamb.12.1),
+    /// right to about 1e-15 theta0 absolute: a coefficient far below theta0 (c5 at small
+    /// amplitudes) keeps fewer digits than coefficient(), which is exact to rounding.
     double coefficient_by_quadrature(int n) const;
 
 private:

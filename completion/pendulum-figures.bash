@@ -3,7 +3,7 @@
 _pendulum_figures() {
     local cur prev words cword
     _init_completion || return
-    local commands="eval trajectory list show render plot data"
+    local commands="eval trajectory claims list show render plot data"
     if [[ $cword -eq 1 ]]; then
         COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
         return
@@ -25,6 +25,7 @@ _pendulum_figures() {
     case $command in
         eval) options="--theta0 --order --method --length --g --format --help" ;;
         trajectory) options="--theta0 --method --order --at --samples --periods --format --help" ;;
+        claims) options="--format --help" ;;
         list) options="--markdown --help" ;;
         show) options="--theme --help" ;;
         render) options="--all -o --output-dir -f --formats --theme --set --dpi --theta0 --frames --at --force --paper-files --help" ;;

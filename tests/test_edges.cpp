@@ -3,6 +3,7 @@
 // order-N iteration against its own 45-digit run (tests/data/make_iteration.py).
 #include "figures/catalog.hpp"
 #include "pendulum/approximants.hpp"
+#include "pendulum/claims.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
 #include "process.hpp"
@@ -286,4 +287,79 @@ TEST(Edges, TheExactCirclesOfTheCoefficientFiguresAreRightTo1e13) {
         }
     }
     EXPECT_GT(circles, 100);
+}
+
+namespace {
+
+/// The measured value of the claims row whose quantity is `quantity`.
+double claimed(const std::vector<pendulum::claim_measure>& rows, const std::string& quantity) {
+    for (const auto& r : rows) {
+        if (r.quantity == quantity) return r.value;
+    }
+    ADD_FAILURE() << "no row " << quantity;
+    return std::nan("");
+}
+
+}  // namespace
+
+TEST(Claims, EveryMeasuredNumberIsPinned) {
+    const auto rows = pendulum::paper_claims();
+    // Periods and crossings against mpmath (30 digits: findroot of the same differences).
+    EXPECT_NEAR(claimed(rows, "lowest-order T/T - 1 at pi/2"), -0.27284126778990233191, 3e-14);  // in %: 3e-16 of T
+    EXPECT_NEAR(claimed(rows, "amplitude where |T/T - 1| reaches 0.1 %"), 1.2600532771255706208, 1e-11);
+    EXPECT_NEAR(claimed(rows, "amplitude where |T/T - 1| reaches 0.2 %"), 84.194988770239208117, 1e-9);
+    EXPECT_NEAR(claimed(rows, "first-order T/T - 1 at pi/2"), 0.40887399333867626284, 3e-14);
+    EXPECT_NEAR(claimed(rows, "amplitude below which first order is worse than lowest"), 1.7252107699859170575, 1e-11);
+    // Fig. 6: second order at 95pi/100 is 0.046 rad off with a +0.03 % period: adequate.
+    EXPECT_NEAR(claimed(rows, "max |theta_second - theta| over a period at 95pi/100"), 0.0458299, 1e-6);
+    EXPECT_NEAR(claimed(rows, "second-order T/T - 1 at 95pi/100"), 0.0334228, 1e-6);
+    EXPECT_NEAR(claimed(rows, "second-order T/T - 1 at 99pi/100"), -6.98747, 1e-4);
+    EXPECT_NEAR(claimed(rows, "max |theta_lowest - theta| over a period at pi/2"), 0.0516163, 1e-6);
+    EXPECT_NEAR(claimed(rows, "max |theta_lowest - theta| over a period at 9pi/10"), 1.60387, 1e-5);
+    // The closing remark: the first orders within 1e-12 are those of the 45-digit iteration.
+    const auto ref = by_amplitude();
+    for (const char* name : {"pi/2", "9pi/10", "0.99pi"}) {
+        int first = -1;
+        for (const auto& r : ref.at(name)) {
+            if (std::fabs(r.error) < 1e-12) {
+                first = r.order;
+                break;
+            }
+        }
+        EXPECT_EQ(claimed(rows, std::string("first order N with |T_N/T - 1| < 1e-12 at ") + name), first) << name;
+    }
+    EXPECT_EQ(claimed(rows, "first order N without a period (lambda < 0) at pi - 1e-6"), 6);
+    for (const auto& r : rows) EXPECT_FALSE(r.verdict.empty()) << r.quantity;
+}
+
+TEST(Claims, TheLargestDeviationIsTheLargestOfADenseScan) {
+    for (const auto& [method, theta0] : {std::pair{"lowest", pi / 2}, {"second", 0.95 * pi}, {"first", 2.0}}) {
+        const pendulum::exact_solution e(theta0);
+        const auto approx = pendulum::method_solution(pendulum::parse_method(method), theta0);
+        double scan = 0;
+        for (int i = 0; i <= 100000; ++i) {
+            const double s = i / 100000.0;
+            scan = std::max(scan, std::fabs(approx.theta(s * 4 * e.quarter_period()) - e.theta_at_fraction(s)));
+        }
+        const double found = pendulum::max_deviation_over_period(method, theta0);
+        EXPECT_GE(found, scan - 1e-15) << method;
+        EXPECT_LE(found, scan + 1e-8) << method;
+    }
+}
+
+TEST(Claims, CsvAndJsonLikeEval) {
+    const auto csv = test_support::run_cli("claims");
+    ASSERT_EQ(csv.status, 0) << csv.err;
+    EXPECT_EQ(csv.out.substr(0, csv.out.find('\n')), "claim,where,statement,quantity,value,unit,verdict");
+    EXPECT_NE(csv.out.find("lowest-period-0.1%,Sec. 1 (Introduction),lowest-order period better than 0.1 % up to "
+                           "pi/2,lowest-order T/T - 1 at pi/2,-0.2728412677898917,%,fails\n"),
+              std::string::npos)
+        << csv.out;
+    EXPECT_NE(csv.out.find("\"Abstract; Sec. 2.2, Fig. 2\""), std::string::npos) << "fields with commas are quoted";
+    const auto json = test_support::run_cli("claims --format json");
+    ASSERT_EQ(json.status, 0);
+    EXPECT_NE(json.out.find("{\"claim\": \"lowest-period-0.2%\", \"where\": \"Sec. 3 (Conclusions)\""), std::string::npos)
+        << json.out;
+    EXPECT_NE(json.out.find("\"value\": 84.19498877023"), std::string::npos);
+    EXPECT_EQ(test_support::run_cli("claims --format xml").status, 2);
 }

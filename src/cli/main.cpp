@@ -12,6 +12,7 @@
 #include "plot/theme.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/approximants.hpp"
+#include "pendulum/claims.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
 
@@ -926,6 +927,18 @@ int main(int argc, char** argv) {
     list->footer("\nExamples:\n  pendulum-figures list\n  pendulum-figures render fig7 -f pdf\n"
                  "  pendulum-figures show fig2 > my-figure.toml");
 
+    std::string claims_format = "csv";
+    auto* claims = app.add_subcommand(
+        "claims", "Print every quantitative statement of the paper, where it is made, what the tool measures, and "
+                  "a verdict.");
+    claims->add_option("--format", claims_format, "Output format: csv (default) or json")->type_name("csv|json");
+    claims->footer("\nColumns: claim (a short id), where (the paper's section or figure), statement, quantity (what "
+                   "is measured), value, unit (%, rad, deg, or empty for orders), verdict. Periods are compared with "
+                   "the exact one; deviations of theta are the largest over one exact period.\n\n"
+                   "Examples:\n"
+                   "  pendulum-figures claims\n"
+                   "  pendulum-figures claims --format json");
+
     std::string show_id;
     std::string show_theme;
     auto* show = app.add_subcommand("show", "Print the spec of a built-in figure, or a theme's style file, to copy "
@@ -1015,6 +1028,13 @@ int main(int argc, char** argv) {
                 return 0;
             }
             out << csv;
+        } else if (*claims) {
+            const auto format = cli::parse_table_format(claims_format);
+            std::vector<std::vector<cli::field>> rows;
+            for (const auto& c : paper_claims()) {
+                rows.push_back({c.claim, c.where, c.statement, c.quantity, c.value, c.unit, c.verdict});
+            }
+            cli::write_records(out, {"claim", "where", "statement", "quantity", "value", "unit", "verdict"}, rows, format);
         } else if (*eval) {
             eval_stream(std::cout, ev);
         } else if (*traj) {
@@ -1037,10 +1057,10 @@ int main(int argc, char** argv) {
         if (app.get_subcommands().empty()) {
             // No command, or an unknown word where the command should be.
             if (argc < 2) {
-                message = "a command is required: eval, trajectory, list, show, render, plot or data (see --help)";
+                message = "a command is required: eval, trajectory, claims, list, show, render, plot or data (see --help)";
             } else if (argv[1][0] != '-') {
                 message = std::string("unknown command '") + argv[1] +
-                          "'; commands: eval, trajectory, list, show, render, plot, data (see --help)";
+                          "'; commands: eval, trajectory, claims, list, show, render, plot, data (see --help)";
             } else {
                 message = std::string("unknown option '") + argv[1] +
                           "'; options before the command are --help and --version (see --help)";

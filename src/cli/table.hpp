@@ -4,6 +4,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace pendulum::cli {
@@ -38,7 +39,14 @@ private:
 };
 
 /// Writes the table: CSV with a header line, or JSON as an array of objects. Numbers use
-/// the shortest form that reads back to the same double; NaN is written as nan / null.
+/// the shortest form that reads back to the same double; NaN is an empty field / null.
 void write_table(std::ostream& out, const table& t, table_format format);
+
+/// A field of a record: text or a number.
+using field = std::variant<std::string, double>;
+
+/// Writes records of text and numbers: CSV quoted as RFC 4180 asks, or JSON with escaped strings.
+void write_records(std::ostream& out, const std::vector<std::string>& columns,
+                   const std::vector<std::vector<field>>& rows, table_format format);
 
 }  // namespace pendulum::cli

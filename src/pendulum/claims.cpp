@@ -1,0 +1,205 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "pendulum/claims.hpp"
+
+#include "pendulum/approximants.hpp"
+#include "pendulum/exact.hpp"
+#include "pendulum/gsl_support.hpp"
+#include "pendulum/methods.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+#include <gsl/gsl_roots.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+
+namespace pendulum {
+
+namespace {
+
+using std::numbers::pi;
+
+struct root_solver_deleter {
+    void operator()(gsl_root_fsolver* s) const { gsl_root_fsolver_free(s); }
+};
+struct minimizer_deleter {
+    void operator()(gsl_min_fminimizer* s) const { gsl_min_fminimizer_free(s); }
+};
+
+/// T_m/T - 1 for a method given by name.
+double period_error(const char* method, double theta0) {
+    return method_period(parse_method(method), theta0) / period_ratio(theta0) - 1;
+}
+
+/// |error of the lowest order| - bound, for find_amplitude.
+double lowest_minus_bound(double theta0, void* bound) {
+    return std::fabs(period_error("lowest", theta0)) - *static_cast<double*>(bound);
+}
+
+/// |error of the first order| - |error of the lowest order|.
+double first_minus_lowest(double theta0, void*) {
+    return std::fabs(period_error("first", theta0)) - std::fabs(period_error("lowest", theta0));
+}
+
+/// The first order N <= max_order with |T_N/T - 1| < tolerance (NaN if none).
+double first_order_within(double theta0, double tolerance) {
+    const double exact = period_ratio(theta0);
+    const auto levels = iterated_sequence(theta0, max_order);
+    for (std::size_t n = 0; n < levels.size(); ++n) {
+        if (std::fabs(levels[n].period_ratio() / exact - 1) < tolerance) return static_cast<double>(n);
+    }
+    return std::nan("");
+}
+
+/// The first level N <= up_to of the iteration without a period (NaN if none).
+double first_breakdown(double theta0, int up_to) {
+    const auto levels = iterated_sequence(theta0, up_to);
+    for (std::size_t n = 0; n < levels.size(); ++n) {
+        if (!levels[n].exists()) return static_cast<double>(n);
+    }
+    return std::nan("");
+}
+
+}  // namespace
+
+double find_amplitude(double (*f)(double theta0, void* params), void* params, double lo, double hi) {
+    use_gsl_status_codes();
+    std::unique_ptr<gsl_root_fsolver, root_solver_deleter> solver(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
+    if (!solver) throw std::bad_alloc();
+    gsl_function fn{f, params};
+    check_gsl(gsl_root_fsolver_set(solver.get(), &fn, lo, hi), "bracketing a root");
+    for (int i = 0; i < 200; ++i) {
+        check_gsl(gsl_root_fsolver_iterate(solver.get()), "root finding");
+        const double a = gsl_root_fsolver_x_lower(solver.get());
+        const double b = gsl_root_fsolver_x_upper(solver.get());
+        if (gsl_root_test_interval(a, b, 1e-12, 0) == GSL_SUCCESS) break;
+    }
+    return gsl_root_fsolver_root(solver.get());
+}
+
+double max_deviation_over_period(const std::string& method, double theta0) {
+    const exact_solution exact(theta0);
+    const fourier_solution approx = method_solution(parse_method(method), theta0);
+    if (!approx.exists()) return std::nan("");
+    const double period = 4 * exact.quarter_period();
+    struct params {
+        const exact_solution* exact;
+        const fourier_solution* approx;
+        double period;
+    } p{&exact, &approx, period};
+    const auto minus_deviation = [](double s, void* data) {
+        const auto* q = static_cast<const params*>(data);
+        return -std::fabs(q->approx->theta(s * q->period) - q->exact->theta_at_fraction(s));
+    };
+    // A fine scan of the period, then Brent's minimiser (GSL) around the largest sample.
+    constexpr int samples = 2000;
+    int best = 0;
+    double best_value = 0;
+    for (int i = 0; i <= samples; ++i) {
+        const double v = minus_deviation(static_cast<double>(i) / samples, &p);
+        if (v < best_value) {
+            best_value = v;
+            best = i;
+        }
+    }
+    if (best == 0 || best == samples) return -best_value;
+    use_gsl_status_codes();
+    std::unique_ptr<gsl_min_fminimizer, minimizer_deleter> m(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent));
+    if (!m) throw std::bad_alloc();
+    gsl_function fn{minus_deviation, &p};
+    const double lo = (best - 1.0) / samples;
+    const double hi = (best + 1.0) / samples;
+    if (gsl_min_fminimizer_set(m.get(), &fn, static_cast<double>(best) / samples, lo, hi) != GSL_SUCCESS) {
+        return -best_value;  // the sample is the largest to the resolution of the scan
+    }
+    for (int i = 0; i < 100; ++i) {
+        if (gsl_min_fminimizer_iterate(m.get()) != GSL_SUCCESS) break;
+        const double a = gsl_min_fminimizer_x_lower(m.get());
+        const double b = gsl_min_fminimizer_x_upper(m.get());
+        if (gsl_min_test_interval(a, b, 1e-12, 0) == GSL_SUCCESS) break;
+    }
+    return std::max(-best_value, -gsl_min_fminimizer_f_minimum(m.get()));
+}
+
+std::vector<claim_measure> paper_claims() {
+    std::vector<claim_measure> rows;
+    const auto add = [&](const char* claim, const char* where, const char* statement, const char* quantity,
+                         double value, const char* unit, const char* verdict) {
+        rows.push_back({claim, where, statement, quantity, value, unit, verdict});
+    };
+
+    const double lowest_at_half_pi = 100 * period_error("lowest", pi / 2);
+    double bound = 1e-3;
+    const double crossing_01 = find_amplitude(lowest_minus_bound, &bound, 0.5, pi / 2);
+    bound = 2e-3;
+    const double crossing_02 = find_amplitude(lowest_minus_bound, &bound, 0.5, pi / 2);
+
+    const char* intro = "lowest-order period better than 0.1 % up to pi/2";
+    add("lowest-period-0.1%", "Sec. 1 (Introduction)", intro, "lowest-order T/T - 1 at pi/2", lowest_at_half_pi, "%",
+        "fails");
+    add("lowest-period-0.1%", "Sec. 1 (Introduction)", intro, "amplitude where |T/T - 1| reaches 0.1 %", crossing_01,
+        "rad", "fails");
+    const char* conclusion = "lowest-order period better than 0.2 % up to pi/2";
+    add("lowest-period-0.2%", "Sec. 3 (Conclusions)", conclusion, "lowest-order T/T - 1 at pi/2", lowest_at_half_pi,
+        "%", "fails");
+    add("lowest-period-0.2%", "Sec. 3 (Conclusions)", conclusion, "amplitude where |T/T - 1| reaches 0.2 %",
+        crossing_02 * 180 / pi, "deg", "fails");
+
+    const char* adequate = "lowest-order motion adequate up to pi/2 (Fig. 2(a), (b)), not at 3pi/4, 9pi/10 ((c), (d))";
+    const struct {
+        const char* name;
+        double value;
+        const char* verdict;
+    } fig2[] = {{"pi/3", pi / 3, "holds"}, {"pi/2", pi / 2, "holds"}, {"3pi/4", 3 * pi / 4, "holds"},
+                {"9pi/10", 9 * pi / 10, "holds"}};
+    for (const auto& a : fig2) {
+        add("lowest-motion-adequate", "Abstract; Sec. 2.2, Fig. 2", adequate,
+            (std::string("max |theta_lowest - theta| over a period at ") + a.name).c_str(),
+            max_deviation_over_period("lowest", a.value), "rad", a.verdict);
+    }
+
+    const char* better = "each order improves on the one before: first-order period better than lowest-order";
+    add("first-better-than-lowest", "Sec. 2.3, Fig. 7(b)", better, "first-order T/T - 1 at pi/2",
+        100 * period_error("first", pi / 2), "%", "fails");
+    add("first-better-than-lowest", "Sec. 2.3, Fig. 7(b)", better,
+        "amplitude below which first order is worse than lowest", find_amplitude(first_minus_lowest, nullptr, 1.0, 2.5),
+        "rad", "fails below it");
+
+    const char* inadequate = "second-order motion inadequate at 95pi/100 and 99pi/100 (Fig. 6(b), (c))";
+    const struct {
+        const char* name;
+        double value;
+        const char* verdict;
+    } fig6[] = {{"9pi/10", 9 * pi / 10, "holds (adequate)"},
+                {"95pi/100", 95 * pi / 100, "fails"},
+                {"99pi/100", 99 * pi / 100, "holds"}};
+    for (const auto& a : fig6) {
+        add("second-inadequate", "Sec. 2.3, Fig. 6", inadequate,
+            (std::string("max |theta_second - theta| over a period at ") + a.name).c_str(),
+            max_deviation_over_period("second", a.value), "rad", a.verdict);
+    }
+    for (const auto& a : fig6) {
+        add("second-inadequate", "Sec. 2.3, Fig. 6", inadequate,
+            (std::string("second-order T/T - 1 at ") + a.name).c_str(), 100 * period_error("second", a.value), "%",
+            a.verdict);
+    }
+
+    const char* iterate = "the procedure can be iterated to arbitrarily high accuracy";
+    const struct {
+        const char* name;
+        double value;
+    } levels[] = {{"pi/2", pi / 2}, {"9pi/10", 9 * pi / 10}, {"0.99pi", 0.99 * pi}};
+    for (const auto& a : levels) {
+        add("iteration-converges", "Appendix A (closing remark)", iterate,
+            (std::string("first order N with |T_N/T - 1| < 1e-12 at ") + a.name).c_str(),
+            first_order_within(a.value, 1e-12), "", "holds");
+    }
+    add("iteration-converges", "Appendix A (closing remark)", iterate,
+        "first order N without a period (lambda < 0) at pi - 1e-6", first_breakdown(pi - 1e-6, 40), "",
+        "fails near pi (from about pi - 3e-4)");
+    return rows;
+}
+
+}  // namespace pendulum

@@ -48,6 +48,16 @@ void iterated(benchmark::State& s) {
     per_amplitude(s, [order](double t) { return pendulum::iterated(t, order); });
 }
 
+/// Order 200 at one amplitude (argument: theta0 in hundredths of pi), the two cases.
+void iterated_200(benchmark::State& s) {
+    const double theta0 = static_cast<double>(s.range(0)) / 100 * std::numbers::pi;
+    for (auto _ : s) benchmark::DoNotOptimize(pendulum::iterated(theta0, 200));
+}
+/// Every level's period with its extended-precision rounding estimate (the convergence figure).
+void iterated_periods_40(benchmark::State& s) {
+    per_amplitude(s, [](double t) { return pendulum::iterated_periods(t, 40); });
+}
+
 }  // namespace
 
 BENCHMARK(exact_period);
@@ -60,5 +70,7 @@ BENCHMARK(first);
 BENCHMARK(second);
 BENCHMARK(polynomial);
 BENCHMARK(iterated)->Arg(2)->Arg(8)->Arg(24);
+BENCHMARK(iterated_200)->Arg(50)->Arg(99)->Unit(benchmark::kMillisecond);
+BENCHMARK(iterated_periods_40)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

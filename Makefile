@@ -21,7 +21,9 @@ DEB_PACKAGES += libgsl-dev libcairo2-dev libpango1.0-dev libcli11-dev libpng-dev
 DEB_PACKAGES += libgtest-dev libbenchmark-dev
 DEB_PACKAGES += libtomlplusplus-dev libgif-dev
 # Beamer and animate, for the test that plays an animation's PDF pages.
-DEB_PACKAGES += texlive-latex-base texlive-latex-recommended texlive-latex-extra
+# (and LaTeX overlays: pdflatex, latex, dvips, Times through mathptmx, ps2pdf)
+DEB_PACKAGES += texlive-latex-base texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended
+DEB_PACKAGES += ghostscript
 # The man page (help2man, checked with man), the Debian package (dpkg-dev), completion.
 DEB_PACKAGES += help2man man-db dpkg-dev bash-completion
 # clang and its sanitizer runtimes: the sanitizer run of make test, and make fuzz.

@@ -64,3 +64,27 @@ TEST(TexMarkup, BadLabelsAreErrorsNamingThem) {
 }
 
 }  // namespace
+
+TEST(TexMarkup, MarkupAsLatexForOverlays) {
+    using plot::markup_to_latex;
+    // What the program makes itself: tick labels, legends, axis labels.
+    EXPECT_EQ(markup_to_latex("\u22120.5"), "$-0.5$");
+    EXPECT_EQ(markup_to_latex("3\u03c0/4"), "$3\\pi /4$");
+    EXPECT_EQ(markup_to_latex("10<sup>\u22124</sup>"), "$10^{-4}$");
+    EXPECT_EQ(markup_to_latex("90\u00b0"), "$90^{\\circ}$");
+    EXPECT_EQ(markup_to_latex("<i>\u03d1</i><sub>0</sub> = 95\u03c0/100"), "$\\vartheta _{0} = 95\\pi /100$");
+    EXPECT_EQ(markup_to_latex("|<i>T</i><sub><i>N</i></sub>/<i>T</i> \u2212 1|"), "$|T_{N}/T - 1|$");
+    EXPECT_EQ(markup_to_latex("<i>c</i><sup>\u02b9\u02b9</sup><sub>1</sub>"), "$c^{\\prime \\prime }_{1}$");
+    EXPECT_EQ(markup_to_latex("order <i>N</i> of the iteration"), "order $N$ of the iteration");
+    EXPECT_EQ(markup_to_latex("relative error (%)"), "relative error $(\\%)$");
+    EXPECT_EQ(markup_to_latex("Kidd\u2013Fogg"), "Kidd--Fogg");
+    EXPECT_EQ(markup_to_latex("<i>T</i> (s)"), "$T$ (s)");
+    EXPECT_EQ(markup_to_latex("R&amp;D 100%"), "R\\&D $100\\%$");
+    // A spec's label is set verbatim, with only what LaTeX reads otherwise escaped.
+    EXPECT_EQ(markup_to_latex(tex_to_markup("$c''_1$")), "$c''_1$");
+    EXPECT_EQ(markup_to_latex(tex_to_markup("the paper's 0.1 % bound, $\\vartheta_0 \\le \\pi/2$")),
+              "the paper's 0.1 \\% bound, $\\vartheta_0 \\le \\pi/2$");
+    EXPECT_EQ(markup_to_latex(tex_to_markup("$\\vartheta$ (\u00b0)")), "$\\vartheta$ ($^{\\circ}$)");
+    // Nothing LaTeX cannot set slips through.
+    EXPECT_THROW(markup_to_latex("\u263a"), std::invalid_argument);
+}

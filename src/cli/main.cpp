@@ -372,6 +372,7 @@ struct render_options {
     bool force = false;  // rewrite files that would not change
     std::string frames;  // a..b, 1-based, of an animation
     std::string at;      // t/T of one frame of an animation
+    double tex_font_size = 10;  // the document's font size, for pdf_tex and eps_tex
 };
 
 /// Parses --frames a..b (1-based, inclusive) into 0-based indices; b may be left out.
@@ -478,6 +479,16 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
         plot::check_format(f);
         if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
     }
+    for (const char* graphics : {"pdf", "eps"}) {
+        const std::string overlay = std::string(graphics) + "_tex";
+        if (std::count(formats.begin(), formats.end(), graphics) && std::count(formats.begin(), formats.end(), overlay)) {
+            throw usage_error("-f " + o.formats + ": " + graphics + " and " + overlay + " both write ID." + graphics +
+                              " (" + overlay + "'s without its text); render them into different directories");
+        }
+    }
+    if (!(o.tex_font_size >= 5 && o.tex_font_size <= 30)) {
+        throw usage_error("--tex-font-size " + format_double(o.tex_font_size) + ": the document's font size in points, 5 to 30");
+    }
     const plot::theme theme = chosen_theme(o.theme.empty() ? "paper" : o.theme, o.sets);
     // Animations are for slides: theirs unless a theme is asked for.
     const plot::theme moving_theme = o.theme.empty() ? chosen_theme("slides", o.sets) : theme;
@@ -581,7 +592,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
     }
 
     try {
-        if (!jobs.empty()) figures::write_figures(jobs, build, theme, plot::output_options{dpi, o.force});
+        if (!jobs.empty()) figures::write_figures(jobs, build, theme, plot::output_options{dpi, o.force, o.tex_font_size});
         for (const auto& m : moving) {
             for (const auto& f : formats) {
                 if (!at && figures::is_animation_format(f)) {
@@ -597,7 +608,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
                 const double w0_t = at ? *at * m.plan.reference_period : m.plan.time(m.frames.first);
                 const auto frame = figures::animation_frame(*m.entry, still, m.plan, figures::build(*m.entry, still), w0_t);
                 plot::save(frame, moving_theme, std::filesystem::path(o.dir) / (m.entry->id + "." + f),
-                           plot::output_options{moving_dpi, o.force});
+                           plot::output_options{moving_dpi, o.force, o.tex_font_size});
             }
         }
     } catch (const std::exception& e) {
@@ -902,6 +913,10 @@ int main(int argc, char** argv) {
         ->type_name("T")->check(non_empty);
     render->add_flag("--force", ro.force, "Rewrite files that would not change (by default they are left alone, "
                                           "so their time stays and make does not rebuild)");
+    render->add_option("--tex-font-size", ro.tex_font_size,
+                       "pdf_tex, eps_tex: the document's font size in points (default 10); the figure's text is "
+                       "set at sizes relative to it (\\footnotesize, \\small) and laid out to fit")
+        ->type_name("PT");
     render->add_flag("--paper-files", ro.paper_files,
                      "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
     render->footer(std::string("\n") + angle_help +
@@ -912,6 +927,12 @@ int main(int argc, char** argv) {
                    "  pendulum-figures render --all -o figures -f pdf,png\n"
                    "  pendulum-figures render fig2 --theta0 170deg --theme slides -f png --dpi 150\n"
                    "  pendulum-figures render --all --paper-files -f eps -o paper/\n"
+                   "\nLaTeX sets the text: -f pdf_tex writes ID.pdf without text and ID.pdf_tex, which the document "
+                   "reads with \\usepackage{graphicx} and \\input{ID.pdf_tex}: every label in the document's own "
+                   "fonts, at \\footnotesize or \\small of its size (--tex-font-size). \\def\\figurewidth{8.6cm} "
+                   "before \\input scales the drawing, not the text. eps_tex is the same for latex and dvips. Labels "
+                   "are the specs' TeX, verbatim; a macro LaTeX lacks shows only when the document is compiled.\n"
+                   "  pendulum-figures render fig2 -f pdf_tex -o figures --tex-font-size 10\n"
                    "\nAnimations (a spec with [animation]; built in: swing, separatrix) are written as a looping "
                    "GIF, a PDF of one page per frame, or PNG frames ID-0001.png ...; SVG and EPS, and every format "
                    "with --at, get one frame. In Beamer: \\usepackage{animate} and "

@@ -92,7 +92,7 @@ std::optional<method_spec> read_method(reader& r, const toml::node& n, const plo
             r.problem(n, "a method table needs method = \"NAME\"");
             return std::nullopt;
         }
-        if (auto label = r.string(*t, "label")) m.label = *label;
+        if (auto label = r.label(*t, "label")) m.label = *label;
         m.style = r.choice(*t, "style", line_styles);
         m.marker = r.choice(*t, "marker", markers);
         if (auto color = r.string(*t, "color")) {
@@ -259,9 +259,9 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
             }
         }
     }
-    p.title = r.string(t, "title");
-    p.x_label = r.string(t, "x_label");
-    p.y_label = r.string(t, "y_label");
+    p.title = r.label(t, "title");
+    p.x_label = r.label(t, "x_label");
+    p.y_label = r.label(t, "y_label");
     if (auto v = r.string(t, "paper_file")) {
         if (v->empty() || v->find_first_of("/\\") != std::string::npos || (*v)[0] == '.') {
             r.problem(*t.get("paper_file"), "'paper_file' must be a plain file name without a directory");
@@ -312,7 +312,7 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
                 if (line.x.has_value() == line.y.has_value() && (lt.contains("x") == lt.contains("y"))) {
                     r.problem(e, "a reference line has either x = ... or y = ...");
                 }
-                if (auto label = r.string(lt, "label")) line.label = *label;
+                if (auto label = r.label(lt, "label")) line.label = *label;
                 if (auto style = r.choice(lt, "style", line_styles)) line.style = *style;
                 p.lines.push_back(line);
             }

@@ -5,6 +5,7 @@
 #include "figures/spec.hpp"
 #include "pendulum/amplitude.hpp"
 #include "plot/figure.hpp"
+#include "plot/tex_markup.hpp"
 
 #include <toml++/toml.h>
 
@@ -85,6 +86,20 @@ public:
         if (const auto* s = n->as_string()) return s->get();
         problem(*n, "'" + std::string(key) + "' must be a string");
         return std::nullopt;
+    }
+
+    /// A string that is a label: TeX math in $...$, checked now so that an unbalanced $ or
+    /// brace, or a macro the tool does not know, is reported at its file and line.
+    std::optional<std::string> label(const toml::table& t, std::string_view key) {
+        auto text = string(t, key);
+        if (!text) return text;
+        try {
+            plot::tex_to_markup(*text);
+        } catch (const std::invalid_argument& e) {
+            problem(*t.get(key), "'" + std::string(key) + "': " + e.what());
+            return std::nullopt;
+        }
+        return text;
     }
 
     std::optional<double> number(const toml::table& t, std::string_view key, double lo, double hi,

@@ -4,7 +4,9 @@
 #include "plot/frames.hpp"
 #include "plot/gif.hpp"
 #include "plot/handles.hpp"
+#include "plot/latex_overlay.hpp"
 #include "plot/render.hpp"
+#include "plot/text.hpp"
 
 #include <cairo-pdf.h>
 #include <cairo-ps.h>
@@ -68,11 +70,11 @@ void check_surface(cairo_surface_t* s, std::string_view format) {
 }
 
 void draw_on(cairo_surface_t* surface, const figure& fig, const theme& th, page_size size, double scale,
-             std::string_view format) {
+             std::string_view format, std::vector<placed_text>* texts = nullptr) {
     check_surface(surface, format);
     context_ptr cr(cairo_create(surface));
     cairo_scale(cr.get(), scale, scale);
-    draw_figure(cr.get(), fig, th, size);
+    draw_figure(cr.get(), fig, th, size, draw_pass::all, texts);
     const cairo_status_t status = cairo_status(cr.get());
     if (status != CAIRO_STATUS_SUCCESS) {
         throw std::runtime_error("cannot render " + std::string(format) + ": " + cairo_status_to_string(status));
@@ -82,23 +84,32 @@ void draw_on(cairo_surface_t* surface, const figure& fig, const theme& th, page_
 /// Draws the figure on a vector surface made by `create` (which may set it up further)
 /// and returns the stream's bytes.
 template <class Create>
-std::string render_vector(const figure& fig, const theme& th, std::string_view format, Create create) {
+std::string render_vector(const figure& fig, const theme& th, std::string_view format, Create create,
+                          std::vector<placed_text>* texts = nullptr) {
     const page_size size = figure_size(fig, th);
     std::string bytes;
     surface_ptr surface(create(&bytes, size));
     check_surface(surface.get(), format);
-    draw_on(surface.get(), fig, th, size, 1.0, format);
+    draw_on(surface.get(), fig, th, size, 1.0, format, texts);
     cairo_surface_finish(surface.get());
     check_surface(surface.get(), format);
     return bytes;
 }
 
-std::string render_pdf(const figure& fig, const theme& th, const output_options&) {
-    return render_vector(fig, th, "pdf", [](std::string* bytes, page_size size) {
-        cairo_surface_t* s = cairo_pdf_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
-        cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
-        return s;
-    });
+std::string render_pdf(const figure& fig, const theme& th, const output_options&,
+                       std::vector<placed_text>* texts = nullptr) {
+    return render_vector(
+        fig, th, "pdf",
+        [](std::string* bytes, page_size size) {
+            cairo_surface_t* s = cairo_pdf_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
+            cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
+            return s;
+        },
+        texts);
+}
+
+std::string write_pdf(const figure& fig, const theme& th, const output_options& options) {
+    return render_pdf(fig, th, options);
 }
 
 /// Cairo numbers SVG surface ids from a process-wide counter; renumber them in order of
@@ -255,7 +266,7 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
     return std::move(sink.bytes);
 }
 
-std::string render_svg(const figure& fig, const theme& th, const output_options&) {
+std::string write_svg(const figure& fig, const theme& th, const output_options&) {
     return renumber_svg_ids(render_vector(fig, th, "svg", [](std::string* bytes, page_size size) {
         cairo_surface_t* s = cairo_svg_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
         cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
@@ -263,12 +274,26 @@ std::string render_svg(const figure& fig, const theme& th, const output_options&
     }));
 }
 
-std::string render_eps(const figure& fig, const theme& th, const output_options&) {
-    return fix_eps_date(render_vector(fig, th, "eps", [](std::string* bytes, page_size size) {
-        cairo_surface_t* s = cairo_ps_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
-        cairo_ps_surface_set_eps(s, 1);
-        return s;
-    }));
+std::string render_eps(const figure& fig, const theme& th, const output_options&,
+                       std::vector<placed_text>* texts = nullptr) {
+    return fix_eps_date(render_vector(
+        fig, th, "eps",
+        [](std::string* bytes, page_size size) {
+            cairo_surface_t* s = cairo_ps_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
+            cairo_ps_surface_set_eps(s, 1);
+            return s;
+        },
+        texts));
+}
+
+std::string write_eps(const figure& fig, const theme& th, const output_options& options) {
+    return render_eps(fig, th, options);
+}
+
+/// Overlay formats write two files; standard output can take only one.
+std::string refuse_one_stream(const figure&, const theme&, const output_options&) {
+    throw std::invalid_argument("pdf_tex and eps_tex write two files (the drawing and its LaTeX text); give an "
+                                "output directory, not -o -");
 }
 
 std::string render_gif(const figure& fig, const theme& th, const output_options& options) {
@@ -293,11 +318,15 @@ std::string render_raster(const figure& fig, const theme& th, const output_optio
 // Every output format: one row each. A format is written by its row's function, so a
 // format without a writer cannot be listed.
 constexpr format_row formats[] = {
-    {"png", "raster at --dpi", render_raster},
-    {"pdf", "vector, fonts embedded", render_pdf},
-    {"svg", "vector, for the web", render_svg},
-    {"eps", "vector, for latex and dvips", render_eps},
-    {"gif", "animation that loops; one frame for a still figure", render_gif},
+    {"png", "raster at --dpi", render_raster, {}},
+    {"pdf", "vector, fonts embedded", write_pdf, {}},
+    {"svg", "vector, for the web", write_svg, {}},
+    {"eps", "vector, for latex and dvips", write_eps, {}},
+    {"gif", "animation that loops; one frame for a still figure", render_gif, {}},
+    {"pdf_tex", "ID.pdf without text and ID.pdf_tex setting the text in the document's fonts (pdflatex)",
+     refuse_one_stream, "pdf"},
+    {"eps_tex", "ID.eps without text and ID.eps_tex setting the text in the document's fonts (latex, dvips)",
+     refuse_one_stream, "eps"},
 };
 
 }  // namespace
@@ -360,15 +389,38 @@ bool write_if_changed(const std::filesystem::path& path, const std::string& byte
     return true;
 }
 
+overlay_files render_overlay(const figure& fig, const theme& th, std::string_view graphics_format,
+                             const std::string& graphics_name, const output_options& options) {
+    const theme sized = latex_sized_theme(th, options.tex_font_pt);
+    std::vector<placed_text> texts;
+    overlay_files files;
+    files.graphics = graphics_format == "pdf" ? render_pdf(fig, sized, options, &texts)
+                                              : render_eps(fig, sized, options, &texts);
+    files.tex = latex_picture(texts, figure_size(fig, sized), sized, graphics_name, options.tex_font_pt);
+    return files;
+}
+
 void save(const figure& fig, const theme& th, const std::filesystem::path& path, const output_options& options) {
     std::string ext = path.extension().string();
     if (!ext.empty()) ext.erase(0, 1);
-    const std::string bytes = render(fig, th, ext, options);
-    if (options.force) {
-        write_atomically(path, bytes);
-    } else {
-        write_if_changed(path, bytes);
+    const auto write = [&](const std::filesystem::path& p, const std::string& bytes) {
+        if (options.force) {
+            write_atomically(p, bytes);
+        } else {
+            write_if_changed(p, bytes);
+        }
+    };
+    const format_row& row = find_format(ext);
+    if (!row.graphics.empty()) {
+        // ID.pdf_tex inputs ID.pdf: the drawing first, so the text never refers to a missing file.
+        auto graphics = path;
+        graphics.replace_extension(row.graphics);
+        const overlay_files files = render_overlay(fig, th, row.graphics, graphics.filename().string(), options);
+        write(graphics, files.graphics);
+        write(path, files.tex);
+        return;
     }
+    write(path, row.write(fig, th, options));
 }
 
 }  // namespace plot

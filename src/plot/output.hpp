@@ -14,8 +14,9 @@ namespace plot {
 
 /// Options that apply when a figure is written.
 struct output_options {
-    double dpi = 300;    ///< raster resolution (PNG)
-    bool force = false;  ///< rewrite a file even if it already holds the same bytes
+    double dpi = 300;          ///< raster resolution (PNG)
+    bool force = false;        ///< rewrite a file even if it already holds the same bytes
+    double tex_font_pt = 10;   ///< the document's font size, for pdf_tex and eps_tex
 };
 
 /// The smallest and largest accepted --dpi.
@@ -37,7 +38,19 @@ struct format_row {
     std::string_view name;         ///< file extension
     std::string_view description;  ///< one line for help and lists
     std::string (*write)(const figure& fig, const theme& th, const output_options& options);  ///< the bytes
+    std::string_view graphics;     ///< for a LaTeX overlay: the format of the drawing beside it
 };
+
+/// A LaTeX overlay's two files: the drawing without text, and the picture that sets the text.
+struct overlay_files {
+    std::string graphics;  ///< PDF or EPS bytes
+    std::string tex;       ///< the picture environment, \input by the document
+};
+
+/// Renders the drawing (in graphics_format, pdf or eps) without its text, and the LaTeX
+/// picture that includes it as graphics_name and puts every text at its place.
+overlay_files render_overlay(const figure& fig, const theme& th, std::string_view graphics_format,
+                             const std::string& graphics_name, const output_options& options);
 
 /// Every output format, in the order help lists them.
 std::span<const format_row> format_table();

@@ -155,14 +155,14 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         const double d = mx(plan.xt.major[i]);
         if (d < area.x - 0.01 || d > area.x + area.w + 0.01) continue;
         const text_ink ink = text.ink(plan.xt.labels[i], th.tick_font_pt);
-        text.draw_on_baseline(plan.xt.labels[i], th.tick_font_pt, d - ink.x - 0.5 * ink.w, x_baseline);
+        text.draw_on_baseline(plan.xt.labels[i], th.tick_font_pt, d - ink.x - 0.5 * ink.w, x_baseline, false, 0.5);
     }
     for (std::size_t i = 0; i < plan.yt.major.size(); ++i) {
         const double d = my(plan.yt.major[i]);
         if (d < area.y - 0.01 || d > area.y + area.h + 0.01) continue;
         const text_ink ink = text.ink(plan.yt.labels[i], th.tick_font_pt);
         text.draw_on_baseline(plan.yt.labels[i], th.tick_font_pt, area.x - plan.tick_gap - ink.x - ink.w,
-                              d + 0.5 * plan.digit_h);
+                              d + 0.5 * plan.digit_h, false, 1.0);
     }
 
     // Axis labels at label_gap from the tick labels (y labels of a column aligned, as the
@@ -170,14 +170,15 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     if (!p.x.label.empty()) {
         const text_ink ink = text.ink(p.x.label, th.label_font_pt);
         const double top = x_baseline + plan.xtick_down + plan.label_gap;
-        text.draw_on_baseline(p.x.label, th.label_font_pt, area.x + 0.5 * area.w - ink.x - 0.5 * ink.w, top - ink.y);
+        text.draw_on_baseline(p.x.label, th.label_font_pt, area.x + 0.5 * area.w - ink.x - 0.5 * ink.w, top - ink.y,
+                              false, 0.5);
     }
     if (!p.y.label.empty()) {
         // Turned by -90 degrees: the text's down is the page's right.
         const text_ink ink = text.ink(p.y.label, th.label_font_pt);
         const double right = area.x - plan.tick_gap - plan.column_ytick_w - plan.label_gap;
         text.draw_on_baseline(p.y.label, th.label_font_pt, right - (ink.y + ink.h),
-                              area.y + 0.5 * area.h + ink.x + 0.5 * ink.w, true);
+                              area.y + 0.5 * area.h + ink.x + 0.5 * ink.w, true, 0.5);
     }
     if (!p.label.empty()) {
         const text_ink ink = text.ink(p.label, th.label_font_pt);
@@ -205,7 +206,8 @@ figure with_theme_styles(const figure& fig, const theme& th) {
 
 }  // namespace
 
-void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass) {
+void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
+                 std::vector<placed_text>* texts) {
     const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), [](const panel& p) {
         return std::any_of(p.data.begin(), p.data.end(), [](const series& s) { return !s.style_key.empty(); });
     });
@@ -215,7 +217,8 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         throw std::invalid_argument("figure grid is too small for its panels");
     }
     if (th.palette.empty()) throw std::invalid_argument("theme has no colours");
-    const text_engine text(cr, th.font_family);
+    text_engine text(cr, th.font_family);
+    text.record_into(texts);
     if (pass != draw_pass::overlay) {
         cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
         cairo_paint(cr);

@@ -6,6 +6,8 @@
 
 #include <cairo.h>
 
+#include <vector>
+
 namespace plot {
 
 /// A page size in points (1/72 inch).
@@ -21,8 +23,12 @@ page_size figure_size(const figure& fig, const theme& th);
 /// animation (no overlay series or labels), or only what moves (on top of the former).
 enum class draw_pass { all, still, overlay };
 
-/// Draws the figure on cr, whose user units are points, filling [0, w] x [0, h].
+struct placed_text;
+
+/// Draws the figure on cr, whose user units are points, filling [0, w] x [0, h]; with
+/// `texts`, every text is recorded there (for a LaTeX overlay) instead of drawn.
 /// Throws std::runtime_error if the theme's font is not installed.
-void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size, draw_pass pass = draw_pass::all);
+void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size, draw_pass pass = draw_pass::all,
+                 std::vector<placed_text>* texts = nullptr);
 
 }  // namespace plot

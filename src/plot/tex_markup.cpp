@@ -3,10 +3,14 @@
 
 #include "plot/figure.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace plot {
 
@@ -242,9 +246,257 @@ private:
     int script_depth_ = 0;
 };
 
+/// The TeX each markup was made from, for LaTeX overlays that set labels verbatim. One map
+/// for the process: markup is made while a figure is built and read while it is drawn.
+std::map<std::string, std::string>& sources(std::unique_lock<std::mutex>& lock) {
+    static std::mutex mutex;
+    static std::map<std::string, std::string> map;
+    lock = std::unique_lock(mutex);
+    return map;
+}
+
+/// One piece of parsed markup: a character (italic or not) or a script with its contents.
+struct markup_node {
+    enum class kind { character, sub, sup } type = kind::character;
+    std::string text;  // one UTF-8 character
+    bool italic = false;
+    std::vector<markup_node> inner;
+};
+
+/// Pango markup as characters and scripts; <span>, <b> and the like carry nothing LaTeX needs.
+class markup_parser {
+public:
+    explicit markup_parser(std::string_view m) : m_(m) {}
+
+    std::vector<markup_node> parse(const std::string& until = "") {
+        std::vector<markup_node> out;
+        while (pos_ < m_.size()) {
+            if (m_[pos_] == '<') {
+                const std::size_t end = m_.find('>', pos_);
+                if (end == std::string_view::npos) throw std::invalid_argument("unclosed tag in '" + std::string(m_) + "'");
+                const std::string tag(m_.substr(pos_ + 1, end - pos_ - 1));
+                pos_ = end + 1;
+                if (!until.empty() && tag == until) return out;
+                if (tag == "i") ++italic_;
+                if (tag == "/i") --italic_;
+                if (tag == "sub" || tag == "sup") {
+                    markup_node n;
+                    n.type = tag == "sub" ? markup_node::kind::sub : markup_node::kind::sup;
+                    n.inner = parse("/" + tag);
+                    out.push_back(std::move(n));
+                }
+                continue;
+            }
+            markup_node n;
+            n.italic = italic_ > 0;
+            if (m_[pos_] == '&') {
+                const std::size_t end = m_.find(';', pos_);
+                const std::string entity(m_.substr(pos_ + 1, end == std::string_view::npos ? 0 : end - pos_ - 1));
+                pos_ = end == std::string_view::npos ? m_.size() : end + 1;
+                n.text = entity == "amp" ? "&" : entity == "lt" ? "<" : entity == "gt" ? ">" : entity == "quot" ? "\"" : "'";
+            } else {
+                std::size_t end = pos_ + 1;
+                while (end < m_.size() && (static_cast<unsigned char>(m_[end]) & 0xc0) == 0x80) ++end;
+                n.text = std::string(m_.substr(pos_, end - pos_));
+                pos_ = end;
+            }
+            out.push_back(std::move(n));
+        }
+        return out;
+    }
+
+private:
+    std::string_view m_;
+    std::size_t pos_ = 0;
+    int italic_ = 0;
+};
+
+/// A character in math mode.
+std::string math_character(const std::string& c, const std::string& whole) {
+    if (c.size() == 1) {
+        static const std::string specials = "%#&$_{}";
+        if (specials.find(c[0]) != std::string::npos) return "\\" + c;
+        if (c == "~") return "\\sim ";
+        if (c == "^") return "\\hat{}";
+        if (c == "\\") return "\\backslash ";
+        return c;
+    }
+    static const std::pair<std::string_view, std::string_view> extra[] = {
+        {"\u2212", "-"},          {"\u2032", "'"},         {"\u02b9", "'"},          {"\u2033", "''"},
+        {"\u2034", "'''"},        {"\u00b0", "^{\\circ}"}, {"\u2217", "*"},          {"\u2009", "\\,"},
+        {"\u2005", "\\;"},        {"\u2003", "\\quad "},   {"\u2016", "\\|"},        {"\u22c5", "\\cdot "},
+        {"\u00b7", "\\cdot "},    {"\u2218", "\\circ "},   {"\u00a0", "~"}};
+    for (const auto& [from, to] : extra) {
+        if (c == from) return std::string(to);
+    }
+    for (const auto& sym : symbols) {
+        if (sym.text == c && static_cast<unsigned char>(sym.text[0]) >= 0x80) return "\\" + std::string(sym.name) + " ";
+    }
+    throw std::invalid_argument("label '" + whole + "': no LaTeX for the character '" + c + "'");
+}
+
+std::string math_of(const std::vector<markup_node>& nodes, const std::string& whole) {
+    std::string out;
+    for (const auto& n : nodes) {
+        if (n.type == markup_node::kind::character) {
+            out += math_character(n.text, whole);
+            continue;
+        }
+        const bool primes = !n.inner.empty() && std::all_of(n.inner.begin(), n.inner.end(), [](const markup_node& k) {
+            return k.type == markup_node::kind::character && (k.text == "\u02b9" || k.text == "\u2032");
+        });
+        std::string inner;
+        if (primes) {
+            for (std::size_t i = 0; i < n.inner.size(); ++i) inner += "\\prime ";
+        } else {
+            inner = math_of(n.inner, whole);
+        }
+        out += (n.type == markup_node::kind::sub ? "_{" : "^{") + inner + "}";
+    }
+    return out;
+}
+
+/// Typographic characters of text mode, as LaTeX writes them.
+std::string text_character(const std::string& c) {
+    static const std::pair<std::string_view, std::string_view> text[] = {
+        {"\u2013", "--"}, {"\u2014", "---"}, {"\u2019", "'"}, {"\u2018", "`"}, {"\u201c", "``"}, {"\u201d", "''"},
+        {"\u00a0", "~"},  {"\u2009", "\\,"}};
+    for (const auto& [from, to] : text) {
+        if (c == from) return std::string(to);
+    }
+    return "";
+}
+
+/// A label's TeX as LaTeX: the same, with what the label language reads as a literal
+/// character (%, #, &, ~, _ and ^ outside math, UTF-8 letters) escaped for LaTeX.
+std::string label_as_latex(const std::string& tex) {
+    std::string out;
+    bool math = false;
+    for (std::size_t i = 0; i < tex.size();) {
+        const char c = tex[i];
+        if (c == '\\' && i + 1 < tex.size()) {
+            // A macro, or an escaped character, passes as it is (\$ and \\ included).
+            out += tex.substr(i, 2);
+            i += 2;
+            continue;
+        }
+        if (c == '$') {
+            math = !math;
+            out += c;
+            ++i;
+            continue;
+        }
+        if (static_cast<unsigned char>(c) >= 0x80) {
+            std::size_t end = i + 1;
+            while (end < tex.size() && (static_cast<unsigned char>(tex[end]) & 0xc0) == 0x80) ++end;
+            const std::string ch = tex.substr(i, end - i);
+            const std::string t = math ? "" : text_character(ch);
+            out += !t.empty() ? t : math ? math_character(ch, tex) : "$" + math_character(ch, tex) + "$";
+            i = end;
+            continue;
+        }
+        if (c == '%' || c == '#' || c == '&' || (!math && (c == '_' || c == '{' || c == '}'))) {
+            out += std::string("\\") + c;
+        } else if (!math && c == '^') {
+            out += "\\^{}";
+        } else if (!math && c == '~') {
+            out += "\\~{}";
+        } else if (!math && (c == '|' || c == '<' || c == '>')) {
+            out += c == '|' ? "\\textbar{}" : c == '<' ? "\\textless{}" : "\\textgreater{}";
+        } else {
+            out += c;
+        }
+        ++i;
+    }
+    return out;
+}
+
+bool is_plain(const markup_node& n) {
+    return n.type == markup_node::kind::character && !n.italic && n.text.size() == 1;
+}
+
+/// A word set in text mode: plain ASCII as text, anything else as math.
+std::string text_of(const std::vector<markup_node>& nodes, const std::string& whole) {
+    static const std::pair<char, std::string_view> escapes[] = {
+        {'\\', "\\textbackslash{}"}, {'{', "\\{"},           {'}', "\\}"},           {'$', "\\$"},
+        {'&', "\\&"},                {'#', "\\#"},           {'%', "\\%"},           {'_', "\\_"},
+        {'^', "\\^{}"},              {'~', "\\~{}"},         {'|', "\\textbar{}"},   {'<', "\\textless{}"},
+        {'>', "\\textgreater{}"}};
+    std::string out;
+    std::vector<markup_node> math;
+    const auto flush = [&] {
+        if (!math.empty()) out += "$" + math_of(math, whole) + "$";
+        math.clear();
+    };
+    for (const auto& n : nodes) {
+        const std::string typographic = n.type == markup_node::kind::character && !n.italic ? text_character(n.text) : "";
+        if (!typographic.empty()) {
+            flush();
+            out += typographic;
+            continue;
+        }
+        if (!is_plain(n)) {
+            math.push_back(n);
+            continue;
+        }
+        flush();
+        std::string piece = n.text;
+        for (const auto& [from, to] : escapes) {
+            if (n.text[0] == from) piece = to;
+        }
+        out += piece;
+    }
+    flush();
+    return out;
+}
+
 }  // namespace
 
-std::string tex_to_markup(std::string_view tex) { return converter(tex, true).run(); }
+std::string tex_to_markup(std::string_view tex) {
+    std::string markup = converter(tex, true).run();
+    std::unique_lock<std::mutex> lock;
+    sources(lock).emplace(markup, std::string(tex));
+    return markup;
+}
+
+std::string markup_to_latex(std::string_view markup) {
+    const std::string whole(markup);
+    {
+        std::unique_lock<std::mutex> lock;
+        const auto& map = sources(lock);
+        if (const auto it = map.find(whole); it != map.end()) return label_as_latex(it->second);
+    }
+    // Words (split at spaces) with a plain letter are text; the others, and runs of them,
+    // are one piece of math, so that TeX spaces "T - 1" and "= pi/2" as math.
+    std::vector<std::vector<markup_node>> words(1);
+    for (auto& n : markup_parser(markup).parse()) {
+        if (n.type == markup_node::kind::character && n.text == " ") {
+            words.emplace_back();
+        } else {
+            words.back().push_back(std::move(n));
+        }
+    }
+    std::string out;
+    std::string math;
+    const auto flush = [&] {
+        if (!math.empty()) out += (out.empty() ? "$" : " $") + math + "$";
+        math.clear();
+    };
+    for (const auto& w : words) {
+        if (w.empty()) continue;
+        const bool text = std::any_of(w.begin(), w.end(), [](const markup_node& n) {
+            return is_plain(n) && std::isalpha(static_cast<unsigned char>(n.text[0]));
+        });
+        if (!text) {
+            math += (math.empty() ? "" : " ") + math_of(w, whole);
+            continue;
+        }
+        flush();
+        out += (out.empty() ? "" : " ") + text_of(w, whole);
+    }
+    flush();
+    return out;
+}
 
 std::string tex_to_plain(std::string_view tex) { return converter(tex, false).run(); }
 

@@ -31,6 +31,17 @@ struct text_ink {
     double h = 0;  ///< height
 };
 
+/// A text placed on the page but not drawn, for a LaTeX overlay: the left end of its
+/// baseline, and the point of the baseline where `align` (0 left, 0.5 centre, 1 right) is.
+struct placed_text {
+    std::string markup;  ///< the text, as Pango markup
+    double size_pt = 0;  ///< its size
+    double x = 0;        ///< the anchor, points from the left
+    double y = 0;        ///< the anchor (on the baseline), points from the top
+    double align = 0;    ///< which point of the text the anchor is: 0 left, 0.5 centre, 1 right
+    bool rotate = false; ///< turned by 90 degrees (reading upwards)
+};
+
 /// Text set with Pango in one font family, measured and drawn in points.
 class text_engine {
 public:
@@ -65,6 +76,12 @@ public:
     void draw(const std::string& markup, double size, double x, double y, double ax, double ay,
               bool rotate = false) const {
         const text_box& b = box(markup, size);
+        if (sink_) {
+            // The anchor on the baseline; LaTeX aligns the text about it by its own width.
+            const double down = -ay * (b.ascent + b.descent) + b.ascent;
+            sink_->push_back({markup, size, rotate ? x + down : x, rotate ? y : y + down, ax, rotate});
+            return;
+        }
         cairo_save(cr_);
         cairo_translate(cr_, x, y);
         if (rotate) cairo_rotate(cr_, -M_PI / 2);
@@ -74,13 +91,25 @@ public:
 
     /// Draws markup with the left end of its baseline at (x, y), turned by -90 degrees
     /// about that point with `rotate`.
-    void draw_on_baseline(const std::string& markup, double size, double x, double y, bool rotate = false) const {
+    void draw_on_baseline(const std::string& markup, double size, double x, double y, bool rotate = false,
+                          double align = 0) const {
+        if (sink_) {
+            // The ink's left end, centre or right end as the anchor, so that LaTeX's own
+            // width is what is aligned.
+            const text_ink i = ink(markup, size);
+            const double along = i.x + align * i.w;
+            sink_->push_back({markup, size, rotate ? x : x + along, rotate ? y - along : y, align, rotate});
+            return;
+        }
         cairo_save(cr_);
         cairo_translate(cr_, x, y);
         if (rotate) cairo_rotate(cr_, -M_PI / 2);
         show(box(markup, size), 0, 0);
         cairo_restore(cr_);
     }
+
+    /// Texts are recorded in `sink` instead of drawn (null: drawn).
+    void record_into(std::vector<placed_text>* sink) { sink_ = sink; }
 
 private:
     /// A label set as TeX sets math: runs of text on the baseline, and after them
@@ -282,6 +311,7 @@ private:
     }
 
     cairo_t* cr_;
+    std::vector<placed_text>* sink_ = nullptr;
     std::string family_;
     gobject_ptr<PangoContext> context_;
     mutable std::map<std::pair<std::string, double>, text_box> boxes_;

@@ -10,27 +10,28 @@ _pendulum_figures() {
     fi
     local command=${words[1]}
     case $prev in
-        -f|--formats) COMPREPLY=($(compgen -W "png pdf svg eps gif" -- "$cur")); return ;;
+        -f|--formats) COMPREPLY=($(compgen -W "png pdf svg eps gif pdf_tex eps_tex" -- "$cur")); return ;;
         --theme) COMPREPLY=($(compgen -W "paper slides slides-dark" -- "$cur") $(compgen -f -X '!*.toml' -- "$cur")); return ;;
         -o|--output-dir) [[ $command == data ]] && _filedir || _filedir -d; return ;;
         --output) _filedir; return ;;
         --format) COMPREPLY=($(compgen -W "csv json" -- "$cur")); return ;;
+        --tex-sizes) COMPREPLY=($(compgen -W "relative absolute" -- "$cur")); return ;;
         --method|--methods)
             COMPREPLY=($(compgen -W "exact harmonic lowest first second polynomial order: kidd-fogg lima-arun ganley agm: denman series: log-asymptote" -- "$cur"))
             compopt -o nospace
             return ;;
-        --theta0|--at|--order|--dpi|--samples|--periods|--range|--frames|--set|--name|--harmonic|--length|--g) return ;;
+        --theta0|--at|--order|--dpi|--samples|--periods|--range|--frames|--set|--name|--harmonic|--length|--g|--tex-font-size) return ;;
     esac
     local options=""
     case $command in
-        eval) options="--theta0 --order --method --length --g --format --help" ;;
-        trajectory) options="--theta0 --method --order --at --samples --periods --format --help" ;;
-        claims) options="--format --help" ;;
-        list) options="--markdown --help" ;;
-        show) options="--theme --help" ;;
-        render) options="--all -o --output-dir -f --formats --theme --set --dpi --theta0 --frames --at --force --paper-files --help" ;;
-        plot) options="--theta0 --methods --range --time --harmonic --y --name -o --output-dir -f --formats --theme --set --dpi --help" ;;
-        data) options="-o --output --theta0 --help" ;;
+        eval) options="--theta0 --order --method --length --g --format --help --help-all" ;;
+        trajectory) options="--theta0 --method --order --at --samples --periods --format --help --help-all" ;;
+        claims) options="--format --help --help-all" ;;
+        list) options="--markdown --help --help-all" ;;
+        show) options="--theme --help --help-all" ;;
+        render) options="--all -o --output-dir -f --formats --theme --set --dpi --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --help --help-all" ;;
+        plot) options="--theta0 --methods --range --time --harmonic --y --name -o --output-dir -f --formats --theme --set --dpi --help --help-all" ;;
+        data) options="-o --output --theta0 --help --help-all" ;;
     esac
     if [[ $cur == -* ]]; then
         COMPREPLY=($(compgen -W "$options" -- "$cur"))

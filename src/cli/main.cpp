@@ -372,7 +372,8 @@ struct render_options {
     bool force = false;  // rewrite files that would not change
     std::string frames;  // a..b, 1-based, of an animation
     std::string at;      // t/T of one frame of an animation
-    double tex_font_size = 10;  // the document's font size, for pdf_tex and eps_tex
+    std::optional<double> tex_font_size;  // the document's font size, for pdf_tex and eps_tex
+    std::string tex_sizes = "relative";  // how pdf_tex and eps_tex size their text
 };
 
 /// Parses --frames a..b (1-based, inclusive) into 0-based indices; b may be left out.
@@ -486,8 +487,22 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
                               " (" + overlay + "'s without its text); render them into different directories");
         }
     }
-    if (!(o.tex_font_size >= 5 && o.tex_font_size <= 30)) {
-        throw usage_error("--tex-font-size " + format_double(o.tex_font_size) + ": the document's font size in points, 5 to 30");
+    plot::output_options overlay;  // what the LaTeX overlays need; dpi is set per theme below
+    try {
+        overlay.tex_sizes = plot::find_tex_sizing(o.tex_sizes).value;
+    } catch (const std::invalid_argument& e) {
+        throw usage_error(std::string("--tex-sizes: ") + e.what());
+    }
+    if (o.tex_font_size) {
+        if (!(*o.tex_font_size >= 5 && *o.tex_font_size <= 30)) {
+            throw usage_error("--tex-font-size " + format_double(*o.tex_font_size) +
+                              ": the document's font size in points, 5 to 30");
+        }
+        if (overlay.tex_sizes == plot::tex_sizing::absolute) {
+            throw usage_error("--tex-font-size does nothing with --tex-sizes absolute: the text has the theme's "
+                              "sizes in points (--set tick_font_pt=... changes them)");
+        }
+        overlay.tex_font_pt = *o.tex_font_size;
     }
     const plot::theme theme = chosen_theme(o.theme.empty() ? "paper" : o.theme, o.sets);
     // Animations are for slides: theirs unless a theme is asked for.
@@ -592,7 +607,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
     }
 
     try {
-        if (!jobs.empty()) figures::write_figures(jobs, build, theme, plot::output_options{dpi, o.force, o.tex_font_size});
+        if (!jobs.empty()) figures::write_figures(jobs, build, theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes});
         for (const auto& m : moving) {
             for (const auto& f : formats) {
                 if (!at && figures::is_animation_format(f)) {
@@ -608,7 +623,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
                 const double w0_t = at ? *at * m.plan.reference_period : m.plan.time(m.frames.first);
                 const auto frame = figures::animation_frame(*m.entry, still, m.plan, figures::build(*m.entry, still), w0_t);
                 plot::save(frame, moving_theme, std::filesystem::path(o.dir) / (m.entry->id + "." + f),
-                           plot::output_options{moving_dpi, o.force, o.tex_font_size});
+                           plot::output_options{moving_dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes});
             }
         }
     } catch (const std::exception& e) {
@@ -658,6 +673,8 @@ std::string list_markdown() {
     }
     out << "\n| format | what |\n| --- | --- |\n";
     for (const auto& f : plot::format_table()) out << "| `" << f.name << "` | " << f.description << " |\n";
+    out << "\n| text sizes | what (`render --tex-sizes`, for pdf_tex and eps_tex) |\n| --- | --- |\n";
+    for (const auto& t : plot::tex_sizing_table()) out << "| `" << t.name << "` | " << md_cell(std::string(t.description)) << " |\n";
     out << "\n| theme | what |\n| --- | --- |\n";
     for (const auto& t : figures::builtin_themes()) out << "| `" << t.name << "` | " << t.description << " |\n";
     return out.str();
@@ -914,9 +931,16 @@ int main(int argc, char** argv) {
     render->add_flag("--force", ro.force, "Rewrite files that would not change (by default they are left alone, "
                                           "so their time stays and make does not rebuild)");
     render->add_option("--tex-font-size", ro.tex_font_size,
-                       "pdf_tex, eps_tex: the document's font size in points (default 10); the figure's text is "
-                       "set at sizes relative to it (\\footnotesize, \\small) and laid out to fit")
+                       "pdf_tex, eps_tex: the document's font size in points, 5..30 (default 10); the figure's "
+                       "text is set at sizes relative to it (\\footnotesize, \\small) and laid out to fit")
         ->type_name("PT");
+    {
+        std::string help = "pdf_tex, eps_tex: how the text is sized (default relative):";
+        for (const auto& row : plot::tex_sizing_table()) {
+            help += "\n  " + std::string(row.name) + ": " + std::string(row.description);
+        }
+        render->add_option("--tex-sizes", ro.tex_sizes, help)->type_name("HOW");
+    }
     render->add_flag("--paper-files", ro.paper_files,
                      "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
     render->footer(std::string("\n") + angle_help +
@@ -929,10 +953,13 @@ int main(int argc, char** argv) {
                    "  pendulum-figures render --all --paper-files -f eps -o paper/\n"
                    "\nLaTeX sets the text: -f pdf_tex writes ID.pdf without text and ID.pdf_tex, which the document "
                    "reads with \\usepackage{graphicx} and \\input{ID.pdf_tex}: every label in the document's own "
-                   "fonts, at \\footnotesize or \\small of its size (--tex-font-size). \\def\\figurewidth{8.6cm} "
+                   "fonts, at \\footnotesize or \\small of its size (--tex-font-size), or at the theme's sizes in "
+                   "points with --tex-sizes absolute (with Computer Modern: \\RequirePackage{fix-cm} first). "
+                   "\\def\\figurewidth{8.6cm} "
                    "before \\input scales the drawing, not the text. eps_tex is the same for latex and dvips. Labels "
                    "are the specs' TeX, verbatim; a macro LaTeX lacks shows only when the document is compiled.\n"
                    "  pendulum-figures render fig2 -f pdf_tex -o figures --tex-font-size 10\n"
+                   "  pendulum-figures render fig7 -f eps_tex --tex-sizes absolute --set tick_font_pt=8\n"
                    "\nAnimations (a spec with [animation]; built in: swing, separatrix) are written as a looping "
                    "GIF, a PDF of one page per frame, or PNG frames ID-0001.png ...; SVG and EPS, and every format "
                    "with --at, get one frame. In Beamer: \\usepackage{animate} and "

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string_view>
 #include <utility>
 
@@ -13,26 +14,44 @@ namespace plot {
 
 namespace {
 
-/// LaTeX's sizes in a 10 pt document (size10.clo), as multiples of \normalsize.
-constexpr std::array<std::pair<double, std::string_view>, 9> sizes = {{{0.5, "\\tiny"},
-                                                                      {0.7, "\\scriptsize"},
-                                                                      {0.8, "\\footnotesize"},
-                                                                      {0.9, "\\small"},
-                                                                      {1.0, "\\normalsize"},
-                                                                      {1.2, "\\large"},
-                                                                      {1.44, "\\Large"},
-                                                                      {1.728, "\\LARGE"},
-                                                                      {2.074, "\\huge"}}};
+/// LaTeX's size commands, smallest first.
+constexpr std::array<std::string_view, 9> commands = {"\\tiny",      "\\scriptsize", "\\footnotesize",
+                                                      "\\small",     "\\normalsize", "\\large",
+                                                      "\\Large",     "\\LARGE",      "\\huge"};
+using size_list = std::array<double, commands.size()>;
+/// Their sizes in points in the standard classes (size10.clo, size11.clo, size12.clo).
+constexpr size_list size10 = {5, 7, 8, 9, 10, 12, 14.4, 17.28, 20.74};
+constexpr size_list size11 = {6, 8, 9, 10, 10.95, 12, 14.4, 17.28, 20.74};
+constexpr size_list size12 = {6, 8, 10, 10.95, 12, 14.4, 17.28, 20.74, 24.88};
 
-/// The index of the size nearest to size_pt (in a 10 pt scale), nearest by ratio.
-std::size_t nearest_size(double size_pt) {
+/// The sizes in a document set at document_pt: the class files' at 10, 11 (or 10.95) and
+/// 12 pt, and the 10 pt ones scaled at any other size.
+size_list document_sizes(double document_pt) {
+    if (std::fabs(document_pt - 10) < 0.01) return size10;
+    if (std::fabs(document_pt - 11) < 0.06) return size11;
+    if (std::fabs(document_pt - 12) < 0.01) return size12;
+    size_list scaled = size10;
+    for (double& pt : scaled) pt *= document_pt / 10;
+    return scaled;
+}
+
+/// The index of the size in the list nearest to size_pt, nearest by ratio.
+std::size_t nearest_size(double size_pt, const size_list& list) {
     std::size_t best = 0;
-    for (std::size_t i = 1; i < sizes.size(); ++i) {
-        if (std::fabs(std::log(size_pt / 10 / sizes[i].first)) < std::fabs(std::log(size_pt / 10 / sizes[best].first))) {
-            best = i;
-        }
+    for (std::size_t i = 1; i < list.size(); ++i) {
+        if (std::fabs(std::log(size_pt / list[i])) < std::fabs(std::log(size_pt / list[best]))) best = i;
     }
     return best;
+}
+
+/// A size in points as LaTeX reads it: at most two decimals, no trailing zeros.
+std::string points(double pt) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f", pt);
+    std::string s = buf;
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s;
 }
 
 std::string fixed(double v) {
@@ -45,27 +64,61 @@ std::string fixed(double v) {
 
 }  // namespace
 
-theme latex_sized_theme(const theme& th, double document_pt) {
+theme latex_sized_theme(const theme& th, const output_options& options) {
     theme sized = th;
+    if (options.tex_sizes == tex_sizing::absolute) return sized;
+    const size_list in_document = document_sizes(options.tex_font_pt);
     for (double* pt : {&sized.tick_font_pt, &sized.label_font_pt, &sized.legend_font_pt}) {
-        *pt = sizes[nearest_size(*pt)].first * document_pt;
+        *pt = in_document[nearest_size(*pt, size10)];
     }
     return sized;
 }
 
-std::string latex_size_command(double size_pt, double document_pt) {
-    return std::string(sizes[nearest_size(size_pt * 10 / document_pt)].second);
+std::string latex_size_command(double size_pt, const output_options& options) {
+    if (options.tex_sizes == tex_sizing::absolute) {
+        return "\\fontsize{" + points(size_pt) + "}{" + points(1.2 * size_pt) + "}\\selectfont";
+    }
+    return std::string(commands[nearest_size(size_pt, document_sizes(options.tex_font_pt))]);
+}
+
+namespace {
+
+constexpr std::array<tex_sizing_row, 2> sizings = {{
+    {"relative", tex_sizing::relative,
+     "LaTeX's size commands (\\footnotesize, \\small): the text follows the document's size, "
+     "given by --tex-font-size"},
+    {"absolute", tex_sizing::absolute,
+     "the theme's sizes in points (\\fontsize{7.5}{9}): the same in any document (--set tick_font_pt=... "
+     "changes them)"},
+}};
+
+}  // namespace
+
+std::span<const tex_sizing_row> tex_sizing_table() { return sizings; }
+
+const tex_sizing_row& find_tex_sizing(std::string_view name) {
+    for (const auto& row : sizings) {
+        if (row.name == name) return row;
+    }
+    std::string list;
+    for (const auto& row : sizings) list += (list.empty() ? "" : ", ") + std::string(row.name);
+    throw std::invalid_argument("unknown text sizing '" + std::string(name) + "'; sizings: " + list);
 }
 
 std::string latex_picture(const std::vector<placed_text>& texts, page_size size, const theme& th,
-                          const std::string& graphics_name, double document_pt) {
+                          const std::string& graphics_name, const output_options& options) {
     const double w = size.width_pt;
     const double h = size.height_pt;
     const bool black = th.foreground.r == 0 && th.foreground.g == 0 && th.foreground.b == 0;
     std::string out;
     out += "%% LaTeX text of " + graphics_name + ", written by pendulum-figures.\n";
     out += "%% \\input{this file} with \\usepackage{graphicx}; \\def\\figurewidth{8.6cm} first scales the drawing,\n";
-    out += "%% not the text, which is set in the document's fonts at sizes relative to its own.\n";
+    if (options.tex_sizes == tex_sizing::absolute) {
+        out += "%% not the text, which is set in the document's fonts at sizes in points (\\fontsize): with\n";
+        out += "%% Computer Modern, \\RequirePackage{fix-cm} before \\documentclass makes every size exist.\n";
+    } else {
+        out += "%% not the text, which is set in the document's fonts at sizes relative to its own.\n";
+    }
     out += "\\begingroup%\n";
     out += "\\makeatletter%\n";
     // Colour without the color package is no colour; amsmath's macros without amsmath, plain ones.
@@ -90,7 +143,7 @@ std::string latex_picture(const std::vector<placed_text>& texts, page_size size,
     for (const auto& t : texts) {
         const char* align = t.align < 0.25 ? "l" : t.align > 0.75 ? "r" : "c";
         std::string box = std::string("\\makebox(0,0)[") + align + "]{\\smash{" +
-                          latex_size_command(t.size_pt, document_pt) + " " + markup_to_latex(t.markup) + "}}";
+                          latex_size_command(t.size_pt, options) + " " + markup_to_latex(t.markup) + "}}";
         if (t.rotate) box = "\\rotatebox{90}{" + box + "}";
         out += "  \\put(" + fixed(t.x / w) + "," + fixed((h - t.y) / w) + "){" + box + "}%\n";
     }

@@ -2,6 +2,7 @@
 #pragma once
 // Part of the plot layer's renderer; not a public interface.
 
+#include "plot/output.hpp"
 #include "plot/render.hpp"
 #include "plot/text.hpp"
 #include "plot/theme.hpp"
@@ -11,18 +12,20 @@
 
 namespace plot {
 
-/// The theme with its text sizes moved to the nearest of LaTeX's sizes (\scriptsize,
-/// \footnotesize, \small, ...) in a document set at document_pt, so that the layout,
-/// measured with Computer Modern's metrics, makes room for the text the document sets.
-theme latex_sized_theme(const theme& th, double document_pt);
+/// The theme with, for relative sizes, each text size (meant for a 10 pt document) moved to
+/// the size of the nearest LaTeX command (\scriptsize, \footnotesize, \small, ...) in a
+/// document set at options.tex_font_pt, so that the layout, measured with Computer Modern's
+/// metrics, makes room for the text the document sets. Absolute sizes keep the theme's.
+theme latex_sized_theme(const theme& th, const output_options& options);
 
-/// The LaTeX size command nearest to size_pt in a document set at document_pt.
-std::string latex_size_command(double size_pt, double document_pt);
+/// What sets text of size_pt (a size of the sized theme): the LaTeX size command of that size
+/// in the document, or \fontsize for absolute sizes.
+std::string latex_size_command(double size_pt, const output_options& options);
 
 /// A picture environment (as Inkscape's pdf_tex files) that includes graphics_name at the
 /// figure's size, or at \figurewidth if the document defines it (the text keeps its size),
-/// and puts each text at its anchor as LaTeX, relative to the document's font size.
+/// and puts each text at its anchor as LaTeX, sized as options say.
 std::string latex_picture(const std::vector<placed_text>& texts, page_size size, const theme& th,
-                          const std::string& graphics_name, double document_pt);
+                          const std::string& graphics_name, const output_options& options);
 
 }  // namespace plot

@@ -391,12 +391,12 @@ bool write_if_changed(const std::filesystem::path& path, const std::string& byte
 
 overlay_files render_overlay(const figure& fig, const theme& th, std::string_view graphics_format,
                              const std::string& graphics_name, const output_options& options) {
-    const theme sized = latex_sized_theme(th, options.tex_font_pt);
+    const theme sized = latex_sized_theme(th, options);
     std::vector<placed_text> texts;
     overlay_files files;
     files.graphics = graphics_format == "pdf" ? render_pdf(fig, sized, options, &texts)
                                               : render_eps(fig, sized, options, &texts);
-    files.tex = latex_picture(texts, figure_size(fig, sized), sized, graphics_name, options.tex_font_pt);
+    files.tex = latex_picture(texts, figure_size(fig, sized), sized, graphics_name, options);
     return files;
 }
 

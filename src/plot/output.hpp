@@ -12,11 +12,31 @@
 
 namespace plot {
 
+/// How a LaTeX overlay (pdf_tex, eps_tex) sizes its text.
+enum class tex_sizing {
+    relative,  ///< LaTeX's size commands (\footnotesize, \small): the text follows the document's size
+    absolute,  ///< the theme's sizes in points (\fontsize): the same in any document
+};
+
+/// One way of sizing an overlay's text: its name, what it does, for help, errors and lists.
+struct tex_sizing_row {
+    std::string_view name;         ///< the value of --tex-sizes
+    tex_sizing value;              ///< the sizing
+    std::string_view description;  ///< one line for help and lists
+};
+
+/// Every way of sizing an overlay's text, the default first.
+std::span<const tex_sizing_row> tex_sizing_table();
+
+/// The sizing of that name; throws std::invalid_argument listing the names otherwise.
+const tex_sizing_row& find_tex_sizing(std::string_view name);
+
 /// Options that apply when a figure is written.
 struct output_options {
     double dpi = 300;          ///< raster resolution (PNG)
     bool force = false;        ///< rewrite a file even if it already holds the same bytes
-    double tex_font_pt = 10;   ///< the document's font size, for pdf_tex and eps_tex
+    double tex_font_pt = 10;   ///< the document's font size, for pdf_tex and eps_tex (relative sizes)
+    tex_sizing tex_sizes = tex_sizing::relative;  ///< how pdf_tex and eps_tex size their text
 };
 
 /// The smallest and largest accepted --dpi.

@@ -92,6 +92,18 @@ TEST(Hardening, ManyPanelsAreLetteredInPlainAscii) {
     for (const char c : r.out) EXPECT_LT(static_cast<unsigned char>(c), 0x80u);
 }
 
+TEST(Hardening, AFigureTooSmallForItsTextIsBadInput) {
+    const auto dir = temp_dir("too-small");
+    const auto r = run_cli("render fig2 --theme slides --set figure_width_cm=10.8 --set figure_height_cm=6.5 -f png -o '" +
+                           dir.string() + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("trajectory-lowest.png: a figure of 10.8 x 6.5 cm leaves panel 1 of 4 axes of"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("too small for 14 pt text"), std::string::npos) << r.err;
+    EXPECT_TRUE(files_in(dir).empty());
+    fs::remove_all(dir);
+}
+
 TEST(Hardening, TooManyAmplitudesForThePaperFilesIsCheckedFirst) {
     const auto dir = temp_dir("paper-files");
     const auto r = run_cli("render fig2 --paper-files --theta0 0.5,1,1.5,2,2.5 -f pdf -o '" + dir.string() + "'");

@@ -464,3 +464,54 @@ TEST(Ticks, DegreesDivideTheCircle) {
     EXPECT_EQ(degree_ticks(0, 10, 6, false).major, (std::vector<double>{0, 2, 4, 6, 8, 10}));
     for (std::size_t i = 0; i < t.major.size(); ++i) EXPECT_EQ(t.major[i], 45.0 * static_cast<double>(i));
 }
+
+/// One panel of a line from (0, 10) to (1, 20), in a figure of a fixed size.
+figure line_figure() {
+    figure f;
+    panel p;
+    p.x.label = "<i>x</i>";
+    p.y.label = "<i>y</i>";
+    p.data = {series{"line", {0, 1}, {10, 20}, line_style::solid, marker_style::none, 0}};
+    f.panels.push_back(p);
+    return f;
+}
+
+plot::theme fixed_size(double width_cm, double height_cm) {
+    plot::theme th = paper_theme();
+    th.fixed_width_cm = width_cm;
+    th.fixed_height_cm = height_cm;
+    return th;
+}
+
+TEST(Layout, FewerTicksWhereTheirLabelsWouldTouch) {
+    // The texts the figure puts, as LaTeX: every tick label is there.
+    const auto texts = [](const plot::theme& th) {
+        return render_overlay(line_figure(), th, "pdf", "f.pdf", {}).tex;
+    };
+    const std::string wide = texts(fixed_size(12, 6));
+    for (const char* label : {"$0.0$", "$0.2$", "$0.4$", "$0.6$", "$0.8$", "$1.0$", "$12$"}) {
+        EXPECT_NE(wide.find(label), std::string::npos) << label << "\n" << wide;
+    }
+    // 2.5 cm leaves no room for six labels: three, on the same limits.
+    const std::string narrow = texts(fixed_size(2.5, 4));
+    EXPECT_EQ(narrow.find("$0.2$"), std::string::npos) << narrow;
+    for (const char* label : {"$0.0$", "$0.5$", "$1.0$"}) {
+        EXPECT_NE(narrow.find(label), std::string::npos) << label << "\n" << narrow;
+    }
+    // Low, the y axis keeps its limits with fewer labels too.
+    const std::string low = texts(fixed_size(8, 2.1));
+    EXPECT_NE(low.find("$10$"), std::string::npos) << low;
+    EXPECT_NE(low.find("$20$"), std::string::npos) << low;
+    EXPECT_EQ(low.find("$12$"), std::string::npos) << low;
+}
+
+TEST(Layout, AxesTooSmallToReadAreAnError) {
+    EXPECT_NO_THROW(render(line_figure(), fixed_size(3, 2.5), "svg", {}));
+    try {
+        render(line_figure(), fixed_size(2, 1), "svg", {});
+        FAIL() << "no error";
+    } catch (const plot::layout_error& e) {
+        EXPECT_NE(std::string(e.what()).find("a figure of 2.0 x 1.0 cm leaves panel 1 of 1 axes of"), std::string::npos)
+            << e.what();
+    }
+}

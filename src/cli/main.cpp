@@ -9,6 +9,7 @@
 #include "figures/spec_build.hpp"
 #include "figures/themes.hpp"
 #include "plot/output.hpp"
+#include "plot/render.hpp"
 #include "plot/theme.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/approximants.hpp"
@@ -626,6 +627,9 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
                            plot::output_options{moving_dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes});
             }
         }
+    } catch (const plot::layout_error& e) {
+        report_error(e.what());  // the theme or the figure asks for too little room: bad input
+        return 2;
     } catch (const std::exception& e) {
         report_error(e.what());
         return 1;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
 
 namespace plot {
 
@@ -50,21 +52,39 @@ tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizon
     return t;
 }
 
-panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th) {
+panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th, const tick_limit& x_limit,
+                      const tick_limit& y_limit) {
     panel_plan plan;
-    plan.xt = axis_ticks(p.x, p.data, true);
-    plan.yt = axis_ticks(p.y, p.data, false);
+    const auto limited = [](axis a, const tick_limit& limit) {
+        if (limit.max_ticks > 0) a.max_ticks = std::min(a.max_ticks, limit.max_ticks);
+        if (limit.fixed) {
+            a.min = limit.lo;
+            a.max = limit.hi;
+        }
+        return a;
+    };
+    const axis x = limited(p.x, x_limit);
+    const axis y = limited(p.y, y_limit);
+    plan.x_limit = x_limit;
+    plan.y_limit = y_limit;
+    plan.xt = axis_ticks(x, p.data, true);
+    plan.yt = axis_ticks(y, p.data, false);
     const text_ink digit = text.ink("0", th.tick_font_pt);
     plan.digit_h = digit.h;
     // Half a digit and a little: the lowest y tick label, centred on the bottom edge, then
     // clears the first x tick label at the same distance from the frame.
     plan.tick_gap = 0.5 * digit.h + 0.15 * th.tick_font_pt;
     plan.label_gap = 0.8 * th.padding_pt;
-    for (const auto& l : plan.yt.labels) plan.ytick_w = std::max(plan.ytick_w, text.ink(l, th.tick_font_pt).w);
+    for (const auto& l : plan.yt.labels) {
+        const text_ink i = text.ink(l, th.tick_font_pt);
+        plan.ytick_w = std::max(plan.ytick_w, i.w);
+        plan.ytick_extent.push_back(i.h);
+    }
     for (const auto& l : plan.xt.labels) {
         const text_ink i = text.ink(l, th.tick_font_pt);
         plan.xtick_up = std::max(plan.xtick_up, -i.y);
         plan.xtick_down = std::max(plan.xtick_down, i.y + i.h);
+        plan.xtick_extent.push_back(i.w);
     }
     if (!p.y.label.empty()) plan.ylabel_h = text.ink(p.y.label, th.label_font_pt).h;
     if (!p.x.label.empty()) plan.xlabel_h = text.ink(p.x.label, th.label_font_pt).h;
@@ -76,6 +96,78 @@ panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th) 
     plan.right = pad + 0.5 * last_xtick_w;
     plan.legend = measure_legend(text, p, th);
     return plan;
+}
+
+bool tick_labels_fit(const tick_set& t, const std::vector<double>& extents, const axis_map& m, double font_pt) {
+    const double gap = 0.5 * font_pt;
+    const double lo = std::min(m.d0, m.d1) - 0.01;
+    const double hi = std::max(m.d0, m.d1) + 0.01;
+    bool any = false;
+    double last_d = 0;
+    double last_half = 0;
+    for (std::size_t i = 0; i < t.major.size() && i < extents.size(); ++i) {
+        const double d = m(t.major[i]);
+        if (!(d >= lo && d <= hi)) continue;
+        const double half = 0.5 * extents[i];
+        if (any && std::fabs(d - last_d) < last_half + half + gap) return false;
+        any = true;
+        last_d = d;
+        last_half = half;
+    }
+    return true;
+}
+
+namespace {
+
+/// A plan of the panel with fewer ticks on one axis and the same limits, if the locator has
+/// one: thinning must not move the limits, or the data would shrink to make room for labels.
+std::optional<panel_plan> thinner(const text_engine& text, const panel& p, const theme& th, const panel_plan& plan,
+                                  bool horizontal) {
+    const tick_set& old = horizontal ? plan.xt : plan.yt;
+    tick_limit limit = horizontal ? plan.x_limit : plan.y_limit;
+    limit.fixed = true;
+    limit.lo = old.lo;
+    limit.hi = old.hi;
+    const int asked = (horizontal ? p.x : p.y).max_ticks;
+    for (int n = std::min(asked, static_cast<int>(old.major.size())) - 1; n >= 2; --n) {
+        limit.max_ticks = n;
+        panel_plan fewer = plan_panel(text, p, th, horizontal ? limit : plan.x_limit, horizontal ? plan.y_limit : limit);
+        const tick_set& t = horizontal ? fewer.xt : fewer.yt;
+        if (t.major.size() < old.major.size() && t.major.size() >= 2) return fewer;
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+void thin_crowded_ticks(const text_engine& text, const std::vector<panel>& panels, std::vector<panel_plan>& plans,
+                        const std::vector<panel_plan>& peers, const std::vector<rect>& cells, const theme& th,
+                        int cols) {
+    for (bool thinned = true; thinned;) {
+        thinned = false;
+        for (std::size_t i = 0; i < panels.size(); ++i) {
+            const panel& p = panels[i];
+            if (p.frameless) continue;
+            for (const bool horizontal : {true, false}) {
+                rect area = axes_area(plans[i], cells[i]);
+                if (p.equal_aspect) area = equal_aspect_area(area, plans[i]);
+                const axis_map m = horizontal ? axis_map{plans[i].xt.lo, plans[i].xt.hi, p.x.kind == scale::log,
+                                                         area.x, area.x + area.w}
+                                              : axis_map{plans[i].yt.lo, plans[i].yt.hi, p.y.kind == scale::log,
+                                                         area.y + area.h, area.y};
+                const bool fit = horizontal ? tick_labels_fit(plans[i].xt, plans[i].xtick_extent, m, th.tick_font_pt)
+                                            : tick_labels_fit(plans[i].yt, plans[i].ytick_extent, m, th.tick_font_pt);
+                if (fit) {
+                    continue;
+                }
+                if (auto fewer = thinner(text, p, th, plans[i], horizontal)) {
+                    plans[i] = std::move(*fewer);
+                    share_margins(plans, peers, th, cols);  // before the next axis is measured
+                    thinned = true;
+                }
+            }
+        }
+    }
 }
 
 void share_margins(std::vector<panel_plan>& plans, const std::vector<panel_plan>& peers, const theme& th, int cols) {

@@ -16,6 +16,14 @@ namespace plot {
 /// The ticks and limits of an axis: its fixed limits, or the data's with a margin.
 tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizontal);
 
+/// Fewer ticks on an axis than it asks for, within fixed limits: how crowded labels thin out.
+struct tick_limit {
+    int max_ticks = 0;   // at most this many major ticks, if positive
+    bool fixed = false;  // keep the axis at [lo, hi]
+    double lo = 0;
+    double hi = 0;
+};
+
 /// Everything needed to lay out one panel before it is drawn: ticks, the sizes of its
 /// texts, margins, legend. Text sizes are of ink, so that gaps are the same on every side.
 struct panel_plan {
@@ -35,16 +43,33 @@ struct panel_plan {
     double top = 0;
     double right = 0;
     legend_layout legend;
+    std::vector<double> xtick_extent;  // ink width of each x tick label
+    std::vector<double> ytick_extent;  // ink height of each y tick label
+    tick_limit x_limit;     // what the x locator was allowed
+    tick_limit y_limit;     // what the y locator was allowed
 };
 
-/// Measures a panel's ticks, labels and legend; margins come from share_margins.
-panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th);
+/// Measures a panel's ticks, labels and legend; margins come from share_margins. The
+/// limits, where given, allow fewer ticks than the axes ask for.
+panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th, const tick_limit& x_limit = {},
+                      const tick_limit& y_limit = {});
+
+/// Whether an axis's major tick labels, where the map puts them, stand apart by half the
+/// tick font size; extents are their ink widths (x) or heights (y), one per major tick.
+bool tick_labels_fit(const tick_set& t, const std::vector<double>& extents, const axis_map& m, double font_pt);
 
 /// Gives every plan the largest text sizes among them and margins to fit, so that panels
 /// drawn beside each other, or alone in files of their own, have the same frame and their
 /// y labels line up (matplotlib's align_ylabels).
 /// Plans are of a grid with `cols` columns, row-major.
 void share_margins(std::vector<panel_plan>& plans, const std::vector<panel_plan>& peers, const theme& th, int cols);
+
+/// Fewer ticks where an axis's labels would touch in the cell its panel gets (a figure of a
+/// fixed size, small panels, large text): each crowded axis is allowed one tick less, down
+/// to two, and the margins are shared again, until every axis fits.
+void thin_crowded_ticks(const text_engine& text, const std::vector<panel>& panels, std::vector<panel_plan>& plans,
+                        const std::vector<panel_plan>& peers, const std::vector<rect>& cells, const theme& th,
+                        int cols);
 
 /// Where a panel's data lands: the axes rectangle, the maps, the series in device points.
 struct panel_geometry {

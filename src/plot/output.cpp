@@ -400,7 +400,10 @@ overlay_files render_overlay(const figure& fig, const theme& th, std::string_vie
     return files;
 }
 
-void save(const figure& fig, const theme& th, const std::filesystem::path& path, const output_options& options) {
+namespace {
+
+/// save, without the file's name in layout errors.
+void save_unnamed(const figure& fig, const theme& th, const std::filesystem::path& path, const output_options& options) {
     std::string ext = path.extension().string();
     if (!ext.empty()) ext.erase(0, 1);
     const auto write = [&](const std::filesystem::path& p, const std::string& bytes) {
@@ -421,6 +424,16 @@ void save(const figure& fig, const theme& th, const std::filesystem::path& path,
         return;
     }
     write(path, row.write(fig, th, options));
+}
+
+}  // namespace
+
+void save(const figure& fig, const theme& th, const std::filesystem::path& path, const output_options& options) {
+    try {
+        save_unnamed(fig, th, path, options);
+    } catch (const layout_error& e) {
+        throw layout_error(path.filename().string() + ": " + e.what());
+    }
 }
 
 }  // namespace plot

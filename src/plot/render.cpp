@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -242,7 +243,26 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         return cells;
     };
     std::vector<rect> cells = make_cells(0);
+    thin_crowded_ticks(text, fig.panels, plans, peers, cells, th, fig.cols);
+    // Axes too small to read are an error, not a figure.
+    const auto check_room = [&] {
+        const double least = 3 * th.tick_font_pt;
+        for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+            const rect area = axes_area(plans[i], cells[i]);
+            if (area.w >= least && area.h >= least) continue;
+            constexpr double cm = 2.54 / 72;
+            char what[256];
+            std::snprintf(what, sizeof what,
+                          "a figure of %.1f x %.1f cm leaves panel %zu of %zu axes of %.1f x %.1f cm, too small for "
+                          "%.3g pt text: make the figure larger (figure_width_cm and figure_height_cm, or "
+                          "panel_width_cm) or its text smaller (tick_font_pt, label_font_pt, legend_font_pt)",
+                          size.width_pt * cm, size.height_pt * cm, i + 1, fig.panels.size(), std::max(area.w, 0.0) * cm,
+                          std::max(area.h, 0.0) * cm, th.tick_font_pt);
+            throw layout_error(what);
+        }
+    };
     if (!fig.shared_legend || fig.panels.empty()) {
+        check_room();
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {
             draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], true, pass);
         }
@@ -265,6 +285,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         }
         cells = make_cells(band + 0.3 * th.padding_pt);
     }
+    check_room();
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
         if (legend_panel && i == *legend_panel) plans[i].legend = lg;
         draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], legend_panel && i == *legend_panel, pass);

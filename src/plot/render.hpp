@@ -6,6 +6,7 @@
 
 #include <cairo.h>
 
+#include <stdexcept>
 #include <vector>
 
 namespace plot {
@@ -25,9 +26,16 @@ enum class draw_pass { all, still, overlay };
 
 struct placed_text;
 
+/// A figure that cannot be laid out as asked: its size leaves axes too small to read.
+class layout_error : public std::invalid_argument {
+public:
+    using std::invalid_argument::invalid_argument;
+};
+
 /// Draws the figure on cr, whose user units are points, filling [0, w] x [0, h]; with
 /// `texts`, every text is recorded there (for a LaTeX overlay) instead of drawn.
-/// Throws std::runtime_error if the theme's font is not installed.
+/// Throws std::runtime_error if the theme's font is not installed, layout_error if a panel's
+/// axes would be smaller than three times the tick font size either way.
 void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size, draw_pass pass = draw_pass::all,
                  std::vector<placed_text>* texts = nullptr);
 

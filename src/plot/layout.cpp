@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 namespace plot {
@@ -149,17 +150,10 @@ void thin_crowded_ticks(const text_engine& text, const std::vector<panel>& panel
             const panel& p = panels[i];
             if (p.frameless) continue;
             for (const bool horizontal : {true, false}) {
-                rect area = axes_area(plans[i], cells[i]);
-                if (p.equal_aspect) area = equal_aspect_area(area, plans[i]);
-                const axis_map m = horizontal ? axis_map{plans[i].xt.lo, plans[i].xt.hi, p.x.kind == scale::log,
-                                                         area.x, area.x + area.w}
-                                              : axis_map{plans[i].yt.lo, plans[i].yt.hi, p.y.kind == scale::log,
-                                                         area.y + area.h, area.y};
-                const bool fit = horizontal ? tick_labels_fit(plans[i].xt, plans[i].xtick_extent, m, th.tick_font_pt)
-                                            : tick_labels_fit(plans[i].yt, plans[i].ytick_extent, m, th.tick_font_pt);
-                if (fit) {
-                    continue;
-                }
+                const auto [mx, my] = axis_maps(p, plans[i], panel_area(p, plans[i], cells[i]));
+                const bool fit = horizontal ? tick_labels_fit(plans[i].xt, plans[i].xtick_extent, mx, th.tick_font_pt)
+                                            : tick_labels_fit(plans[i].yt, plans[i].ytick_extent, my, th.tick_font_pt);
+                if (fit) continue;
                 if (auto fewer = thinner(text, p, th, plans[i], horizontal)) {
                     plans[i] = std::move(*fewer);
                     share_margins(plans, peers, th, cols);  // before the next axis is measured
@@ -218,17 +212,26 @@ rect equal_aspect_area(const rect& area, const panel_plan& plan) {
     return {area.x + 0.5 * (area.w - w), area.y + 0.5 * (area.h - h), w, h};
 }
 
+std::pair<axis_map, axis_map> axis_maps(const panel& p, const panel_plan& plan, const rect& area) {
+    return {axis_map{plan.xt.lo, plan.xt.hi, p.x.kind == scale::log, area.x, area.x + area.w},
+            axis_map{plan.yt.lo, plan.yt.hi, p.y.kind == scale::log, area.y + area.h, area.y}};
+}
+
 panel_geometry place_panel(const panel& p, const panel_plan& plan, const rect& area) {
     panel_geometry g;
     g.area = area;
-    g.mx = axis_map{plan.xt.lo, plan.xt.hi, p.x.kind == scale::log, area.x, area.x + area.w};
-    g.my = axis_map{plan.yt.lo, plan.yt.hi, p.y.kind == scale::log, area.y + area.h, area.y};
+    std::tie(g.mx, g.my) = axis_maps(p, plan, area);
     for (const auto& s : p.data) g.dev.push_back(to_device(s, g.mx, g.my));
     return g;
 }
 
 rect axes_area(const panel_plan& plan, const rect& cell) {
     return {cell.x + plan.left, cell.y + plan.top, cell.w - plan.left - plan.right, cell.h - plan.top - plan.bottom};
+}
+
+rect panel_area(const panel& p, const panel_plan& plan, const rect& cell) {
+    const rect area = axes_area(plan, cell);
+    return p.equal_aspect ? equal_aspect_area(area, plan) : area;
 }
 
 std::optional<rect> legend_inside(const panel& p, const legend_layout& lg, const panel_geometry& g,

@@ -9,6 +9,7 @@
 #include "plot/ticks.hpp"
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace plot {
@@ -79,6 +80,9 @@ struct panel_geometry {
     std::vector<device_series> dev;
 };
 
+/// The maps from the panel's data to device points on the axes rectangle `area` (x, y).
+std::pair<axis_map, axis_map> axis_maps(const panel& p, const panel_plan& plan, const rect& area);
+
 /// Maps the panel's data into the axes rectangle `area`.
 panel_geometry place_panel(const panel& p, const panel_plan& plan, const rect& area);
 
@@ -87,6 +91,10 @@ rect equal_aspect_area(const rect& area, const panel_plan& plan);
 
 /// The axes rectangle of a cell, inside the plan's margins.
 rect axes_area(const panel_plan& plan, const rect& cell);
+
+/// The panel's axes rectangle in its cell: axes_area, narrowed to equal_aspect_area where
+/// the panel asks for one.
+rect panel_area(const panel& p, const panel_plan& plan, const rect& cell);
 
 /// The first candidate spot for the legend inside the axes that covers no data, if any.
 std::optional<rect> legend_inside(const panel& p, const legend_layout& lg, const panel_geometry& g,

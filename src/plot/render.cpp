@@ -76,8 +76,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         return pass == draw_pass::all || (pass == draw_pass::overlay) == s.overlay;
     };
     const double pad = th.padding_pt;
-    panel_geometry g = place_panel(p, plan, axes_area(plan, cell));
-    if (p.equal_aspect) g = place_panel(p, plan, equal_aspect_area(g.area, plan));
+    panel_geometry g = place_panel(p, plan, panel_area(p, plan, cell));
     const legend_layout& lg = plan.legend;
     std::optional<rect> legend_box;
     std::optional<rect> legend_band;

@@ -15,44 +15,6 @@ table_format parse_table_format(std::string_view text) {
     throw std::invalid_argument("unknown format '" + std::string(text) + "'; use csv or json");
 }
 
-table_writer::table_writer(std::ostream& out, std::vector<std::string> columns, table_format format)
-    : out_(out), columns_(std::move(columns)), format_(format) {
-    if (format_ == table_format::csv) {
-        for (std::size_t i = 0; i < columns_.size(); ++i) out_ << (i ? "," : "") << columns_[i];
-        out_ << '\n';
-    } else {
-        out_ << "[";
-    }
-}
-
-void table_writer::row(const std::vector<double>& values) {
-    if (format_ == table_format::csv) {
-        // A value that does not exist (the iteration's breakdown) is an empty field.
-        for (std::size_t i = 0; i < values.size(); ++i) {
-            out_ << (i ? "," : "") << (std::isfinite(values[i]) ? format_double(values[i]) : "");
-        }
-        out_ << '\n';
-    } else {
-        out_ << (rows_ ? ",\n " : "\n ") << "{";
-        for (std::size_t i = 0; i < columns_.size() && i < values.size(); ++i) {
-            const double v = values[i];
-            out_ << (i ? ", " : "") << '"' << columns_[i] << "\": " << (std::isfinite(v) ? format_double(v) : "null");
-        }
-        out_ << "}";
-    }
-    ++rows_;
-}
-
-void table_writer::finish() {
-    if (format_ == table_format::json) out_ << (rows_ ? "\n]\n" : "]\n");
-}
-
-void write_table(std::ostream& out, const table& t, table_format format) {
-    table_writer w(out, t.columns, format);
-    for (const auto& row : t.rows) w.row(row);
-    w.finish();
-}
-
 namespace {
 
 std::string csv_quoted(const std::string& text) {
@@ -79,45 +41,67 @@ std::string json_quoted(const std::string& text) {
     return out + "\"";
 }
 
-std::string number_text(double v, table_format format) {
+/// A number as a field: a value that does not exist (the iteration's breakdown) is an empty
+/// CSV field or JSON null.
+std::string cell(double v, table_format format) {
     if (std::isfinite(v)) return format_double(v);
     return format == table_format::json ? "null" : "";
 }
 
+std::string cell(const field& v, table_format format) {
+    if (const auto* text = std::get_if<std::string>(&v)) {
+        return format == table_format::csv ? csv_quoted(*text) : json_quoted(*text);
+    }
+    return cell(std::get<double>(v), format);
+}
+
 }  // namespace
+
+table_writer::table_writer(std::ostream& out, std::vector<std::string> columns, table_format format)
+    : out_(out), format_(format) {
+    if (format_ == table_format::csv) {
+        for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "," : "") << csv_quoted(columns[i]);
+        out_ << '\n';
+    } else {
+        for (const auto& c : columns) keys_.push_back(json_quoted(c) + ": ");
+        out_ << "[";
+    }
+}
+
+template <class Value>
+void table_writer::write_row(const std::vector<Value>& values) {
+    if (format_ == table_format::csv) {
+        for (std::size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << cell(values[i], format_);
+        out_ << '\n';
+    } else {
+        out_ << (rows_ ? ",\n " : "\n ") << "{";
+        for (std::size_t i = 0; i < keys_.size() && i < values.size(); ++i) {
+            out_ << (i ? ", " : "") << keys_[i] << cell(values[i], format_);
+        }
+        out_ << "}";
+    }
+    ++rows_;
+}
+
+void table_writer::row(const std::vector<double>& values) { write_row(values); }
+
+void table_writer::record(const std::vector<field>& values) { write_row(values); }
+
+void table_writer::finish() {
+    if (format_ == table_format::json) out_ << (rows_ ? "\n]\n" : "]\n");
+}
+
+void write_table(std::ostream& out, const table& t, table_format format) {
+    table_writer w(out, t.columns, format);
+    for (const auto& row : t.rows) w.row(row);
+    w.finish();
+}
 
 void write_records(std::ostream& out, const std::vector<std::string>& columns,
                    const std::vector<std::vector<field>>& rows, table_format format) {
-    if (format == table_format::csv) {
-        for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << csv_quoted(columns[i]);
-        out << '\n';
-        for (const auto& row : rows) {
-            for (std::size_t i = 0; i < row.size(); ++i) {
-                out << (i ? "," : "");
-                if (const auto* text = std::get_if<std::string>(&row[i])) {
-                    out << csv_quoted(*text);
-                } else {
-                    out << number_text(std::get<double>(row[i]), format);
-                }
-            }
-            out << '\n';
-        }
-        return;
-    }
-    out << "[";
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-        out << (r ? ",\n " : "\n ") << "{";
-        for (std::size_t i = 0; i < columns.size() && i < rows[r].size(); ++i) {
-            out << (i ? ", " : "") << json_quoted(columns[i]) << ": ";
-            if (const auto* text = std::get_if<std::string>(&rows[r][i])) {
-                out << json_quoted(*text);
-            } else {
-                out << number_text(std::get<double>(rows[r][i]), format);
-            }
-        }
-        out << "}";
-    }
-    out << (rows.empty() ? "]\n" : "\n]\n");
+    table_writer w(out, columns, format);
+    for (const auto& row : rows) w.record(row);
+    w.finish();
 }
 
 }  // namespace pendulum::cli

@@ -21,19 +21,29 @@ enum class table_format { csv, json };
 /// Parses "csv" or "json"; throws std::invalid_argument naming the text otherwise.
 table_format parse_table_format(std::string_view text);
 
-/// Writes a table row by row as it is computed, so that long tables need no memory.
+/// A field of a record: text or a number.
+using field = std::variant<std::string, double>;
+
+/// Writes a table row by row as it is computed, so that long tables need no memory. Numbers
+/// use the shortest form that reads back to the same double, NaN an empty field / null;
+/// text is quoted as RFC 4180 asks (CSV) or escaped (JSON).
 class table_writer {
 public:
     /// Writes the header (CSV) or the opening bracket (JSON).
     table_writer(std::ostream& out, std::vector<std::string> columns, table_format format);
-    /// Writes one row, one value per column.
+    /// Writes one row of numbers, one per column.
     void row(const std::vector<double>& values);
+    /// Writes one row of text and numbers, one per column.
+    void record(const std::vector<field>& values);
     /// Ends the table (JSON's closing bracket).
     void finish();
 
 private:
+    template <class Value>
+    void write_row(const std::vector<Value>& values);
+
     std::ostream& out_;
-    std::vector<std::string> columns_;
+    std::vector<std::string> keys_;  // JSON: each column's quoted name and ": "
     table_format format_;
     std::size_t rows_ = 0;
 };
@@ -42,10 +52,7 @@ private:
 /// the shortest form that reads back to the same double; NaN is an empty field / null.
 void write_table(std::ostream& out, const table& t, table_format format);
 
-/// A field of a record: text or a number.
-using field = std::variant<std::string, double>;
-
-/// Writes records of text and numbers: CSV quoted as RFC 4180 asks, or JSON with escaped strings.
+/// Writes records of text and numbers, as table_writer does.
 void write_records(std::ostream& out, const std::vector<std::string>& columns,
                    const std::vector<std::vector<field>>& rows, table_format format);
 

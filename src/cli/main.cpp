@@ -481,8 +481,11 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
         plot::check_format(f);
         if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
     }
-    for (const char* graphics : {"pdf", "eps"}) {
-        const std::string overlay = std::string(graphics) + "_tex";
+    // An overlay format writes its drawing under the drawing format's name.
+    for (const auto& row : plot::format_table()) {
+        if (row.graphics.empty()) continue;
+        const std::string overlay(row.name);
+        const std::string graphics(row.graphics);
         if (std::count(formats.begin(), formats.end(), graphics) && std::count(formats.begin(), formats.end(), overlay)) {
             throw usage_error("-f " + o.formats + ": " + graphics + " and " + overlay + " both write ID." + graphics +
                               " (" + overlay + "'s without its text); render them into different directories");

@@ -85,6 +85,10 @@ TEST(TexMarkup, MarkupAsLatexForOverlays) {
     EXPECT_EQ(markup_to_latex(tex_to_markup("the paper's 0.1 % bound, $\\vartheta_0 \\le \\pi/2$")),
               "the paper's 0.1 \\% bound, $\\vartheta_0 \\le \\pi/2$");
     EXPECT_EQ(markup_to_latex(tex_to_markup("$\\vartheta$ (\u00b0)")), "$\\vartheta$ ($^{\\circ}$)");
+    // A lone backslash at the end of text is a literal one, not the start of a macro.
+    EXPECT_EQ(markup_to_latex(tex_to_markup("a\\")), "a\\textbackslash{}");
+    EXPECT_EQ(markup_to_latex(tex_to_markup("50% & #1 a_b {c} ^ ~ | < >")),
+              "50\\% \\& \\#1 a\\_b \\{c\\} \\^{} \\~{} \\textbar{} \\textless{} \\textgreater{}");
     // Nothing LaTeX cannot set slips through.
     EXPECT_THROW(markup_to_latex("\u263a"), std::invalid_argument);
 }

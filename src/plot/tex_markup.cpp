@@ -403,6 +403,9 @@ std::string label_as_latex(const std::string& tex) {
             out += "\\~{}";
         } else if (!math && (c == '|' || c == '<' || c == '>')) {
             out += c == '|' ? "\\textbar{}" : c == '<' ? "\\textless{}" : "\\textgreater{}";
+        } else if (!math && c == '\\') {
+            // A lone backslash at the end is a literal one: raw, it would escape the brace after it.
+            out += "\\textbackslash{}";
         } else {
             out += c;
         }

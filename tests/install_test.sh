@@ -6,6 +6,8 @@
 # the Debian package, unpacks it with dpkg -x and runs the tool from it.
 # Usage: install_test.sh BUILD_DIR [deb]
 set -euo pipefail
+# Pipelines end in a reader that reads everything (grep >/dev/null, not grep -q or head):
+# with pipefail, a writer cut off early fails the test by chance.
 build=$(cd "$1" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -13,19 +15,19 @@ trap 'rm -rf "$work"' EXIT
 if [ "${2:-}" = deb ]; then
   (cd "$build" && cpack -G DEB -B "$work/package" >/dev/null)
   deb=$(ls "$work"/package/pendulum-figures_*.deb)
-  dpkg-deb --field "$deb" Depends | grep -q 'libgsl'
+  dpkg-deb --field "$deb" Depends | grep 'libgsl' >/dev/null
   dpkg -x "$deb" "$work/root"
-  "$work/root/usr/bin/pendulum-figures" --version | head -n 1 | grep -qx 'pendulum-figures [0-9.]*'
-  "$work/root/usr/bin/pendulum-figures" render fig1 -f svg -o - | grep -q '<svg'
-  man -l "$work/root/usr/share/man/man1/pendulum-figures.1" | grep -q 'render'
+  "$work/root/usr/bin/pendulum-figures" --version | sed -n 1p | grep -x 'pendulum-figures [0-9.]*' >/dev/null
+  "$work/root/usr/bin/pendulum-figures" render fig1 -f svg -o - | grep '<svg' >/dev/null
+  man -l "$work/root/usr/share/man/man1/pendulum-figures.1" | grep 'render' >/dev/null
   echo "deb: $(basename "$deb") unpacks and runs"
   exit 0
 fi
 
 DESTDIR="$work/stage" cmake --install "$build" --prefix /usr/local >/dev/null
 root="$work/stage/usr/local"
-"$root/bin/pendulum-figures" --version | head -n 1 | grep -qx 'pendulum-figures [0-9.]*'
-man -l "$root/share/man/man1/pendulum-figures.1" | grep -q 'render'
+"$root/bin/pendulum-figures" --version | sed -n 1p | grep -x 'pendulum-figures [0-9.]*' >/dev/null
+man -l "$root/share/man/man1/pendulum-figures.1" | grep 'render' >/dev/null
 bash -n "$root/share/bash-completion/completions/pendulum-figures"
 test -f "$root/share/zsh/vendor-completions/_pendulum-figures"
 test -f "$root/share/pendulum-figures/specs/period.toml"

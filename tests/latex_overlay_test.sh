@@ -41,12 +41,12 @@ else
     ps2pdf doc.ps doc.pdf
 fi
 fonts=$(pdffonts doc.pdf)
-echo "$fonts" | grep -q NimbusRomNo9L || fail "the text is not in the document's Times: $fonts"
-! echo "$fonts" | grep -qi cmu || fail "a CMU font in the document: $fonts"
+grep -q NimbusRomNo9L <<<"$fonts" || fail "the text is not in the document's Times: $fonts"
+! grep -qi cmu <<<"$fonts" || fail "a CMU font in the document: $fonts"
 text=$(pdftotext doc.pdf -)
 for label in "lowest order" "first order" "harmonic" "separatrix" "order N of the iteration" "relative error" \
              "Kidd–Fogg" "0.25" "0.1 % and 0.2 %"; do
-    echo "$text" | grep -qF -- "$label" || fail "label '$label' is not in the document"
+    grep -qF -- "$label" <<<"$text" || fail "label '$label' is not in the document"
 done
 # Unicode that a pdflatex document cannot set never reaches the overlay.
 ! LC_ALL=C grep -l $'[\x80-\xff]' *."${kind}_tex" || fail "non-ASCII characters in an overlay"

@@ -367,6 +367,20 @@ std::string text_character(const std::string& c) {
     return "";
 }
 
+/// How LaTeX's text mode writes an ASCII character it would otherwise read as markup;
+/// empty for one it sets as it is.
+std::string_view text_escape(char c) {
+    static const std::pair<char, std::string_view> escapes[] = {
+        {'\\', "\\textbackslash{}"}, {'{', "\\{"},           {'}', "\\}"},           {'$', "\\$"},
+        {'&', "\\&"},                {'#', "\\#"},           {'%', "\\%"},           {'_', "\\_"},
+        {'^', "\\^{}"},              {'~', "\\~{}"},         {'|', "\\textbar{}"},   {'<', "\\textless{}"},
+        {'>', "\\textgreater{}"}};
+    for (const auto& [from, to] : escapes) {
+        if (c == from) return to;
+    }
+    return {};
+}
+
 /// A label's TeX as LaTeX: the same, with what the label language reads as a literal
 /// character (%, #, &, ~, _ and ^ outside math, UTF-8 letters) escaped for LaTeX.
 std::string label_as_latex(const std::string& tex) {
@@ -395,17 +409,13 @@ std::string label_as_latex(const std::string& tex) {
             i = end;
             continue;
         }
-        if (c == '%' || c == '#' || c == '&' || (!math && (c == '_' || c == '{' || c == '}'))) {
+        // Outside math, as text mode writes it (a lone backslash at the end is a literal one:
+        // raw, it would escape the brace after it); in math only %, # and & need a backslash.
+        const std::string_view escaped = math ? std::string_view() : text_escape(c);
+        if (!escaped.empty()) {
+            out += escaped;
+        } else if (math && (c == '%' || c == '#' || c == '&')) {
             out += std::string("\\") + c;
-        } else if (!math && c == '^') {
-            out += "\\^{}";
-        } else if (!math && c == '~') {
-            out += "\\~{}";
-        } else if (!math && (c == '|' || c == '<' || c == '>')) {
-            out += c == '|' ? "\\textbar{}" : c == '<' ? "\\textless{}" : "\\textgreater{}";
-        } else if (!math && c == '\\') {
-            // A lone backslash at the end is a literal one: raw, it would escape the brace after it.
-            out += "\\textbackslash{}";
         } else {
             out += c;
         }
@@ -420,11 +430,6 @@ bool is_plain(const markup_node& n) {
 
 /// A word set in text mode: plain ASCII as text, anything else as math.
 std::string text_of(const std::vector<markup_node>& nodes, const std::string& whole) {
-    static const std::pair<char, std::string_view> escapes[] = {
-        {'\\', "\\textbackslash{}"}, {'{', "\\{"},           {'}', "\\}"},           {'$', "\\$"},
-        {'&', "\\&"},                {'#', "\\#"},           {'%', "\\%"},           {'_', "\\_"},
-        {'^', "\\^{}"},              {'~', "\\~{}"},         {'|', "\\textbar{}"},   {'<', "\\textless{}"},
-        {'>', "\\textgreater{}"}};
     std::string out;
     std::vector<markup_node> math;
     const auto flush = [&] {
@@ -443,11 +448,8 @@ std::string text_of(const std::vector<markup_node>& nodes, const std::string& wh
             continue;
         }
         flush();
-        std::string piece = n.text;
-        for (const auto& [from, to] : escapes) {
-            if (n.text[0] == from) piece = to;
-        }
-        out += piece;
+        const std::string_view escaped = text_escape(n.text[0]);
+        out += escaped.empty() ? n.text : std::string(escaped);
     }
     flush();
     return out;

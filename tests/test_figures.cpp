@@ -85,7 +85,7 @@ TEST(Catalog, DataComeFromTheCore) {
     // Fig. 7(b): relative error in percent, -0.273 % for lowest order at pi/2.
     const auto f7 = figures::build(figures::find("period"));
     const auto& err = f7.panels[1].data[0];
-    EXPECT_EQ(err.label, "lowest order");
+    EXPECT_EQ(err.label.markup, "lowest order");
     double at_half_pi = 0;
     double closest = 10;
     for (std::size_t i = 0; i < err.x.size(); ++i) {
@@ -102,9 +102,9 @@ TEST(Catalog, DataComeFromTheCore) {
     EXPECT_EQ(f2.rows, 2);
     EXPECT_EQ(f2.cols, 2);
     for (const auto& s : f2.panels[3].data) EXPECT_NEAR(s.y.front(), 9 * pi / 10, 1e-14);
-    EXPECT_NE(f2.panels[3].label.find("9<i>\u03c0</i>/10"), std::string::npos);
+    EXPECT_NE(f2.panels[3].label.markup.find("9<i>\u03c0</i>/10"), std::string::npos);
     // Amplitudes as the paper writes them.
-    EXPECT_NE(figures::build(figures::find("fig6")).panels[1].label.find("95<i>\u03c0</i>/100"), std::string::npos);
+    EXPECT_NE(figures::build(figures::find("fig6")).panels[1].label.markup.find("95<i>\u03c0</i>/100"), std::string::npos);
 }
 
 TEST(Catalog, AmplitudesCanBeReplaced) {
@@ -115,7 +115,7 @@ TEST(Catalog, AmplitudesCanBeReplaced) {
     EXPECT_EQ(f.rows, 1);
     EXPECT_EQ(f.cols, 1);
     // As typed, and no "(a)" on a figure of one panel.
-    EXPECT_EQ(f.panels[0].label, "<i>\u03d1</i><sub>0</sub> = 170\u00b0");
+    EXPECT_EQ(f.panels[0].label.markup, "<i>\u03d1</i><sub>0</sub> = 170\u00b0");
     o.amplitudes = {{"0.5", 0.5}, {"1", 1}, {"1.5", 1.5}, {"2", 2}, {"2.5", 2.5}};
     const auto g = figures::build(figures::find("trajectory-second"), o);
     EXPECT_EQ(g.rows, 2);
@@ -192,7 +192,7 @@ TEST(Baselines, ComparisonCatchesSmallMutations) {
     auto typo = build(paper);
     for (auto& p : typo.panels) {
         for (auto& s : p.data) {
-            if (s.label == "second order") s.label = "second ordre";
+            if (s.label.markup == "second order") s.label = "second ordre";
         }
     }
     const auto a = against_baseline(typo, paper, 100, e.id, "mutation-legend-typo");

@@ -83,7 +83,7 @@ std::string figure_csv(const plot::figure& f) {
         const std::string panel = panel_name(p);
         for (const auto& s : f.panels[p].data) {
             if (!s.autoscale) continue;  // a reference line, not data
-            const std::string name = csv_field(plain_text(s.label));
+            const std::string name = csv_field(plain_text(s.label.markup));
             for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
                 out << panel << ',' << name << ',' << pendulum::format_double(s.x[i]) << ','
                     << pendulum::format_double(s.y[i]) << '\n';

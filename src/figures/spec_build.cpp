@@ -35,7 +35,7 @@ std::string panel_letter(std::size_t i) { return "(" + panel_name(i) + ")"; }
 
 /// How a method's series looks: the theme's defaults unless the spec overrides them.
 struct series_style {
-    std::string label;
+    plot::label label;
     line_style line;
     marker_style marker;
     int color;
@@ -44,7 +44,7 @@ struct series_style {
 };
 
 series_style style_of(const method_spec& m, int index) {
-    series_style s{m.label.empty() ? method_label(m.method) : plot::tex_to_markup(m.label), method_line(m.method),
+    series_style s{m.label.empty() ? plot::label(method_label(m.method)) : plot::tex_label(m.label), method_line(m.method),
                    m.method.row->name == "exact" ? marker_style::open_circle : marker_style::none, index, ""};
     // The theme styles a method by name unless the spec says how it looks.
     if (!m.style && !m.marker) s.style_key = std::string(m.method.row->name);
@@ -265,7 +265,7 @@ plot::panel period_panel(const context& c, const panel_spec& p) {
 }
 
 /// Line styles for series that differ by amplitude, in order.
-series_style amplitude_style(std::size_t i, const std::string& label) {
+series_style amplitude_style(std::size_t i, const plot::label& label) {
     static const line_style cycle[] = {line_style::solid, line_style::dashed, line_style::dotted, line_style::dash_dot};
     return {label, cycle[i % 4], i == 4 ? marker_style::open_circle : marker_style::none, static_cast<int>(i), ""};
 }
@@ -343,7 +343,9 @@ plot::panel phase_panel(const context&, const panel_spec& p) {
     if (p.separatrix) {
         const auto theta = grid(-pi, pi, 400);
         for (double sign : {1.0, -1.0}) {
-            plot::series s{sign > 0 ? "separatrix" : "", {}, {}, line_style::dashed, marker_style::none, 0};
+            plot::series s;
+            if (sign > 0) s.label = "separatrix";
+            s.line = line_style::dashed;
             for (double t : theta) {
                 s.x.push_back(angle * t);
                 s.y.push_back(sign * pendulum::separatrix_velocity(t));
@@ -366,8 +368,11 @@ plot::panel spectrum_panel(const context&, const panel_spec& p) {
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
         const amplitude& a = p.theta0[i];
         for (const auto& m : p.methods) {
-            std::string label = std::string(theta0_markup) + " = " + typeset_angle(a.text);
-            if (p.methods.size() > 1) label += ", " + (m.label.empty() ? method_label(m.method) : plot::tex_to_markup(m.label));
+            plot::label label = std::string(theta0_markup) + " = " + typeset_angle(a.text);
+            if (p.methods.size() > 1) {
+                label = plot::join(plot::label(label.markup + ", "),
+                                   m.label.empty() ? plot::label(method_label(m.method)) : plot::tex_label(m.label));
+            }
             series_style st = amplitude_style(index++, label);
             st.marker = marker_style::open_circle;
             if (m.style) st.line = *m.style;
@@ -696,13 +701,13 @@ plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrid
             panel.y.min = (*p.y_range)[0];
             panel.y.max = (*p.y_range)[1];
         }
-        if (p.x_label) panel.x.label = plot::tex_to_markup(*p.x_label);
-        if (p.y_label) panel.y.label = plot::tex_to_markup(*p.y_label);
+        if (p.x_label) panel.x.label = plot::tex_label(*p.x_label);
+        if (p.y_label) panel.y.label = plot::tex_label(*p.y_label);
         const std::string letter = panels.size() > 1 ? panel_letter(i) : "";
         if (p.title) {
-            panel.label = plot::tex_to_markup(*p.title);
+            panel.label = plot::tex_label(*p.title);
         } else if (p.plot == plot_kind::trajectory) {
-            panel.label = letter.empty() ? panel.label : letter + " " + panel.label;
+            if (!letter.empty()) panel.label = plot::join(plot::label(letter + " "), panel.label);
         } else {
             panel.label = letter;
         }
@@ -710,8 +715,9 @@ plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrid
         for (const auto& line : p.lines) {
             // A reference line crosses the whole panel, from limit to limit of the other axis
             // (its data range when the axis has no limits), and leaves the limits alone.
-            plot::series s{line.label.empty() ? "" : plot::tex_to_markup(line.label), {}, {}, line.style,
-                           marker_style::none, 0};
+            plot::series s;
+            if (!line.label.empty()) s.label = plot::tex_label(line.label);
+            s.line = line.style;
             s.autoscale = false;
             const auto extent = [&](const plot::axis& a, bool horizontal) {
                 double lo = a.min.value_or(std::numeric_limits<double>::infinity());

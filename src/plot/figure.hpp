@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,28 @@ struct rgb {
     double b = 0;  ///< blue
 };
 
+/// A text of a figure in the two forms its writers need: Pango markup to draw, and the
+/// LaTeX that a LaTeX overlay (pdf_tex, eps_tex) sets in its place. A label made by the
+/// program is markup alone, its LaTeX derived from it when an overlay is written; a label
+/// from a spec (plot::tex_label) carries the LaTeX made from its TeX by the same parse.
+struct label {
+    std::string markup;  ///< Pango markup
+    std::string latex;   ///< LaTeX for overlays; empty: derived from the markup
+
+    label() = default;
+    /// A label made by the program, as markup.
+    label(std::string m) : markup(std::move(m)) {}  // NOLINT: implicit, markup is a label
+    /// A label made by the program, as markup.
+    label(const char* m) : markup(m) {}  // NOLINT: implicit, markup is a label
+    /// True when there is nothing to show.
+    bool empty() const { return markup.empty(); }
+    /// Empties both forms.
+    void clear() {
+        markup.clear();
+        latex.clear();
+    }
+};
+
 /// How a series' line is drawn.
 enum class line_style { none, solid, dashed, dotted, dash_dot };
 
@@ -22,7 +45,7 @@ enum class marker_style { none, open_circle, filled_circle };
 
 /// One curve or set of points, with its legend entry.
 struct series {
-    std::string label;                      ///< legend text (Pango markup); empty: no entry
+    plot::label label;                      ///< legend text; empty: no entry
     std::vector<double> x;                  ///< abscissae
     std::vector<double> y;                  ///< ordinates; non-finite values break the line
     line_style line = line_style::solid;    ///< line style
@@ -46,7 +69,7 @@ enum class tick_kind { nice, multiples_of_pi, degrees };
 
 /// One axis: label, range, scale and ticks.
 struct axis {
-    std::string label;                  ///< axis label (Pango markup)
+    plot::label label;                  ///< axis label
     std::optional<double> min;          ///< lower limit; from the data when empty
     std::optional<double> max;          ///< upper limit; from the data when empty
     scale kind = scale::linear;         ///< linear or logarithmic
@@ -65,11 +88,11 @@ struct panel {
     axis x;                               ///< horizontal axis
     axis y;                               ///< vertical axis
     std::vector<series> data;             ///< series, drawn in order
-    std::string label;                    ///< panel label such as "(a)"; empty for none
+    plot::label label;                    ///< panel label such as "(a)"; empty for none
     legend_place legend = legend_place::automatic;  ///< legend placement
     bool frameless = false;               ///< no frame, ticks or axis labels (a drawing, not a plot)
     bool equal_aspect = false;            ///< one unit is as long on both axes
-    std::string overlay_label;            ///< text that changes per frame (a clock), top left inside, overlay pass
+    plot::label overlay_label;            ///< text that changes per frame (a clock), top left inside, overlay pass
 };
 
 /// A grid of panels with a physical size.

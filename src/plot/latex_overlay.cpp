@@ -143,7 +143,7 @@ std::string latex_picture(const std::vector<placed_text>& texts, page_size size,
     for (const auto& t : texts) {
         const char* align = t.align < 0.25 ? "l" : t.align > 0.75 ? "r" : "c";
         std::string box = std::string("\\makebox(0,0)[") + align + "]{\\smash{" +
-                          latex_size_command(t.size_pt, options) + " " + markup_to_latex(t.markup) + "}}";
+                          latex_size_command(t.size_pt, options) + " " + label_latex(t.text) + "}}";
         if (t.rotate) box = "\\rotatebox{90}{" + box + "}";
         out += "  \\put(" + fixed(t.x / w) + "," + fixed((h - t.y) / w) + "){" + box + "}%\n";
     }

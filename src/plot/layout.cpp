@@ -87,11 +87,11 @@ panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th, 
         plan.xtick_down = std::max(plan.xtick_down, i.y + i.h);
         plan.xtick_extent.push_back(i.w);
     }
-    if (!p.y.label.empty()) plan.ylabel_h = text.ink(p.y.label, th.label_font_pt).h;
-    if (!p.x.label.empty()) plan.xlabel_h = text.ink(p.x.label, th.label_font_pt).h;
+    if (!p.y.label.empty()) plan.ylabel_h = text.ink(p.y.label.markup, th.label_font_pt).h;
+    if (!p.x.label.empty()) plan.xlabel_h = text.ink(p.x.label.markup, th.label_font_pt).h;
     const double pad = th.padding_pt;
     const double last_xtick_w = plan.xt.labels.empty() ? 0.0 : text.ink(plan.xt.labels.back(), th.tick_font_pt).w;
-    const double panel_label_h = p.label.empty() ? 0.0 : text.ink(p.label, th.label_font_pt).h;
+    const double panel_label_h = p.label.empty() ? 0.0 : text.ink(p.label.markup, th.label_font_pt).h;
     // The panel label sits above the top y tick label, never beside it.
     plan.top = pad + std::max(0.5 * digit.h, p.label.empty() ? 0.0 : 0.5 * digit.h + plan.label_gap + panel_label_h);
     plan.right = pad + 0.5 * last_xtick_w;

@@ -41,7 +41,7 @@ legend_layout measure_legend(const text_engine& text, const panel& p, const them
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         if (p.data[k].label.empty()) continue;
         l.entries.push_back(k);
-        const auto [w, h] = text.measure(p.data[k].label, th.legend_font_pt);
+        const auto [w, h] = text.measure(p.data[k].label.markup, th.legend_font_pt);
         l.text_ws.push_back(w);
         l.text_w = std::max(l.text_w, w);
         l.row_h = std::max(l.row_h, h);

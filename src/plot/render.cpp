@@ -168,20 +168,20 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     // Axis labels at label_gap from the tick labels (y labels of a column aligned, as the
     // widest tick labels of the figure set them), panel label above the top tick label.
     if (!p.x.label.empty()) {
-        const text_ink ink = text.ink(p.x.label, th.label_font_pt);
+        const text_ink ink = text.ink(p.x.label.markup, th.label_font_pt);
         const double top = x_baseline + plan.xtick_down + plan.label_gap;
         text.draw_on_baseline(p.x.label, th.label_font_pt, area.x + 0.5 * area.w - ink.x - 0.5 * ink.w, top - ink.y,
                               false, 0.5);
     }
     if (!p.y.label.empty()) {
         // Turned by -90 degrees: the text's down is the page's right.
-        const text_ink ink = text.ink(p.y.label, th.label_font_pt);
+        const text_ink ink = text.ink(p.y.label.markup, th.label_font_pt);
         const double right = area.x - plan.tick_gap - plan.column_ytick_w - plan.label_gap;
         text.draw_on_baseline(p.y.label, th.label_font_pt, right - (ink.y + ink.h),
                               area.y + 0.5 * area.h + ink.x + 0.5 * ink.w, true, 0.5);
     }
     if (!p.label.empty()) {
-        const text_ink ink = text.ink(p.label, th.label_font_pt);
+        const text_ink ink = text.ink(p.label.markup, th.label_font_pt);
         const double bottom = area.y - 0.5 * plan.digit_h - plan.label_gap;
         text.draw_on_baseline(p.label, th.label_font_pt, area.x - ink.x, bottom - (ink.y + ink.h));
     }

@@ -6,8 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <map>
-#include <mutex>
+#include <cstdio>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -47,24 +46,55 @@ constexpr std::array<symbol, 62> symbols = {{
     {"lvert", "|", false},         {"rvert", "|", false},
 }};
 
+std::string math_character(const std::string& c, const std::string& whole);
+std::string text_character(const std::string& c);
+std::string_view text_escape(char c);
+
+/// What a label's TeX is turned into.
+enum class target {
+    markup,  ///< Pango markup, to draw
+    plain,   ///< text without markup, for CSV headers and metadata
+    latex,   ///< LaTeX for overlays: only what the engine draws, every other character escaped
+};
+
+/// Reads a label's TeX (text with math in $...$) and writes it in the target's form. The
+/// LaTeX target is written from the parse, never copied: text is escaped, and math holds
+/// only the characters and the macros of this file's tables, so that no label can make a
+/// document read, write or run anything.
 class converter {
 public:
-    converter(std::string_view tex, bool markup) : tex_(tex), markup_(markup) {}
+    converter(std::string_view tex, target to) : tex_(tex), markup_(to == target::markup), latex_(to == target::latex) {}
 
     std::string run() {
+        if (tex_.size() > max_label_bytes) {
+            throw std::invalid_argument("label of " + std::to_string(tex_.size()) + " bytes: at most " +
+                                        std::to_string(max_label_bytes));
+        }
+        for (const char c : tex_) {
+            const auto u = static_cast<unsigned char>(c);
+            if (u < 0x20 || u == 0x7f) {
+                char code[8];
+                std::snprintf(code, sizeof code, "%02x", u);
+                fail(std::string("control character U+00") + code + " (a label is one line of text)");
+            }
+        }
         std::string out;
         while (pos_ < tex_.size()) {
             const char c = tex_[pos_];
             if (c == '$') {
                 ++pos_;
-                out += math('$');
+                const std::string inner = math('$');
+                out += latex_ ? "$" + inner + "$" : inner;
                 if (pos_ >= tex_.size() || tex_[pos_] != '$') fail("unbalanced $");
                 ++pos_;
             } else if (c == '\\' && pos_ + 1 < tex_.size() && (tex_[pos_ + 1] == '$' || tex_[pos_ + 1] == '\\')) {
-                out += escape(std::string(1, tex_[pos_ + 1]));
+                out += text(std::string(1, tex_[pos_ + 1]));
                 pos_ += 2;
+            } else if (static_cast<unsigned char>(c) >= 0x80) {
+                const std::string ch = utf8_character();
+                out += latex_ ? text_latex(ch) : ch;
             } else {
-                out += escape(std::string(1, c));
+                out += text(std::string(1, c));
                 ++pos_;
             }
         }
@@ -73,15 +103,63 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& why) const {
-        throw std::invalid_argument("label '" + std::string(tex_) + "': " + why);
+        const std::string shown = tex_.size() <= 80 ? std::string(tex_)
+                                                     : std::string(tex_.substr(0, 40)) + "..." +
+                                                           std::string(tex_.substr(tex_.size() - 20));
+        throw std::invalid_argument("label '" + shown + "': " + why);
     }
 
-    std::string escape(const std::string& s) const { return markup_ ? escape_markup(s) : s; }
+    /// One character outside math, as the target writes it.
+    std::string text(const std::string& s) const {
+        if (latex_) {
+            const std::string_view e = text_escape(s[0]);
+            return e.empty() ? s : std::string(e);
+        }
+        return markup_ ? escape_markup(s) : s;
+    }
+
+    /// A UTF-8 character outside math as LaTeX: its text-mode form, or math.
+    std::string text_latex(const std::string& ch) const {
+        const std::string t = text_character(ch);
+        return t.empty() ? "$" + math_character(ch, std::string(tex_)) + "$" : t;
+    }
+
+    /// The UTF-8 character at pos_, whole; pos_ moves past it.
+    std::string utf8_character() {
+        std::size_t end = pos_ + 1;
+        while (end < tex_.size() && (static_cast<unsigned char>(tex_[end]) & 0xc0) == 0x80) ++end;
+        std::string ch(tex_.substr(pos_, end - pos_));
+        pos_ = end;
+        return ch;
+    }
+
+    /// One ASCII character in math, as the target writes it.
+    std::string escape(const std::string& s) const {
+        if (latex_) return math_character(s, std::string(tex_));
+        return markup_ ? escape_markup(s) : s;
+    }
     std::string italic(const std::string& s) const { return markup_ ? "<i>" + s + "</i>" : s; }
     std::string wrap(const char* tag, const std::string& s) const {
         if (!markup_) return s;
         return std::string("<") + tag + ">" + s + "</" + tag + ">";
     }
+
+    /// Braces, scripts and accents nest; deeper than this is no label anyone writes, and it
+    /// would exhaust the stack.
+    static constexpr int max_depth = 50;
+
+    /// Counts one level of nesting for the rest of the enclosing call.
+    struct nesting {
+        explicit nesting(converter& c) : c_(c) {
+            if (++c_.depth_ > max_depth) {
+                c_.fail("nested too deeply (at most " + std::to_string(max_depth) + " levels of braces, scripts and accents)");
+            }
+        }
+        ~nesting() { --c_.depth_; }
+        nesting(const nesting&) = delete;
+        nesting& operator=(const nesting&) = delete;
+        converter& c_;
+    };
 
     /// Math up to `closing` ('$' or '}'), which is left for the caller. Spaces in the
     /// source are ignored, as TeX does; binary + and - and the relations get a space each
@@ -98,7 +176,7 @@ private:
             const bool binary = (c == '+' || c == '-') && after_operand;
             const bool relation = c == '=' || c == '<' || c == '>';
             std::string item = atom_with_scripts();
-            if ((binary || relation) && script_depth_ == 0) {
+            if ((binary || relation) && script_depth_ == 0 && !latex_) {
                 out += " " + item + " ";
                 after_operand = false;
             } else {
@@ -132,6 +210,19 @@ private:
             --script_depth_;
             (is_sub ? has_sub : has_sup) = true;
         }
+        if (latex_) {
+            // TeX's ' is ^\prime: primes and a superscript share one superscript.
+            std::string out = base;
+            if (has_sup) {
+                std::string up;
+                for (int i = 0; i < primes; ++i) up += "\\prime ";
+                out += "^" + script(up + ungrouped(sup));
+            } else {
+                out += std::string(static_cast<std::size_t>(primes), '\'');
+            }
+            if (has_sub) out += "_" + script(ungrouped(sub));
+            return out;
+        }
         std::string out = base;
         if (primes > 0) {
             // Computer Modern Unicode has the modifier letter prime (U+02B9), not the prime.
@@ -157,6 +248,7 @@ private:
 
     /// A letter, digit, symbol, macro or braced group.
     std::string atom() {
+        const nesting level(*this);
         skip_space();
         if (pos_ >= tex_.size()) fail("incomplete math");
         const char c = tex_[pos_];
@@ -165,22 +257,24 @@ private:
             std::string inner = math('}');
             if (pos_ >= tex_.size()) fail("unbalanced {");
             ++pos_;
-            return inner;
+            return latex_ ? "{" + inner + "}" : inner;
         }
         if (c == '\\') return macro();
+        if (static_cast<unsigned char>(c) >= 0x80) {
+            // UTF-8 passes through whole: a typed ϑ or π is italic like its macro.
+            const std::string ch = utf8_character();
+            if (latex_) return math_character(ch, std::string(tex_));
+            return ch == "\u03d1" || ch == "\u03c0" || ch == "\u03b8" ? italic(ch) : ch;
+        }
         ++pos_;
         if (std::isalpha(static_cast<unsigned char>(c))) return italic(std::string(1, c));
+        if (latex_) {
+            if (std::isdigit(static_cast<unsigned char>(c))) return std::string(1, c);
+            return c == '\'' ? "{}^{\\prime}" : escape(std::string(1, c));
+        }
         if (c == '-') return "\u2212";
         if (c == '*') return "\u2217";
         if (c == '\'') return "\u2032";
-        if (static_cast<unsigned char>(c) >= 0x80) {
-            // UTF-8 passes through whole: a typed ϑ or π is italic like its macro.
-            std::size_t end = pos_;
-            while (end < tex_.size() && (static_cast<unsigned char>(tex_[end]) & 0xc0) == 0x80) ++end;
-            std::string ch(tex_.substr(pos_ - 1, end - pos_ + 1));
-            pos_ = end;
-            return ch == "\u03d1" || ch == "\u03c0" || ch == "\u03b8" ? italic(ch) : ch;
-        }
         return escape(std::string(1, c));
     }
 
@@ -190,6 +284,12 @@ private:
         const char c = tex_[pos_];
         if (!std::isalpha(static_cast<unsigned char>(c))) {
             ++pos_;
+            if (latex_) {
+                // The spaces and escaped characters this file knows, and nothing else.
+                static const std::string_view known = ",:>;! {}%$&#_|";
+                if (known.find(c) == std::string_view::npos) fail(std::string("unknown macro \\") + c);
+                return c == ' ' ? "\\ " : std::string("\\") + c;
+            }
             switch (c) {
                 case ',': return "\u2009";
                 case ':':
@@ -213,8 +313,12 @@ private:
         const std::string name(tex_.substr(pos_, end - pos_));
         pos_ = end;
         for (const auto& s : symbols) {
-            if (s.name == name) return s.italic ? italic(std::string(s.text)) : std::string(s.text);
+            if (s.name == name) {
+                if (latex_) return "\\" + std::string(s.name) + " ";
+                return s.italic ? italic(std::string(s.text)) : std::string(s.text);
+            }
         }
+        if (latex_ && (name == "dot" || name == "ddot")) return "\\" + name + "{" + atom() + "}";
         if (name == "dot" || name == "ddot") {
             // A combining dot or diaeresis, inside the italic of the letter it sits on.
             std::string base = atom();
@@ -225,8 +329,8 @@ private:
             }
             return base + mark;
         }
-        if (name == "quad") return "\u2003";
-        if (name == "qquad") return "\u2003\u2003";
+        if (name == "quad" || name == "qquad") return latex_ ? "\\" + name + " " : name == "quad" ? "\u2003" : "\u2003\u2003";
+        // The engine draws a delimiter at the size of the text: so does the overlay.
         if (name == "left" || name == "right" || name == "big" || name == "Big") return atom();
         if (name == "mathrm" || name == "text" || name == "textrm" || name == "operatorname" || name == "mathit") {
             skip_space();
@@ -235,25 +339,52 @@ private:
             if (close == std::string_view::npos) fail("unbalanced {");
             const std::string inner(tex_.substr(pos_ + 1, close - pos_ - 1));
             pos_ = close + 1;
-            return name == "mathit" ? italic(escape(inner)) : escape(inner);
+            if (latex_) return "\\" + name + "{" + literal_latex(inner, name == "mathrm" || name == "mathit") + "}";
+            return name == "mathit" ? italic(escape_markup_or_plain(inner)) : escape_markup_or_plain(inner);
         }
         fail("unknown macro \\" + name);
     }
 
+    /// A script's LaTeX without the braces of a group, which the script adds again.
+    static std::string ungrouped(const std::string& s) {
+        return s.size() >= 2 && s.front() == '{' && s.back() == '}' ? s.substr(1, s.size() - 2) : s;
+    }
+
+    /// A script's argument: one letter or digit as it is, anything else in braces.
+    static std::string script(const std::string& s) {
+        return s.size() == 1 && std::isalnum(static_cast<unsigned char>(s[0])) ? s : "{" + s + "}";
+    }
+
+    std::string escape_markup_or_plain(const std::string& s) const { return markup_ ? escape_markup(s) : s; }
+
+    /// The argument of \\text, \\mathrm and the like, which the engine shows as it is, as
+    /// LaTeX: each character escaped, in math mode (\\mathrm) or text mode (\\text).
+    std::string literal_latex(const std::string& inner, bool in_math) const {
+        std::string out;
+        for (std::size_t i = 0; i < inner.size();) {
+            std::size_t end = i + 1;
+            while (end < inner.size() && (static_cast<unsigned char>(inner[end]) & 0xc0) == 0x80) ++end;
+            const std::string ch = inner.substr(i, end - i);
+            i = end;
+            if (in_math) {
+                out += ch == " " ? "\\ " : math_character(ch, std::string(tex_));
+            } else if (ch.size() > 1) {
+                out += text_latex(ch);
+            } else {
+                const std::string_view e = text_escape(ch[0]);
+                out += e.empty() ? ch : std::string(e);
+            }
+        }
+        return out;
+    }
+
     std::string_view tex_;
     bool markup_;
+    bool latex_;
     std::size_t pos_ = 0;
     int script_depth_ = 0;
+    int depth_ = 0;
 };
-
-/// The TeX each markup was made from, for LaTeX overlays that set labels verbatim. One map
-/// for the process: markup is made while a figure is built and read while it is drawn.
-std::map<std::string, std::string>& sources(std::unique_lock<std::mutex>& lock) {
-    static std::mutex mutex;
-    static std::map<std::string, std::string> map;
-    lock = std::unique_lock(mutex);
-    return map;
-}
 
 /// One piece of parsed markup: a character (italic or not) or a script with its contents.
 struct markup_node {
@@ -381,49 +512,6 @@ std::string_view text_escape(char c) {
     return {};
 }
 
-/// A label's TeX as LaTeX: the same, with what the label language reads as a literal
-/// character (%, #, &, ~, _ and ^ outside math, UTF-8 letters) escaped for LaTeX.
-std::string label_as_latex(const std::string& tex) {
-    std::string out;
-    bool math = false;
-    for (std::size_t i = 0; i < tex.size();) {
-        const char c = tex[i];
-        if (c == '\\' && i + 1 < tex.size()) {
-            // A macro, or an escaped character, passes as it is (\$ and \\ included).
-            out += tex.substr(i, 2);
-            i += 2;
-            continue;
-        }
-        if (c == '$') {
-            math = !math;
-            out += c;
-            ++i;
-            continue;
-        }
-        if (static_cast<unsigned char>(c) >= 0x80) {
-            std::size_t end = i + 1;
-            while (end < tex.size() && (static_cast<unsigned char>(tex[end]) & 0xc0) == 0x80) ++end;
-            const std::string ch = tex.substr(i, end - i);
-            const std::string t = math ? "" : text_character(ch);
-            out += !t.empty() ? t : math ? math_character(ch, tex) : "$" + math_character(ch, tex) + "$";
-            i = end;
-            continue;
-        }
-        // Outside math, as text mode writes it (a lone backslash at the end is a literal one:
-        // raw, it would escape the brace after it); in math only %, # and & need a backslash.
-        const std::string_view escaped = math ? std::string_view() : text_escape(c);
-        if (!escaped.empty()) {
-            out += escaped;
-        } else if (math && (c == '%' || c == '#' || c == '&')) {
-            out += std::string("\\") + c;
-        } else {
-            out += c;
-        }
-        ++i;
-    }
-    return out;
-}
-
 bool is_plain(const markup_node& n) {
     return n.type == markup_node::kind::character && !n.italic && n.text.size() == 1;
 }
@@ -457,20 +545,43 @@ std::string text_of(const std::vector<markup_node>& nodes, const std::string& wh
 
 }  // namespace
 
-std::string tex_to_markup(std::string_view tex) {
-    std::string markup = converter(tex, true).run();
-    std::unique_lock<std::mutex> lock;
-    sources(lock).emplace(markup, std::string(tex));
-    return markup;
+std::string tex_to_markup(std::string_view tex) { return converter(tex, target::markup).run(); }
+
+std::string tex_to_latex(std::string_view tex) { return converter(tex, target::latex).run(); }
+
+label tex_label(std::string_view tex) {
+    label l(converter(tex, target::markup).run());
+    try {
+        l.latex = tex_to_latex(tex);
+    } catch (const std::invalid_argument&) {
+        // A character LaTeX has no form for: the overlay, if one is written, names it.
+        l.latex.clear();
+    }
+    return l;
+}
+
+std::string label_latex(const label& l) { return l.latex.empty() ? markup_to_latex(l.markup) : l.latex; }
+
+label join(const label& a, const label& b) {
+    label out(a.markup + b.markup);
+    if (a.latex.empty() && b.latex.empty()) return out;
+    // A program's markup loses the spaces at its ends on its way to LaTeX: keep them.
+    const auto ends_spaced = [](const label& l) {
+        std::string latex = label_latex(l);
+        if (l.latex.empty() && l.markup.ends_with(' ') && !latex.ends_with(' ')) latex += ' ';
+        if (l.latex.empty() && l.markup.starts_with(' ') && !latex.starts_with(' ')) latex.insert(0, 1, ' ');
+        return latex;
+    };
+    try {
+        out.latex = ends_spaced(a) + ends_spaced(b);
+    } catch (const std::invalid_argument&) {
+        out.latex.clear();
+    }
+    return out;
 }
 
 std::string markup_to_latex(std::string_view markup) {
     const std::string whole(markup);
-    {
-        std::unique_lock<std::mutex> lock;
-        const auto& map = sources(lock);
-        if (const auto it = map.find(whole); it != map.end()) return label_as_latex(it->second);
-    }
     // Words (split at spaces) with a plain letter are text; the others, and runs of them,
     // are one piece of math, so that TeX spaces "T - 1" and "= pi/2" as math.
     std::vector<std::vector<markup_node>> words(1);
@@ -503,6 +614,6 @@ std::string markup_to_latex(std::string_view markup) {
     return out;
 }
 
-std::string tex_to_plain(std::string_view tex) { return converter(tex, false).run(); }
+std::string tex_to_plain(std::string_view tex) { return converter(tex, target::plain).run(); }
 
 }  // namespace plot

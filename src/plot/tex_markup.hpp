@@ -1,22 +1,46 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "plot/figure.hpp"
+
+#include <cstddef>
 #include <string>
 #include <string_view>
 
 namespace plot {
 
+/// The longest label, in bytes: no axis label, title or legend entry comes near it, and it
+/// bounds the work a label can ask for.
+inline constexpr std::size_t max_label_bytes = 1000;
+
 /// Turns a label written with TeX math in $...$ into Pango markup: plain text outside
 /// the dollars (escaped), and inside them italic letters, Greek letters (\vartheta, \pi,
 /// ...), primes, _ and ^ with braces, \, and a few symbols, set as TeX sets them.
-/// Throws std::invalid_argument naming the label for an unbalanced $ or brace, or a macro
-/// it does not know.
+/// Throws std::invalid_argument naming the label for an unbalanced $ or brace, a macro it
+/// does not know, a control character, nesting deeper than 50 levels, or more than
+/// max_label_bytes.
 std::string tex_to_markup(std::string_view tex);
 
-/// The label as LaTeX for an overlay (pdf_tex, eps_tex): the TeX it was made from by
-/// tex_to_markup, verbatim; otherwise plain words as text and everything else as math
-/// ($-0.5$, $\pi/2$, $\vartheta_{0} = 3\pi/4$), never a Unicode character LaTeX cannot set.
-/// Throws std::invalid_argument naming the label for a character it has no LaTeX for.
+/// The label's TeX as LaTeX for an overlay, written from the same parse as the markup:
+/// text escaped (\input is \textbackslash{}input), math holding only the characters and
+/// macros the engine draws, so that a label can never make a document read, write or run
+/// anything. Throws as tex_to_markup does, and for a character LaTeX has no form for.
+std::string tex_to_latex(std::string_view tex);
+
+/// A label from a spec's TeX: its markup, and its LaTeX (empty where a character has no
+/// LaTeX form: an overlay then names it). Throws as tex_to_markup does.
+label tex_label(std::string_view tex);
+
+/// The LaTeX an overlay sets for the label: its own, or the one made from its markup.
+std::string label_latex(const label& l);
+
+/// The label a followed by b, in both forms.
+label join(const label& a, const label& b);
+
+/// A label made by the program as LaTeX for an overlay (pdf_tex, eps_tex): plain words as
+/// text and everything else as math ($-0.5$, $\pi/2$, $\vartheta_{0} = 3\pi/4$), every
+/// character escaped, never a Unicode character LaTeX cannot set. Throws
+/// std::invalid_argument naming the label for a character it has no LaTeX for.
 std::string markup_to_latex(std::string_view markup);
 
 /// The label as plain text for CSV headers and file metadata: the same rules, no markup.

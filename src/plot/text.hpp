@@ -2,6 +2,7 @@
 #pragma once
 // Part of the plot layer's renderer; not a public interface.
 
+#include "plot/figure.hpp"
 #include "plot/handles.hpp"
 #include "plot/math_layout.hpp"
 
@@ -34,7 +35,7 @@ struct text_ink {
 /// A text placed on the page but not drawn, for a LaTeX overlay: the left end of its
 /// baseline, and the point of the baseline where `align` (0 left, 0.5 centre, 1 right) is.
 struct placed_text {
-    std::string markup;  ///< the text, as Pango markup
+    plot::label text;    ///< the text
     double size_pt = 0;  ///< its size
     double x = 0;        ///< the anchor, points from the left
     double y = 0;        ///< the anchor (on the baseline), points from the top
@@ -73,13 +74,13 @@ public:
 
     /// Draws markup with its box anchored at (x, y): ax, ay in {0, 0.5, 1} pick the
     /// anchor (left/centre/right, top/middle/bottom). `rotate` turns it by -90 degrees.
-    void draw(const std::string& markup, double size, double x, double y, double ax, double ay,
+    void draw(const label& text, double size, double x, double y, double ax, double ay,
               bool rotate = false) const {
-        const text_box& b = box(markup, size);
+        const text_box& b = box(text.markup, size);
         if (sink_) {
             // The anchor on the baseline; LaTeX aligns the text about it by its own width.
             const double down = -ay * (b.ascent + b.descent) + b.ascent;
-            sink_->push_back({markup, size, rotate ? x + down : x, rotate ? y : y + down, ax, rotate});
+            sink_->push_back({text, size, rotate ? x + down : x, rotate ? y : y + down, ax, rotate});
             return;
         }
         cairo_save(cr_);
@@ -91,14 +92,15 @@ public:
 
     /// Draws markup with the left end of its baseline at (x, y), turned by -90 degrees
     /// about that point with `rotate`.
-    void draw_on_baseline(const std::string& markup, double size, double x, double y, bool rotate = false,
+    void draw_on_baseline(const label& text, double size, double x, double y, bool rotate = false,
                           double align = 0) const {
+        const std::string& markup = text.markup;
         if (sink_) {
             // The ink's left end, centre or right end as the anchor, so that LaTeX's own
             // width is what is aligned.
             const text_ink i = ink(markup, size);
             const double along = i.x + align * i.w;
-            sink_->push_back({markup, size, rotate ? x : x + along, rotate ? y - along : y, align, rotate});
+            sink_->push_back({text, size, rotate ? x : x + along, rotate ? y - along : y, align, rotate});
             return;
         }
         cairo_save(cr_);

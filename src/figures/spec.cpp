@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/spec.hpp"
 
-#include "cli/angle.hpp"
+#include "pendulum/angle.hpp"
 #include "figures/toml_reader.hpp"
 #include "pendulum/amplitude.hpp"
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/spec_build.hpp"
 
+#include "pendulum/angle.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/phase.hpp"
@@ -620,59 +621,35 @@ line_style method_line(const pendulum::method_choice& m) {
 }
 
 std::string typeset_angle(std::string_view text) {
+    using kind = pendulum::angle_token::kind;
+    const auto tokens = pendulum::angle_tokens(text);
     std::string out;
-    std::size_t i = 0;
-    auto digits_at = [&](std::size_t k) { return k < text.size() && std::isdigit(static_cast<unsigned char>(text[k])); };
-    while (i < text.size()) {
-        const char c = text[i];
-        if (text.substr(i, 2) == "pi") {
-            out += "<i>\u03c0</i>";
-            i += 2;
-        } else if (text.substr(i, 2) == std::string_view("\u03c0")) {
-            out += "<i>\u03c0</i>";
-            i += 2;
-        } else if (text.substr(i, 3) == "deg") {
-            out += "\u00b0";
-            i += 3;
-        } else if (text.substr(i, 3) == "rad") {
-            i += 3;
-        } else if (c == '-' || c == '+') {
-            // A sign at the start or after an operator or "(" is unary; otherwise an operator.
-            const bool unary = out.empty() || out.back() == '(' || out.ends_with("\u00d7") || out.ends_with(" ");
-            out += unary ? (c == '-' ? "\u2212" : "+") : (c == '-' ? " \u2212 " : " + ");
-            ++i;
-        } else if (c == '*') {
-            // "9*pi/10" reads as 9π/10; between two numbers it is a product sign.
-            const bool before_number = digits_at(i + 1) || (i + 1 < text.size() && text[i + 1] == '.');
-            out += before_number ? "\u00d7" : "";
-            ++i;
-        } else if (c == ' ') {
-            ++i;
-        } else if (digits_at(i) || c == '.') {
-            // A number; an exponent is set as a power of ten: 1e-6 -> 10^-6, 2.5e3 -> 2.5x10^3.
-            std::size_t j = i;
-            while (digits_at(j) || (j < text.size() && text[j] == '.')) ++j;
-            std::string mantissa(text.substr(i, j - i));
-            if (j < text.size() && (text[j] == 'e' || text[j] == 'E')) {
-                std::size_t k = j + 1;
-                std::string sign;
-                if (k < text.size() && (text[k] == '-' || text[k] == '+')) {
-                    if (text[k] == '-') sign = "\u2212";
-                    ++k;
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const auto& t = tokens[i];
+        switch (t.type) {
+            case kind::number:
+                // An exponent is set as a power of ten: 1e-6 -> 10^-6, 2.5e3 -> 2.5x10^3.
+                if (t.exponent.empty()) {
+                    out += t.mantissa;
+                } else {
+                    out += (t.mantissa == "1" ? std::string() : t.mantissa + "\u00d7") + "10<sup>" +
+                           (t.negative_exponent ? "\u2212" : "") + t.exponent + "</sup>";
                 }
-                std::size_t e = k;
-                while (digits_at(e)) ++e;
-                std::string exponent(text.substr(k, e - k));
-                exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
-                out += (mantissa == "1" ? std::string() : mantissa + "\u00d7") + "10<sup>" + sign + exponent + "</sup>";
-                i = e;
-            } else {
-                out += mantissa;
-                i = j;
-            }
-        } else {
-            out += plot::escape_markup(std::string(1, c));
-            ++i;
+                break;
+            case kind::pi: out += "<i>\u03c0</i>"; break;
+            case kind::degrees: out += "\u00b0"; break;
+            case kind::radians: break;
+            case kind::plus: out += " + "; break;
+            case kind::minus: out += " \u2212 "; break;
+            case kind::sign_plus: out += "+"; break;
+            case kind::sign_minus: out += "\u2212"; break;
+            // "9*pi/10" reads as 9π/10; before a number it is a product sign.
+            case kind::times:
+                if (i + 1 < tokens.size() && tokens[i + 1].type == kind::number) out += "\u00d7";
+                break;
+            case kind::divide: out += "/"; break;
+            case kind::open: out += "("; break;
+            case kind::close: out += ")"; break;
         }
     }
     return out;

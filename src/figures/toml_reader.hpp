@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "cli/angle.hpp"
+#include "pendulum/angle.hpp"
 #include "figures/spec.hpp"
 #include "pendulum/amplitude.hpp"
 #include "plot/figure.hpp"
@@ -190,7 +190,7 @@ public:
             return std::nullopt;
         }
         try {
-            a.value = pendulum::cli::parse_angle(a.text);
+            a.value = pendulum::parse_angle(a.text);
             if (!amplitude_range) pendulum::check_amplitude(a.value, std::string(key));
             if (amplitude_range && !(a.value >= 0 && a.value <= std::acos(-1.0))) {
                 throw std::invalid_argument(std::string(key) + " must lie in [0, pi], got " +

@@ -22,7 +22,7 @@ TEST(Methods, EveryNameIsUniqueAndRoundTrips) {
         EXPECT_FALSE(row.description.empty()) << row.name;
         EXPECT_NE(row.period, nullptr) << row.name;
         // A motion method other than exact has a Fourier solution; a period formula has none.
-        EXPECT_EQ(row.solution != nullptr, row.kind == method_kind::motion && row.name != "exact") << row.name;
+        EXPECT_EQ(row.solution != nullptr, row.has_motion() && row.role != method_role::exact) << row.name;
         const std::string text = row.min_n < 0 ? std::string(row.name) : std::string(row.name) + ":" + std::to_string(row.max_n);
         EXPECT_EQ(parse_method(text).text(), text);
     }

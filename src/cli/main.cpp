@@ -263,7 +263,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     int highest = -1;
     for (int n : orders) highest = std::max(highest, n);
     for (const auto& m : methods) {
-        if (m.row->name == "order") highest = std::max(highest, m.n);
+        if (m.row->role == method_role::iterated) highest = std::max(highest, m.n);
     }
     cli::table_writer writer(out, columns, format);
     for (const double value : amplitudes) {
@@ -278,7 +278,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         std::vector<double> row;
         for (const auto& c : cli::eval_columns()) row.push_back(c.value(point));
         for (int n : orders) row.push_back(level_period(n));
-        for (const auto& m : methods) row.push_back(m.row->name == "order" ? level_period(m.n) : method_period(m, value));
+        for (const auto& m : methods) row.push_back(m.row->role == method_role::iterated ? level_period(m.n) : method_period(m, value));
         if (o.length) row.push_back(small_period_s * point.exact.period_ratio());
         writer.row(row);
         if (!broken.empty()) warn_breakdown(value, broken);
@@ -338,7 +338,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     }
 
     const exact_solution exact(theta0);
-    const bool is_exact = method.row->name == "exact";
+    const bool is_exact = method.is_exact();
     const fourier_solution approx = is_exact ? fourier_solution{} : method_solution(method, theta0);
     if (!is_exact && !approx.exists()) {
         throw usage_error("--theta0 " + amplitudes.front().text + ": the iteration has no period at order " +
@@ -672,7 +672,7 @@ std::string list_markdown() {
     for (const auto& m : method_table()) {
         out << "| `" << m.name << (m.min_n < 0 ? "" : ":N") << "`"
             << (m.min_n < 0 ? "" : " (N = " + std::to_string(m.min_n) + ".." + std::to_string(m.max_n) + ")") << " | "
-            << (m.kind == method_kind::motion ? "motion" : "period") << " | " << m.description << " |\n";
+            << (m.has_motion() ? "motion" : "period") << " | " << m.description << " |\n";
     }
     out << "\n| plot | x | y | keys |\n| --- | --- | --- | --- |\n";
     for (const auto& p : figures::plot_table()) {
@@ -698,7 +698,7 @@ std::string list_text() {
     for (const auto& m : method_table()) {
         const std::string name = std::string(m.name) +
                                  (m.min_n < 0 ? "" : ":N (N = " + std::to_string(m.min_n) + ".." + std::to_string(m.max_n) + ")");
-        out << "  " << padded(name, 28) << padded(m.kind == method_kind::motion ? "motion" : "period", 8)
+        out << "  " << padded(name, 28) << padded(m.has_motion() ? "motion" : "period", 8)
             << m.description << "\n";
     }
     out << "\nPlot kinds (plot = KIND in a spec's [[panel]], or the plot command):\n";

@@ -45,8 +45,8 @@ struct series_style {
 };
 
 series_style style_of(const method_spec& m, int index) {
-    series_style s{m.label.empty() ? plot::label(method_label(m.method)) : plot::tex_label(m.label), method_line(m.method),
-                   m.method.row->name == "exact" ? marker_style::open_circle : marker_style::none, index, ""};
+    series_style s{m.label.empty() ? method_label(m.method) : plot::tex_label(m.label), method_line(m.method),
+                   m.method.is_exact() ? marker_style::open_circle : marker_style::none, index, ""};
     // The theme styles a method by name unless the spec says how it looks.
     if (!m.style && !m.marker) s.style_key = std::string(m.method.row->name);
     if (m.style) s.line = *m.style;
@@ -75,7 +75,7 @@ plot::series make_series(const series_style& st, std::vector<double> x, const st
     return s;
 }
 
-bool is_exact(const method_spec& m) { return m.method.row->name == "exact"; }
+bool is_exact(const method_spec& m) { return m.method.is_exact(); }
 
 /// The amplitude axis over [lo, hi], in multiples of pi or in degrees.
 plot::axis amplitude_axis(const panel_spec& p, double lo, double hi) {
@@ -372,7 +372,7 @@ plot::panel spectrum_panel(const context&, const panel_spec& p) {
             plot::label label = std::string(theta0_markup) + " = " + typeset_angle(a.text);
             if (p.methods.size() > 1) {
                 label = plot::join(plot::label(label.markup + ", "),
-                                   m.label.empty() ? plot::label(method_label(m.method)) : plot::tex_label(m.label));
+                                   m.label.empty() ? method_label(m.method) : plot::tex_label(m.label));
             }
             series_style st = amplitude_style(index++, label);
             st.marker = marker_style::open_circle;
@@ -599,23 +599,10 @@ std::string panel_name(std::size_t i) {
     return letters;
 }
 
-std::string method_label(const pendulum::method_choice& m) {
-    const std::string_view name = m.row->name;
-    if (name == "lowest" || name == "first" || name == "second") return std::string(name) + " order";
-    if (name == "order") return "order " + std::to_string(m.n);
-    if (name == "kidd-fogg") return "Kidd\u2013Fogg";
-    if (name == "lima-arun") return "Lima\u2013Arun";
-    if (name == "ganley") return "Ganley";
-    if (name == "denman") return "Denman";
-    if (name == "agm") return "AGM, " + std::to_string(m.n) + (m.n == 1 ? " step" : " steps");
-    if (name == "series") return "series to " + std::string(theta0_markup) + "<sup>" + std::to_string(2 * m.n) + "</sup>";
-    if (name == "log-asymptote") return "log asymptote";
-    return std::string(name);
-}
+plot::label method_label(const pendulum::method_choice& m) { return plot::tex_label(m.label()); }
 
 line_style method_line(const pendulum::method_choice& m) {
-    const std::string_view name = m.row->name;
-    if (name == "exact") return line_style::none;
+    if (m.is_exact()) return line_style::none;
     if (m.has_motion()) return line_style::solid;
     return line_style::dashed;
 }

@@ -44,7 +44,7 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t);
 std::string panel_name(std::size_t i);
 
 /// The legend label of a method where the spec gives none: "lowest order", "order 6", ...
-std::string method_label(const pendulum::method_choice& m);
+plot::label method_label(const pendulum::method_choice& m);
 
 /// The line style of a method where neither the spec nor the theme gives one: none (circles)
 /// for the exact solution, solid for laws of motion, dashed for period formulas.

@@ -30,34 +30,56 @@ double formula(double theta0, int) {
     return f(theta0);
 }
 
+/// A legend label that does not depend on N.
+template <const char* text>
+std::string fixed(int) {
+    return text;
+}
+
+constexpr char exact_label[] = "exact";
+constexpr char harmonic_label[] = "harmonic";
+constexpr char lowest_label[] = "lowest order";
+constexpr char first_label[] = "first order";
+constexpr char second_label[] = "second order";
+constexpr char polynomial_label[] = "polynomial";
+constexpr char kidd_fogg_label[] = "Kidd\u2013Fogg";
+constexpr char lima_arun_label[] = "Lima\u2013Arun";
+constexpr char ganley_label[] = "Ganley";
+constexpr char denman_label[] = "Denman";
+constexpr char log_asymptote_label[] = "log asymptote";
+
+std::string order_label(int n) { return "order " + std::to_string(n); }
+std::string agm_label(int n) { return "AGM, " + std::to_string(n) + (n == 1 ? " step" : " steps"); }
+std::string series_label(int n) { return "series to $\\vartheta_0^{" + std::to_string(2 * n) + "}$"; }
+
 constexpr std::array<method_row, 14> rows = {{
-    {"exact", method_kind::motion, -1, 0, "the exact solution (Jacobi elliptic functions)", formula<period_ratio>,
+    {"exact", method_role::exact, fixed<exact_label>, -1, 0, "the exact solution (Jacobi elliptic functions)", formula<period_ratio>,
      nullptr},
-    {"harmonic", method_kind::motion, -1, 0, "small-amplitude motion theta0 cos(w0 t)", period_of<harmonic>,
+    {"harmonic", method_role::approximant, fixed<harmonic_label>, -1, 0, "small-amplitude motion theta0 cos(w0 t)", period_of<harmonic>,
      solution_of<harmonic>},
-    {"lowest", method_kind::motion, -1, 0, "the paper's lowest order: c1 = theta0, besinc frequency",
+    {"lowest", method_role::approximant, fixed<lowest_label>, -1, 0, "the paper's lowest order: c1 = theta0, besinc frequency",
      period_of<lowest_order>, solution_of<lowest_order>},
-    {"first", method_kind::motion, -1, 0, "the paper's first order: c1', c3'", period_of<first_order>,
+    {"first", method_role::approximant, fixed<first_label>, -1, 0, "the paper's first order: c1', c3'", period_of<first_order>,
      solution_of<first_order>},
-    {"second", method_kind::motion, -1, 0, "the paper's second order (appendix): c1'', c3'', c5''",
+    {"second", method_role::approximant, fixed<second_label>, -1, 0, "the paper's second order (appendix): c1'', c3'', c5''",
      period_of<second_order>, solution_of<second_order>},
-    {"polynomial", method_kind::motion, -1, 0, "Taylor polynomials through theta0^5 (Fulcher and Davis)",
+    {"polynomial", method_role::approximant, fixed<polynomial_label>, -1, 0, "Taylor polynomials through theta0^5 (Fulcher and Davis)",
      period_of<polynomial>, solution_of<polynomial>},
-    {"order", method_kind::motion, 0, max_order, "the paper's iteration to order N (N + 1 harmonics)",
+    {"order", method_role::iterated, order_label, 0, max_order, "the paper's iteration to order N (N + 1 harmonics)",
      [](double t, int n) { return iterated(t, n).period_ratio(); }, [](double t, int n) { return iterated(t, n); }},
-    {"kidd-fogg", method_kind::period_only, -1, 0, "period 1/sqrt(k') (Kidd and Fogg 2002)",
+    {"kidd-fogg", method_role::period_only, fixed<kidd_fogg_label>, -1, 0, "period 1/sqrt(k') (Kidd and Fogg 2002)",
      formula<period_kidd_fogg>, nullptr},
-    {"lima-arun", method_kind::period_only, -1, 0, "period -ln(k')/(1 - k') (Lima and Arun 2006)",
+    {"lima-arun", method_role::period_only, fixed<lima_arun_label>, -1, 0, "period -ln(k')/(1 - k') (Lima and Arun 2006)",
      formula<period_lima_arun>, nullptr},
-    {"ganley", method_kind::period_only, -1, 0, "period sqrt(F theta0/sin(F theta0)), F = sqrt(3)/2 (Ganley 1985)",
+    {"ganley", method_role::period_only, fixed<ganley_label>, -1, 0, "period sqrt(F theta0/sin(F theta0)), F = sqrt(3)/2 (Ganley 1985)",
      formula<period_ganley>, nullptr},
-    {"agm", method_kind::period_only, 1, max_agm_steps, "period after N AGM steps (Carvalhaes and Suppes 2008)",
+    {"agm", method_role::period_only, agm_label, 1, max_agm_steps, "period after N AGM steps (Carvalhaes and Suppes 2008)",
      period_agm, nullptr},
-    {"denman", method_kind::period_only, -1, 0, "period 1/(1 - theta0^2/16) (Denman 1959)", formula<period_denman>,
+    {"denman", method_role::period_only, fixed<denman_label>, -1, 0, "period 1/(1 - theta0^2/16) (Denman 1959)", formula<period_denman>,
      nullptr},
-    {"series", method_kind::period_only, 1, max_series_terms, "Taylor series of the period through theta0^(2N)",
+    {"series", method_role::period_only, series_label, 1, max_series_terms, "Taylor series of the period through theta0^(2N)",
      period_series, nullptr},
-    {"log-asymptote", method_kind::period_only, -1, 0, "large-amplitude asymptote (2/pi) ln(4/k')",
+    {"log-asymptote", method_role::period_only, fixed<log_asymptote_label>, -1, 0, "large-amplitude asymptote (2/pi) ln(4/k')",
      formula<period_log_asymptote>, nullptr},
 }};
 

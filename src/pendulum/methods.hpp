@@ -9,18 +9,23 @@
 
 namespace pendulum {
 
-/// What a method gives: a whole law of motion theta(t), or only the period.
-enum class method_kind { motion, period_only };
+/// What a method is: the exact solution, one of the paper's closed-form approximants (or
+/// another law of motion), the paper's iteration to order N, or a formula for the period only.
+enum class method_role { exact, approximant, iterated, period_only };
 
-/// One row of the method table: everything a user can choose by name.
+/// One row of the method table: everything a user can choose by name, and what it is.
 struct method_row {
     std::string_view name;         ///< "exact", "order", "agm", ...; written NAME or NAME:N
-    method_kind kind;              ///< law of motion or period only
+    method_role role;              ///< what it is: figures and commands treat each role alike
+    std::string (*label)(int n);   ///< legend label for N (-1 without), text with TeX math in $...$
     int min_n;                     ///< smallest N, or -1 when the method takes none
     int max_n;                     ///< largest N
     std::string_view description;  ///< one line for help and lists
     double (*period)(double theta0, int n);                ///< T/T0
     fourier_solution (*solution)(double theta0, int n);    ///< the Fourier solution, or null
+
+    /// True for methods with a law of motion theta(t), false for period formulas.
+    constexpr bool has_motion() const { return role != method_role::period_only; }
 };
 
 /// Every method, in the order help and lists show them.
@@ -34,7 +39,11 @@ struct method_choice {
     /// The name as written: "lowest", "order:6".
     std::string text() const;
     /// True for methods with a law of motion.
-    bool has_motion() const { return row->kind == method_kind::motion; }
+    bool has_motion() const { return row->has_motion(); }
+    /// True for the exact solution.
+    bool is_exact() const { return row->role == method_role::exact; }
+    /// The legend label, text with TeX math in $...$: "lowest order", "order 6", ...
+    std::string label() const { return row->label(n); }
 };
 
 /// Parses NAME or NAME:N; throws domain_error naming the text and listing the methods.

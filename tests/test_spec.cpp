@@ -65,7 +65,7 @@ label = "0.1 %"
     EXPECT_EQ(f.pendulum->g, 9.80665);
     ASSERT_EQ(f.panels.size(), 2u);
     const auto& a = f.panels[0];
-    EXPECT_EQ(a.plot, plot_kind::trajectory);
+    EXPECT_EQ(a.plot->name, "trajectory");
     ASSERT_EQ(a.theta0.size(), 1u);
     EXPECT_EQ(a.theta0[0].text, "170deg");
     EXPECT_DOUBLE_EQ(a.theta0[0].value, 170 * pi / 180);
@@ -80,7 +80,7 @@ label = "0.1 %"
     EXPECT_EQ(a.range, (std::array<double, 2>{0, 3}));
     EXPECT_EQ(a.paper_file, "Fig.Teacher");
     const auto& b = f.panels[1];
-    EXPECT_EQ(b.plot, plot_kind::period);
+    EXPECT_EQ(b.plot->name, "period");
     EXPECT_EQ(b.y, period_axis::error_log);
     EXPECT_TRUE(b.degrees);
     ASSERT_TRUE(b.range);
@@ -194,6 +194,26 @@ TEST(Spec, PlotTableHasOneRowPerKind) {
     for (const auto& row : plot_table()) {
         EXPECT_FALSE(row.description.empty());
         EXPECT_FALSE(row.keys.empty());
+        EXPECT_NE(row.build, nullptr) << row.name;
+        EXPECT_EQ(find_plot(row.name), &row);
+        // A row's keys agree with its behaviour: amplitudes and range.
+        const std::string keys = " " + std::string(row.keys) + " ";
+        EXPECT_EQ(keys.find(" theta0 ") != std::string::npos, row.amplitudes != amplitude_policy::none) << row.name;
+        EXPECT_EQ(keys.find(" range ") != std::string::npos, row.range != range_kind::none) << row.name;
+        // Every name is in the lists that messages and help are made from.
+        EXPECT_NE(plot_names().find(std::string(row.name)), std::string::npos) << row.name;
+        EXPECT_EQ(plot_names(true).find(std::string(row.name)) != std::string::npos,
+                  row.amplitudes != amplitude_policy::none)
+            << row.name;
+    }
+    EXPECT_EQ(find_plot("nonesuch"), nullptr);
+    EXPECT_EQ(plot_names(true, "or"), "trajectory, phase, convergence, spectrum or pendulum");
+    // A panel without plot = names every kind, the drawing too.
+    try {
+        parse_spec("[[panel]]\ntheta0 = 1\n", "x.toml");
+        FAIL() << "no plot accepted";
+    } catch (const spec_error& e) {
+        EXPECT_NE(std::string(e.what()).find("pendulum"), std::string::npos) << e.what();
     }
 }
 

@@ -141,10 +141,10 @@ plot::figure animation_frame(const entry& e, const build_options& options, const
     const auto panels = panels_of(e, options);
     add_frame_state(f, e.spec, panels, w0_t);
     if (e.spec.animation && e.spec.animation->clock && !f.panels.empty()) {
-        // The clock goes on the pendulum, or on the first panel.
+        // The clock goes on the first drawing (the pendulum), or on the first panel.
         std::size_t at = 0;
         for (std::size_t i = 0; i < panels.size(); ++i) {
-            if (panels[i].plot == plot_kind::pendulum) {
+            if (panels[i].plot->drawing) {
                 at = i;
                 break;
             }

@@ -13,10 +13,8 @@
 namespace figures {
 
 bool entry::takes_amplitudes() const {
-    return std::any_of(spec.panels.begin(), spec.panels.end(), [](const panel_spec& p) {
-        return p.plot == plot_kind::trajectory || p.plot == plot_kind::phase || p.plot == plot_kind::convergence ||
-               p.plot == plot_kind::spectrum || p.plot == plot_kind::pendulum;
-    });
+    return std::any_of(spec.panels.begin(), spec.panels.end(),
+                       [](const panel_spec& p) { return p.plot->amplitudes != amplitude_policy::none; });
 }
 
 const std::vector<entry>& catalog() {

@@ -32,23 +32,6 @@ std::string join_problems(const std::vector<spec_problem>& problems) {
     return out;
 }
 
-constexpr std::array<plot_row, 7> plots = {{
-    {"trajectory", plot_kind::trajectory, "time", "theta(t)", "theta0 methods time range angle_unit",
-     "the law of motion theta(t) at one amplitude"},
-    {"phase", plot_kind::phase, "theta", "theta'/w0", "theta0 methods separatrix angle_unit",
-     "orbits in the phase plane, one per amplitude"},
-    {"period", plot_kind::period, "theta0", "T/T0", "methods range y angle_unit",
-     "the period against the amplitude: value, error in %, or log |error|"},
-    {"coefficient", plot_kind::coefficient, "theta0", "c_{2k+1}", "harmonic methods range angle_unit",
-     "one Fourier coefficient against the amplitude"},
-    {"convergence", plot_kind::convergence, "N", "|T_N/T - 1|", "theta0 orders",
-     "the period error of the iteration against its order N"},
-    {"spectrum", plot_kind::spectrum, "2k+1", "|c_{2k+1}|", "theta0 methods harmonics",
-     "the Fourier coefficients' magnitudes, on a log axis"},
-    {"pendulum", plot_kind::pendulum, "", "", "theta0 methods trail",
-     "rod and bob of each method at the frame's time, for animations"},
-}};
-
 /// Keys every panel takes.
 constexpr std::string_view common_panel_keys = "plot title x_label y_label y_range paper_file line";
 constexpr std::string_view figure_keys = "columns panel_width_cm panel_aspect legend title";
@@ -118,8 +101,7 @@ std::optional<method_spec> read_method(reader& r, const toml::node& n, const plo
         r.problem(*name_node, what);
         return std::nullopt;
     }
-    const bool wants_motion = plot.kind != plot_kind::period;
-    if (wants_motion && !m.method.has_motion()) {
+    if (plot.needs_motion && !m.method.has_motion()) {
         r.problem(*name_node, "method " + m.method.text() + " gives a period only; plot '" + std::string(plot.name) +
                                   "' needs a law of motion (use it in a period panel)");
         return std::nullopt;
@@ -135,7 +117,7 @@ std::vector<std::string> panel_keys_of(const plot_row& plot) {
 
 std::vector<std::string> all_panel_keys() {
     std::vector<std::string> keys = words(common_panel_keys);
-    for (const auto& p : plots) {
+    for (const auto& p : plot_table()) {
         for (auto& k : words(p.keys)) {
             if (!contains(keys, k)) keys.push_back(std::move(k));
         }
@@ -154,7 +136,7 @@ void read_range(reader& r, const toml::table& t, const plot_row& plot, panel_spe
     std::array<double, 2> v{};
     for (std::size_t i = 0; i < 2; ++i) {
         const toml::node& e = *a->get(i);
-        if (plot.kind == plot_kind::trajectory) {
+        if (plot.range == range_kind::times) {
             if (e.is_number()) {
                 v[i] = e.is_integer() ? static_cast<double>(e.as_integer()->get()) : e.as_floating_point()->get();
             } else {
@@ -184,23 +166,23 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
     const toml::node* plot_node = t.get("plot");
     if (!plot_node || !plot_node->is_string()) {
         r.problem(plot_node ? r.at(plot_node->source()) : p.where,
-                  "a panel needs plot = one of trajectory, phase, period, coefficient, convergence, spectrum");
+                  "a panel needs plot = one of " + plot_names());
         return std::nullopt;
     }
     const plot_row* plot = nullptr;
-    std::vector<std::string> plot_names;
-    for (const auto& row : plots) {
-        plot_names.emplace_back(row.name);
+    std::vector<std::string> names;
+    for (const auto& row : plot_table()) {
+        names.emplace_back(row.name);
         if (row.name == plot_node->as_string()->get()) plot = &row;
     }
     if (!plot) {
         const std::string given = plot_node->as_string()->get();
-        std::string what = "unknown plot '" + given + "'; plots: " + listed(plot_names);
-        if (const auto guess = suggest(given, plot_names); !guess.empty()) what += "; did you mean " + guess + "?";
+        std::string what = "unknown plot '" + given + "'; plots: " + listed(names);
+        if (const auto guess = suggest(given, names); !guess.empty()) what += "; did you mean " + guess + "?";
         r.problem(*plot_node, what);
         return std::nullopt;
     }
-    p.plot = plot->kind;
+    p.plot = plot;
     const auto keys = panel_keys_of(*plot);
     r.check_keys(t, keys, "a " + std::string(plot->name) + " panel", all_panel_keys(),
                  "does not apply to plot '" + std::string(plot->name) + "'");
@@ -211,8 +193,8 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
         if (!n) {
             r.problem(p.where, "a " + std::string(plot->name) + " panel needs theta0");
         } else if (const auto* a = n->as_array()) {
-            if (plot->kind == plot_kind::trajectory && a->size() != 1) {
-                r.problem(*n, "a trajectory panel takes one theta0");
+            if (plot->amplitudes != amplitude_policy::list && a->size() != 1) {
+                r.problem(*n, "a " + std::string(plot->name) + " panel takes one theta0");
             } else if (a->empty()) {
                 r.problem(*n, "'theta0' lists no amplitude");
             }
@@ -294,9 +276,6 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
     }
     if (auto v = r.boolean(t, "separatrix")) p.separatrix = *v;
     if (auto v = r.number(t, "trail", 0.0, 10.0)) p.trail = *v;
-    if (plot->kind == plot_kind::pendulum && p.theta0.size() > 1) {
-        r.problem(*t.get("theta0"), "a pendulum panel takes one theta0");
-    }
     if (auto v = r.choice(t, "angle_unit", angle_units)) p.degrees = *v;
     if (const toml::node* n = t.get("line")) {
         const auto* a = n->as_array();
@@ -325,8 +304,6 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
 
 spec_error::spec_error(std::vector<spec_problem> problems)
     : std::invalid_argument(join_problems(problems)), problems_(std::move(problems)) {}
-
-std::span<const plot_row> plot_table() { return plots; }
 
 std::string suggest(std::string_view word, const std::vector<std::string>& names) {
     // Edit distance with transpositions (optimal string alignment); a name within a third of

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "figures/plots.hpp"
 #include "pendulum/methods.hpp"
 #include "plot/figure.hpp"
 #include "plot/theme.hpp"
@@ -44,22 +45,6 @@ private:
     std::vector<spec_problem> problems_;
 };
 
-/// What a panel plots; one row of plot_table() each.
-enum class plot_kind { trajectory, phase, period, coefficient, convergence, spectrum, pendulum };
-
-/// One row of the plot-kind table.
-struct plot_row {
-    std::string_view name;         ///< the spec's `plot` value
-    plot_kind kind;                ///< the kind
-    std::string_view x;            ///< what the x axis shows
-    std::string_view y;            ///< what the y axis shows
-    std::string_view keys;         ///< the panel keys it takes besides the common ones, space-separated
-    std::string_view description;  ///< one line for help and lists
-};
-
-/// Every plot kind, in the order help and lists show them.
-std::span<const plot_row> plot_table();
-
 /// An amplitude as written in the spec and its value in radians.
 struct amplitude {
     std::string text;  ///< as written: "170deg", "95pi/100"
@@ -94,7 +79,7 @@ enum class legend_mode { first, each, none };
 
 /// One panel of a spec.
 struct panel_spec {
-    plot_kind plot = plot_kind::trajectory;      ///< what it plots
+    const plot_row* plot = nullptr;              ///< what it plots (a row of plot_table())
     source_position where;                       ///< the [[panel]] header
     std::vector<amplitude> theta0;               ///< amplitudes, where the plot takes them
     std::vector<method_spec> methods;            ///< methods, where the plot takes them

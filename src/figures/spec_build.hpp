@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "figures/panel_support.hpp"
+#include "figures/plot_builders.hpp"
 #include "figures/spec.hpp"
 #include "plot/figure.hpp"
 
@@ -29,25 +31,11 @@ plot::figure figure_grid(const figure_spec& spec, const spec_overrides& override
 /// The figure a spec describes, its data computed by the core library.
 plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrides = {});
 
-/// An angle expression as written, typeset as Pango markup: "95pi/100" -> 95π/100 (italic
-/// π), "170deg" -> 170°, "pi-1e-6" -> π − 10⁻⁶.
-std::string typeset_angle(std::string_view text);
-
 /// Adds what moves at time w0 t: the pendulums, a time cursor and a dot per method on
 /// trajectories, a dot per orbit on phase panels. `panels` are the specs f was built from.
 void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector<panel_spec>& panels, double w0_t);
 
-/// Adds the rods, bobs, trails and pivot of a pendulum panel at time w0 t.
-void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t);
-
 /// The name of the i-th panel (from 0): a, b, ..., z, aa, ab, ...
 std::string panel_name(std::size_t i);
-
-/// The legend label of a method where the spec gives none: "lowest order", "order 6", ...
-plot::label method_label(const pendulum::method_choice& m);
-
-/// The line style of a method where neither the spec nor the theme gives one: none (circles)
-/// for the exact solution, solid for laws of motion, dashed for period formulas.
-plot::line_style method_line(const pendulum::method_choice& m);
 
 }  // namespace figures

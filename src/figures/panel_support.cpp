@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "figures/panel_support.hpp"
+
+#include "pendulum/angle.hpp"
+#include "pendulum/phase.hpp"
+#include "plot/tex_markup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace figures {
+
+using plot::line_style;
+using plot::marker_style;
+using std::numbers::pi;
+
+/// n + 1 evenly spaced values over [a, b], the last exactly b.
+std::vector<double> grid(double a, double b, int n) {
+    std::vector<double> v;
+    v.reserve(static_cast<std::size_t>(n) + 1);
+    for (int i = 0; i <= n; ++i) v.push_back(i == n ? b : a + (b - a) * i / n);
+    return v;
+}
+
+series_style style_of(const method_spec& m, int index) {
+    series_style s{m.label.empty() ? method_label(m.method) : plot::tex_label(m.label), method_line(m.method),
+                   m.method.is_exact() ? marker_style::open_circle : marker_style::none, index, ""};
+    // The theme styles a method by name unless the spec says how it looks.
+    if (!m.style && !m.marker) s.style_key = std::string(m.method.row->name);
+    if (m.style) s.line = *m.style;
+    if (m.marker) s.marker = *m.marker;
+    s.rgb_color = m.color;
+    return s;
+}
+
+
+/// An empty series in the style.
+plot::series series_of(const series_style& st) {
+    plot::series s;
+    s.label = st.label;
+    s.line = st.line;
+    s.marker = st.marker;
+    s.color = st.color;
+    s.style_key = st.style_key;
+    s.rgb_color = st.rgb_color;
+    return s;
+}
+
+plot::series make_series(const series_style& st, std::vector<double> x, const std::function<double(double)>& f) {
+    plot::series s = series_of(st);
+    s.y.reserve(x.size());
+    for (double v : x) s.y.push_back(f(v));
+    s.x = std::move(x);
+    return s;
+}
+
+
+bool is_exact(const method_spec& m) { return m.method.is_exact(); }
+
+/// The amplitude axis over [lo, hi], in multiples of pi or in degrees.
+plot::axis amplitude_axis(const panel_spec& p, double lo, double hi) {
+    plot::axis a;
+    a.label = theta0_markup;
+    a.min = lo;
+    a.max = hi;
+    a.ticks = plot::tick_kind::multiples_of_pi;
+    a.max_ticks = 5;
+    if (p.degrees) {
+        a.ticks = plot::tick_kind::degrees;
+        a.min = lo * 180 / pi;
+        a.max = hi * 180 / pi;
+    }
+    return a;
+}
+
+double to_axis_angle(const panel_spec& p, double theta) { return p.degrees ? theta * 180 / pi : theta; }
+
+
+/// Amplitudes where the exact values are marked (multiples of pi/24) and the fine grid for
+
+/// curves, inside the panel's range; the approximants are defined on (0, pi).
+std::vector<double> circle_amplitudes(double lo, double hi) {
+    std::vector<double> a;
+    for (int k = 1; k <= 23; ++k) {
+        const double t = k * pi / 24;
+        if (t >= lo && t <= hi) a.push_back(t);
+    }
+    return a;
+}
+
+std::vector<double> curve_amplitudes(double lo, double hi) {
+    return grid(std::max(lo, 1e-3), std::min(hi, pi - 1e-3), 400);
+}
+
+/// Seconds per unit of w0 t, for a spec with a [pendulum].
+double seconds_per_radian(const figure_spec& spec) { return std::sqrt(spec.pendulum->length_m / spec.pendulum->g); }
+
+/// The x value of a trajectory panel at t = s T, its unit per exact period, and its label.
+std::pair<double, std::string> time_unit_of(const figure_spec& spec, const panel_spec& p,
+                                            const pendulum::exact_solution& exact) {
+    if (p.time == time_unit::small_period) return {exact.period_ratio(), "<i>t</i>/<i>T</i><sub>0</sub>"};
+    if (p.time == time_unit::seconds) return {4 * exact.quarter_period() * seconds_per_radian(spec), "<i>t</i> (s)"};
+    return {1.0, "<i>t</i>/<i>T</i>"};
+}
+
+/// Line styles for series that differ by amplitude, in order.
+series_style amplitude_style(std::size_t i, const plot::label& label) {
+    static const line_style cycle[] = {line_style::solid, line_style::dashed, line_style::dotted, line_style::dash_dot};
+    return {label, cycle[i % 4], i == 4 ? marker_style::open_circle : marker_style::none, static_cast<int>(i), ""};
+}
+
+
+plot::line_style method_line(const pendulum::method_choice& m) {
+    if (m.is_exact()) return line_style::none;
+    if (m.has_motion()) return line_style::solid;
+    return line_style::dashed;
+}
+
+std::string typeset_angle(std::string_view text) {
+    using kind = pendulum::angle_token::kind;
+    const auto tokens = pendulum::angle_tokens(text);
+    std::string out;
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const auto& t = tokens[i];
+        switch (t.type) {
+            case kind::number:
+                // An exponent is set as a power of ten: 1e-6 -> 10^-6, 2.5e3 -> 2.5x10^3.
+                if (t.exponent.empty()) {
+                    out += t.mantissa;
+                } else {
+                    out += (t.mantissa == "1" ? std::string() : t.mantissa + "\u00d7") + "10<sup>" +
+                           (t.negative_exponent ? "\u2212" : "") + t.exponent + "</sup>";
+                }
+                break;
+            case kind::pi: out += "<i>\u03c0</i>"; break;
+            case kind::degrees: out += "\u00b0"; break;
+            case kind::radians: break;
+            case kind::plus: out += " + "; break;
+            case kind::minus: out += " \u2212 "; break;
+            case kind::sign_plus: out += "+"; break;
+            case kind::sign_minus: out += "\u2212"; break;
+            // "9*pi/10" reads as 9π/10; before a number it is a product sign.
+            case kind::times:
+                if (i + 1 < tokens.size() && tokens[i + 1].type == kind::number) out += "\u00d7";
+                break;
+            case kind::divide: out += "/"; break;
+            case kind::open: out += "("; break;
+            case kind::close: out += ")"; break;
+        }
+    }
+    return out;
+}
+
+plot::series moving_dot(const series_style& st) {
+    plot::series dot = series_of(st);
+    dot.label.clear();
+    dot.style_key.clear();
+    dot.line = line_style::none;
+    dot.marker = marker_style::filled_circle;
+    dot.marker_scale = 1.8;
+    dot.autoscale = false;
+    return dot;
+}
+
+std::pair<double, double> state_at(const method_spec& m, const pendulum::exact_solution& exact, double w0_t) {
+    const double period = 4 * exact.quarter_period();
+    if (is_exact(m)) {
+        return {exact.theta_at_fraction(w0_t / period), pendulum::velocity_at_fraction(exact, w0_t / period)};
+    }
+    const auto sol = pendulum::method_solution(m.method, exact.amplitude());
+    return {sol.theta(w0_t), pendulum::velocity(sol, w0_t)};
+}
+
+}  // namespace figures

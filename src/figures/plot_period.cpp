@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The period plot: T/T0 of each method against the amplitude, or its error.
+#include "figures/plot_builders.hpp"
+
+#include "figures/panel_support.hpp"
+#include "pendulum/exact.hpp"
+#include "pendulum/methods.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace figures {
+
+using plot::line_style;
+using plot::marker_style;
+using std::numbers::pi;
+
+plot::panel period_panel(const panel_context& c, const panel_spec& p) {
+    const double lo = p.range ? (*p.range)[0] : 0.0;
+    const double hi = p.range ? (*p.range)[1] : pi;
+    plot::panel panel;
+    panel.x = amplitude_axis(p, lo, hi);
+    if (c.width_cm < 5) panel.x.max_ticks = 3;
+    const double seconds = c.spec.pendulum ? 2 * pi * seconds_per_radian(c.spec) : 1.0;
+    switch (p.y) {
+        case period_axis::value:
+            panel.y.label = c.spec.pendulum ? "<i>T</i> (s)" : "<i>T</i>/<i>T</i><sub>0</sub>";
+            break;
+        case period_axis::error_percent: panel.y.label = "relative error (%)"; break;
+        case period_axis::error_log:
+            panel.y.label = "|<i>T</i><sub><i>m</i></sub>/<i>T</i> \u2212 1|";
+            panel.y.kind = plot::scale::log;
+            panel.y.max_ticks = 9;
+            break;
+    }
+    // Each period is computed once per amplitude: the exact one for the errors.
+    const auto curve = curve_amplitudes(lo, hi);
+    std::vector<double> exact;
+    if (p.y != period_axis::value) {
+        for (double t : curve) exact.push_back(pendulum::period_ratio(t));
+    }
+    for (std::size_t i = 0; i < p.methods.size(); ++i) {
+        const auto& m = p.methods[i];
+        const series_style st = style_of(m, static_cast<int>(i));
+        if (p.y == period_axis::value) {
+            auto s = make_series(st, is_exact(m) ? circle_amplitudes(lo, hi) : curve,
+                                 [&](double t) { return seconds * pendulum::method_period(m.method, t); });
+            for (double& v : s.x) v = to_axis_angle(p, v);
+            panel.data.push_back(std::move(s));
+            continue;
+        }
+        if (is_exact(m)) continue;  // its error is zero
+        plot::series s = series_of(st);
+        for (std::size_t k = 0; k < curve.size(); ++k) {
+            const double err = pendulum::method_period(m.method, curve[k]) / exact[k] - 1;
+            s.x.push_back(to_axis_angle(p, curve[k]));
+            if (p.y == period_axis::error_percent) {
+                s.y.push_back(100 * err);
+            } else {
+                // Below the rounding of T itself an error means nothing on a log axis.
+                s.y.push_back(std::fabs(err) > 1e-16 ? std::fabs(err) : std::nan(""));
+            }
+        }
+        panel.data.push_back(std::move(s));
+    }
+    return panel;
+}
+
+}  // namespace figures

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The phase plot: orbits in the phase plane, one per amplitude.
+#include "figures/plot_builders.hpp"
+
+#include "figures/panel_support.hpp"
+#include "pendulum/exact.hpp"
+#include "pendulum/methods.hpp"
+#include "pendulum/phase.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace figures {
+
+using plot::line_style;
+using plot::marker_style;
+using std::numbers::pi;
+
+plot::panel phase_panel(const panel_context&, const panel_spec& p) {
+    plot::panel panel;
+    const double angle = p.degrees ? 180 / pi : 1.0;
+    panel.x.label = "<i>\u03d1</i>";
+    panel.x.ticks = p.degrees ? plot::tick_kind::degrees : plot::tick_kind::multiples_of_pi;
+    panel.x.max_ticks = 5;
+    panel.y.label = "d<i>\u03d1</i>/d(<i>\u03c9</i><sub>0</sub><i>t</i>)";
+    const auto s_grid = grid(0, 1, 400);
+    for (std::size_t i = 0; i < p.theta0.size(); ++i) {
+        const amplitude& a = p.theta0[i];
+        const pendulum::exact_solution exact(a.value);
+        const double period = 4 * exact.quarter_period();
+        for (std::size_t j = 0; j < p.methods.size(); ++j) {
+            const auto& m = p.methods[j];
+            // One method: each orbit its own colour; several: a colour per method.
+            series_style st = style_of(m, static_cast<int>(p.methods.size() == 1 ? i : j));
+            if (i > 0) st.label.clear();  // one legend entry per method
+            plot::series s = series_of(st);
+            if (is_exact(m)) {
+                if (!m.style && !m.marker) {
+                    // An orbit reads best as a line, whatever the theme's circles for exact.
+                    s.line = line_style::solid;
+                    s.marker = marker_style::none;
+                    s.style_key.clear();
+                }
+                for (double t : s_grid) {
+                    s.x.push_back(angle * exact.theta_at_fraction(t));
+                    s.y.push_back(pendulum::velocity_at_fraction(exact, t));
+                }
+            } else {
+                const auto sol = pendulum::method_solution(m.method, a.value);
+                for (double t : s_grid) {
+                    s.x.push_back(angle * sol.theta(t * period));
+                    s.y.push_back(pendulum::velocity(sol, t * period));
+                }
+            }
+            panel.data.push_back(std::move(s));
+        }
+    }
+    if (p.separatrix) {
+        const auto theta = grid(-pi, pi, 400);
+        for (double sign : {1.0, -1.0}) {
+            plot::series s;
+            if (sign > 0) s.label = "separatrix";
+            s.line = line_style::dashed;
+            for (double t : theta) {
+                s.x.push_back(angle * t);
+                s.y.push_back(sign * pendulum::separatrix_velocity(t));
+            }
+            panel.data.push_back(std::move(s));
+        }
+    }
+    return panel;
+}
+
+void add_phase_frame(plot::panel& panel, const panel_context&, const panel_spec& p, double w0_t) {
+    const double angle = p.degrees ? 180 / pi : 1.0;
+    for (std::size_t i = 0; i < p.theta0.size(); ++i) {
+        const pendulum::exact_solution exact(p.theta0[i].value);
+        for (std::size_t j = 0; j < p.methods.size(); ++j) {
+            // One method: each orbit its own colour, as the orbits are drawn.
+            const int index = static_cast<int>(p.methods.size() == 1 ? i : j);
+            plot::series dot = moving_dot(style_of(p.methods[j], index));
+            const auto [theta, velocity] = state_at(p.methods[j], exact, w0_t);
+            dot.x = {angle * theta};
+            dot.y = {velocity};
+            panel.data.push_back(std::move(dot));
+        }
+    }
+}
+
+}  // namespace figures

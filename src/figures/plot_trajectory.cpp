@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The trajectory plot: theta(t) of each method at one amplitude.
+#include "figures/plot_builders.hpp"
+
+#include "figures/panel_support.hpp"
+#include "pendulum/exact.hpp"
+#include "pendulum/methods.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace figures {
+
+using plot::line_style;
+using plot::marker_style;
+using std::numbers::pi;
+
+plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
+    const amplitude& a = p.theta0.front();
+    const pendulum::exact_solution exact(a.value);
+    const double period = 4 * exact.quarter_period();  // T in units of 1/w0
+    // x = s * unit with s = t/T.
+    const auto [unit, x_label] = time_unit_of(c.spec, p, exact);
+    const double lo = p.range ? (*p.range)[0] / unit : 0.0;
+    const double hi = p.range ? (*p.range)[1] / unit : 1.0;
+    const auto scaled = [unit = unit](std::vector<double> s) {
+        if (unit != 1.0) {
+            for (double& v : s) v *= unit;
+        }
+        return s;
+    };
+    const double span = hi - lo;
+    const int circles = std::max(2, static_cast<int>(std::lround(24 * span)));
+    const int points = std::max(300, static_cast<int>(std::lround(300 * span)));
+    plot::panel panel;
+    panel.label = std::string(theta0_markup) + " = " + typeset_angle(a.text);
+    panel.x.label = x_label;
+    panel.x.min = lo * unit;
+    panel.x.max = hi * unit;
+    panel.x.max_ticks = c.width_cm < 5 ? 3 : 5;
+    panel.y.label = "<i>\u03d1</i>";
+    if (p.degrees) {
+        panel.y.ticks = plot::tick_kind::degrees;
+        panel.y.max_ticks = 7;
+    } else {
+        panel.y.ticks = plot::tick_kind::multiples_of_pi;
+        panel.y.max_ticks = 7;
+    }
+    panel.y.round_limits = true;
+    panel.y.margin = 0.002;  // just enough to keep the curve off the frame at a tick
+    const double angle = p.degrees ? 180 / pi : 1.0;
+    for (std::size_t i = 0; i < p.methods.size(); ++i) {
+        const auto& m = p.methods[i];
+        const series_style st = style_of(m, static_cast<int>(i));
+        if (is_exact(m)) {
+            panel.data.push_back(make_series(st, grid(lo, hi, circles),
+                                             [&](double s) { return angle * exact.theta_at_fraction(s); }));
+        } else {
+            const auto solution = pendulum::method_solution(m.method, a.value);
+            panel.data.push_back(make_series(st, grid(lo, hi, points),
+                                             [&](double s) { return angle * solution.theta(s * period); }));
+        }
+        panel.data.back().x = scaled(std::move(panel.data.back().x));
+    }
+    // The exact motion sets the angle axis; an approximation that overshoots it near the
+    // separatrix is clipped rather than stretching the axis.
+    if (std::any_of(p.methods.begin(), p.methods.end(), [](const auto& m) { return is_exact(m); })) {
+        for (std::size_t i = 0; i < p.methods.size(); ++i) panel.data[i].sets_limits = is_exact(p.methods[i]);
+    }
+    return panel;
+}
+
+void add_trajectory_frame(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t) {
+    const double angle = p.degrees ? 180 / pi : 1.0;
+    for (const auto& a : p.theta0) {
+        const pendulum::exact_solution exact(a.value);
+        const double period = 4 * exact.quarter_period();
+        // The time cursor.
+        const double x_now = w0_t / period * time_unit_of(c.spec, p, exact).first;
+        plot::series cursor;
+        cursor.x = {x_now, x_now};
+        cursor.y = {-1e3, 1e3};
+        cursor.autoscale = false;
+        cursor.alpha = 0.5;
+        cursor.width_scale = 0.6;
+        panel.data.push_back(std::move(cursor));
+        for (std::size_t j = 0; j < p.methods.size(); ++j) {
+            plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(j)));
+            dot.x = {x_now};
+            dot.y = {angle * state_at(p.methods[j], exact, w0_t).first};
+            panel.data.push_back(std::move(dot));
+        }
+    }
+}
+
+}  // namespace figures

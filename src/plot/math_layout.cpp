@@ -5,9 +5,25 @@ namespace plot {
 
 namespace {
 
-/// The end of the element whose content starts at `from`: the position of "</tag>".
+/// The end of the element whose content starts at `from`: the position of its "</tag>",
+/// past any element of the same tag nested in it (a subscript of a subscript).
 std::size_t closing(const std::string& s, std::size_t from, const std::string& tag) {
-    return s.find("</" + tag + ">", from);
+    const std::string open = "<" + tag + ">";
+    const std::string close = "</" + tag + ">";
+    int depth = 0;
+    for (std::size_t i = from; i < s.size();) {
+        if (s.compare(i, open.size(), open) == 0) {
+            ++depth;
+            i += open.size();
+        } else if (s.compare(i, close.size(), close) == 0) {
+            if (depth == 0) return i;
+            --depth;
+            i += close.size();
+        } else {
+            ++i;
+        }
+    }
+    return std::string::npos;
 }
 
 }  // namespace

@@ -339,7 +339,7 @@ private:
             if (close == std::string_view::npos) fail("unbalanced {");
             const std::string inner(tex_.substr(pos_ + 1, close - pos_ - 1));
             pos_ = close + 1;
-            if (latex_) return "\\" + name + "{" + literal_latex(inner, name == "mathrm" || name == "mathit") + "}";
+            if (latex_) return "\\" + name + "{" + literal_latex(inner, name == "mathrm" || name == "mathit" || name == "operatorname") + "}";
             return name == "mathit" ? italic(escape_markup_or_plain(inner)) : escape_markup_or_plain(inner);
         }
         fail("unknown macro \\" + name);
@@ -413,7 +413,7 @@ public:
                 if (tag == "sub" || tag == "sup") {
                     markup_node n;
                     n.type = tag == "sub" ? markup_node::kind::sub : markup_node::kind::sup;
-                    n.inner = parse("/" + tag);
+                    n.inner = parse(std::string("/").append(tag));
                     out.push_back(std::move(n));
                 }
                 continue;
@@ -493,6 +493,52 @@ std::string text_character(const std::string& c) {
         {"\u2013", "--"}, {"\u2014", "---"}, {"\u2019", "'"}, {"\u2018", "`"}, {"\u201c", "``"}, {"\u201d", "''"},
         {"\u00a0", "~"},  {"\u2009", "\\,"}};
     for (const auto& [from, to] : text) {
+        if (c == from) return std::string(to);
+    }
+    // Latin letters with accents, as LaTeX's accent commands write them in the OT1 and T1 encodings.
+    static const std::pair<std::string_view, std::string_view> letters[] = {
+        {"\u00c0", "\\`{A}"}, {"\u00c1", "\\'{A}"}, {"\u00c2", "\\^{A}"}, {"\u00c3", "\\~{A}"},
+        {"\u00c4", "\\\"{A}"}, {"\u00c5", "\\r{A}"}, {"\u00c6", "\\AE{}"}, {"\u00c7", "\\c{C}"},
+        {"\u00c8", "\\`{E}"}, {"\u00c9", "\\'{E}"}, {"\u00ca", "\\^{E}"}, {"\u00cb", "\\\"{E}"},
+        {"\u00cc", "\\`{I}"}, {"\u00cd", "\\'{I}"}, {"\u00ce", "\\^{I}"}, {"\u00cf", "\\\"{I}"},
+        {"\u00d1", "\\~{N}"}, {"\u00d2", "\\`{O}"}, {"\u00d3", "\\'{O}"}, {"\u00d4", "\\^{O}"},
+        {"\u00d5", "\\~{O}"}, {"\u00d6", "\\\"{O}"}, {"\u00d8", "\\O{}"}, {"\u00d9", "\\`{U}"},
+        {"\u00da", "\\'{U}"}, {"\u00db", "\\^{U}"}, {"\u00dc", "\\\"{U}"}, {"\u00dd", "\\'{Y}"},
+        {"\u00df", "\\ss{}"}, {"\u00e0", "\\`{a}"}, {"\u00e1", "\\'{a}"}, {"\u00e2", "\\^{a}"},
+        {"\u00e3", "\\~{a}"}, {"\u00e4", "\\\"{a}"}, {"\u00e5", "\\r{a}"}, {"\u00e6", "\\ae{}"},
+        {"\u00e7", "\\c{c}"}, {"\u00e8", "\\`{e}"}, {"\u00e9", "\\'{e}"}, {"\u00ea", "\\^{e}"},
+        {"\u00eb", "\\\"{e}"}, {"\u00ec", "\\`{\\i}"}, {"\u00ed", "\\'{\\i}"}, {"\u00ee", "\\^{\\i}"},
+        {"\u00ef", "\\\"{\\i}"}, {"\u00f1", "\\~{n}"}, {"\u00f2", "\\`{o}"}, {"\u00f3", "\\'{o}"},
+        {"\u00f4", "\\^{o}"}, {"\u00f5", "\\~{o}"}, {"\u00f6", "\\\"{o}"}, {"\u00f8", "\\o{}"},
+        {"\u00f9", "\\`{u}"}, {"\u00fa", "\\'{u}"}, {"\u00fb", "\\^{u}"}, {"\u00fc", "\\\"{u}"},
+        {"\u00fd", "\\'{y}"}, {"\u00ff", "\\\"{y}"}, {"\u0100", "\\={A}"}, {"\u0101", "\\={a}"},
+        {"\u0102", "\\u{A}"}, {"\u0103", "\\u{a}"}, {"\u0106", "\\'{C}"}, {"\u0107", "\\'{c}"},
+        {"\u0108", "\\^{C}"}, {"\u0109", "\\^{c}"}, {"\u010a", "\\.{C}"}, {"\u010b", "\\.{c}"},
+        {"\u010c", "\\v{C}"}, {"\u010d", "\\v{c}"}, {"\u010e", "\\v{D}"}, {"\u010f", "\\v{d}"},
+        {"\u0112", "\\={E}"}, {"\u0113", "\\={e}"}, {"\u0114", "\\u{E}"}, {"\u0115", "\\u{e}"},
+        {"\u0116", "\\.{E}"}, {"\u0117", "\\.{e}"}, {"\u011a", "\\v{E}"}, {"\u011b", "\\v{e}"},
+        {"\u011c", "\\^{G}"}, {"\u011d", "\\^{g}"}, {"\u011e", "\\u{G}"}, {"\u011f", "\\u{g}"},
+        {"\u0120", "\\.{G}"}, {"\u0121", "\\.{g}"}, {"\u0122", "\\c{G}"}, {"\u0123", "\\c{g}"},
+        {"\u0124", "\\^{H}"}, {"\u0125", "\\^{h}"}, {"\u0128", "\\~{I}"}, {"\u0129", "\\~{\\i}"},
+        {"\u012a", "\\={I}"}, {"\u012b", "\\={\\i}"}, {"\u012c", "\\u{I}"}, {"\u012d", "\\u{\\i}"},
+        {"\u0130", "\\.{I}"}, {"\u0131", "\\i{}"}, {"\u0134", "\\^{J}"}, {"\u0135", "\\^{j}"},
+        {"\u0136", "\\c{K}"}, {"\u0137", "\\c{k}"}, {"\u0139", "\\'{L}"}, {"\u013a", "\\'{l}"},
+        {"\u013b", "\\c{L}"}, {"\u013c", "\\c{l}"}, {"\u013d", "\\v{L}"}, {"\u013e", "\\v{l}"},
+        {"\u0141", "\\L{}"}, {"\u0142", "\\l{}"}, {"\u0143", "\\'{N}"}, {"\u0144", "\\'{n}"},
+        {"\u0145", "\\c{N}"}, {"\u0146", "\\c{n}"}, {"\u0147", "\\v{N}"}, {"\u0148", "\\v{n}"},
+        {"\u014c", "\\={O}"}, {"\u014d", "\\={o}"}, {"\u014e", "\\u{O}"}, {"\u014f", "\\u{o}"},
+        {"\u0150", "\\H{O}"}, {"\u0151", "\\H{o}"}, {"\u0152", "\\OE{}"}, {"\u0153", "\\oe{}"},
+        {"\u0154", "\\'{R}"}, {"\u0155", "\\'{r}"}, {"\u0156", "\\c{R}"}, {"\u0157", "\\c{r}"},
+        {"\u0158", "\\v{R}"}, {"\u0159", "\\v{r}"}, {"\u015a", "\\'{S}"}, {"\u015b", "\\'{s}"},
+        {"\u015c", "\\^{S}"}, {"\u015d", "\\^{s}"}, {"\u015e", "\\c{S}"}, {"\u015f", "\\c{s}"},
+        {"\u0160", "\\v{S}"}, {"\u0161", "\\v{s}"}, {"\u0162", "\\c{T}"}, {"\u0163", "\\c{t}"},
+        {"\u0164", "\\v{T}"}, {"\u0165", "\\v{t}"}, {"\u0168", "\\~{U}"}, {"\u0169", "\\~{u}"},
+        {"\u016a", "\\={U}"}, {"\u016b", "\\={u}"}, {"\u016c", "\\u{U}"}, {"\u016d", "\\u{u}"},
+        {"\u016e", "\\r{U}"}, {"\u016f", "\\r{u}"}, {"\u0170", "\\H{U}"}, {"\u0171", "\\H{u}"},
+        {"\u0174", "\\^{W}"}, {"\u0175", "\\^{w}"}, {"\u0176", "\\^{Y}"}, {"\u0177", "\\^{y}"},
+        {"\u0178", "\\\"{Y}"}, {"\u0179", "\\'{Z}"}, {"\u017a", "\\'{z}"}, {"\u017b", "\\.{Z}"},
+        {"\u017c", "\\.{z}"}, {"\u017d", "\\v{Z}"}, {"\u017e", "\\v{z}"}};
+    for (const auto& [from, to] : letters) {
         if (c == from) return std::string(to);
     }
     return "";
@@ -604,11 +650,13 @@ std::string markup_to_latex(std::string_view markup) {
             return is_plain(n) && std::isalpha(static_cast<unsigned char>(n.text[0]));
         });
         if (!text) {
-            math += (math.empty() ? "" : " ") + math_of(w, whole);
+            if (!math.empty()) math += ' ';
+            math += math_of(w, whole);
             continue;
         }
         flush();
-        out += (out.empty() ? "" : " ") + text_of(w, whole);
+        if (!out.empty()) out += ' ';
+        out += text_of(w, whole);
     }
     flush();
     return out;

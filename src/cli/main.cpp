@@ -591,7 +591,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
     for (const auto* e : chosen) {
         const bool moving = e->spec.animation.has_value();
         const plot::theme& th = moving ? moving_theme : theme;
-        figures::spec_overrides grid{build.amplitudes, th.panel_width_cm, th.panel_aspect};
+        figures::build_options grid{build.amplitudes, th.panel_width_cm, th.panel_aspect};
         for (const auto& f : formats) {
             if (f != "png" && f != "gif") continue;
             try {

@@ -56,11 +56,11 @@ entry load(std::string_view id_or_file) {
 }
 
 std::vector<panel_spec> panels_of(const entry& e, const build_options& options) {
-    return panels_with(e.spec, spec_overrides{options.amplitudes, options.panel_width_cm, options.panel_aspect, options.animated});
+    return panels_with(e.spec, options);
 }
 
 plot::figure build(const entry& e, const build_options& options) {
-    return build_figure(e.spec, spec_overrides{options.amplitudes, options.panel_width_cm, options.panel_aspect, options.animated});
+    return build_figure(e.spec, options);
 }
 
 }  // namespace figures

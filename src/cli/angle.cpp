@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/angle.hpp"
 
+#include "cli/errors.hpp"
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -44,7 +45,7 @@ private:
         const std::string shown = text_.size() <= 80 ? std::string(text_)
                                                       : std::string(text_.substr(0, 40)) + "..." +
                                                             std::string(text_.substr(text_.size() - 20));
-        throw std::invalid_argument("invalid value '" + shown + "': " + why + "; " + std::string(allowed));
+        throw usage_error("invalid value '" + shown + "': " + why + "; " + std::string(allowed));
     }
 
     void skip_space() {

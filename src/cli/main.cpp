@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // pendulum-figures: the command line. Parsing and validation only; the work is in the libraries.
 #include "cli/angle.hpp"
+#include "cli/errors.hpp"
 #include "cli/eval_columns.hpp"
 #include "cli/table.hpp"
 #include "figures/animation.hpp"
@@ -38,11 +39,7 @@ namespace {
 
 using namespace pendulum;
 
-/// Bad input from the user: reported in one line, exit code 2.
-class usage_error : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
+using cli::usage_error;
 
 constexpr int max_samples = 10'000'000;
 constexpr double max_periods = 1e6;
@@ -471,11 +468,7 @@ std::vector<const figures::entry*> selected_figures(const std::vector<std::strin
 /// Renders the chosen figures with the options of `o` other than the ids.
 int render_entries(const std::vector<const figures::entry*>& chosen, const render_options& o) {
     // The environment is input too: a bad SOURCE_DATE_EPOCH stops the run before any work.
-    try {
-        plot::pdf_creation_date();
-    } catch (const std::invalid_argument& e) {
-        throw usage_error(e.what());
-    }
+    plot::pdf_creation_date();
     std::vector<std::string> formats;
     for (const auto& f : cli::split_list(o.formats)) {
         plot::check_format(f);
@@ -494,7 +487,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
     plot::output_options overlay;  // what the LaTeX overlays need; dpi is set per theme below
     try {
         overlay.tex_sizes = plot::find_tex_sizing(o.tex_sizes).value;
-    } catch (const std::invalid_argument& e) {
+    } catch (const plot::bad_input& e) {
         throw usage_error(std::string("--tex-sizes: ") + e.what());
     }
     if (o.tex_font_size) {
@@ -535,13 +528,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
         figures::build_options one = build;
         one.panel_width_cm = theme.panel_width_cm;
         one.panel_aspect = theme.panel_aspect;
-        try {
-            plot::check_raster_size(figures::figure_grid(chosen.front()->spec, {build.amplitudes, theme.panel_width_cm,
-                                                                                 theme.panel_aspect}),
-                                    theme, dpi);
-        } catch (const std::invalid_argument& e) {
-            throw usage_error(e.what());
-        }
+        plot::check_raster_size(figures::figure_grid(chosen.front()->spec, one), theme, dpi);
         const std::string bytes = plot::render(figures::build(*chosen.front(), one), theme, formats.front(),
                                                plot::output_options{dpi});
         std::cout.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -563,12 +550,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
     if (!o.frames.empty() && !o.at.empty()) throw usage_error("give --frames or --at, not both");
     if (o.paper_files && !animations.empty()) throw usage_error("--paper-files applies to still figures, not to animations");
 
-    std::vector<figures::figure_file> jobs;
-    try {
-        jobs = figures::files_for(stills, formats, o.dir, o.paper_files, build);
-    } catch (const std::invalid_argument& e) {
-        throw usage_error(e.what());
-    }
+    const std::vector<figures::figure_file> jobs = figures::files_for(stills, formats, o.dir, o.paper_files, build);
     if (jobs.empty() && animations.empty()) {
         throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
     }
@@ -596,21 +578,17 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
             if (f != "png" && f != "gif") continue;
             try {
                 plot::check_raster_size(figures::figure_grid(e->spec, grid), th, moving ? moving_dpi : dpi);
-            } catch (const std::invalid_argument& err) {
+            } catch (const plot::bad_input& err) {
                 throw usage_error(e->id + "." + f + ": " + err.what());
             }
         }
     }
     for (const auto* e : animations) {
-        try {
-            const auto plan = figures::plan_animation(*e, build);
-            moving.push_back({e, plan, o.frames.empty() ? std::pair{0, plan.frames - 1} : parse_frames(o.frames, plan.frames)});
-        } catch (const std::invalid_argument& err) {
-            throw usage_error(err.what());
-        }
+        const auto plan = figures::plan_animation(*e, build);
+        moving.push_back({e, plan, o.frames.empty() ? std::pair{0, plan.frames - 1} : parse_frames(o.frames, plan.frames)});
     }
 
-    try {
+    {
         if (!jobs.empty()) figures::write_figures(jobs, build, theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes});
         for (const auto& m : moving) {
             for (const auto& f : formats) {
@@ -630,12 +608,6 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
                            plot::output_options{moving_dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes});
             }
         }
-    } catch (const plot::layout_error& e) {
-        report_error(e.what());  // the theme or the figure asks for too little room: bad input
-        return 2;
-    } catch (const std::exception& e) {
-        report_error(e.what());
-        return 1;
     }
     return 0;
 }
@@ -1056,11 +1028,7 @@ int main(int argc, char** argv) {
         if (*show) {
             if (show_id.empty() == show_theme.empty()) throw usage_error("give a figure ID or --theme NAME to show");
             if (!show_theme.empty()) {
-                try {
-                    out << figures::theme_source(show_theme);
-                } catch (const std::invalid_argument& e) {
-                    throw usage_error(e.what());
-                }
+                out << figures::theme_source(show_theme);
             } else {
                 out << figures::find(show_id).source;
             }
@@ -1123,10 +1091,16 @@ int main(int argc, char** argv) {
         }
         report_error(message);
         return 2;
-    } catch (const usage_error& e) {
+    } catch (const cli::usage_error& e) {
         report_error(e.what());
         return 2;
-    } catch (const std::invalid_argument& e) {
+    } catch (const figures::bad_input& e) {
+        report_error(e.what());  // includes a spec or style file with problems
+        return 2;
+    } catch (const plot::bad_input& e) {
+        report_error(e.what());  // includes a figure the theme leaves too little room
+        return 2;
+    } catch (const pendulum::domain_error& e) {
         report_error(e.what());
         return 2;
     } catch (const std::bad_alloc&) {

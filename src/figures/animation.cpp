@@ -29,7 +29,7 @@ double reference_amplitude(const std::vector<panel_spec>& panels) {
     for (const auto& p : panels) {
         if (!p.theta0.empty()) return p.theta0.front().value;
     }
-    throw std::invalid_argument("an animation needs a panel with theta0 (a pendulum, trajectory or phase panel)");
+    throw bad_input("an animation needs a panel with theta0 (a pendulum, trajectory or phase panel)");
 }
 
 std::string clock_text(const animation_plan& plan, double w0_t) {
@@ -111,7 +111,7 @@ void in_order(int first, int last, Draw draw, Use use) {
 }  // namespace
 
 animation_plan plan_animation(const entry& e, const build_options& options) {
-    if (!e.spec.animation) throw std::invalid_argument("figure '" + e.id + "' is not an animation");
+    if (!e.spec.animation) throw std::logic_error("figure '" + e.id + "' is not an animation");
     const animation_spec& a = *e.spec.animation;
     animation_plan plan;
     plan.fps = a.fps;
@@ -126,7 +126,7 @@ animation_plan plan_animation(const entry& e, const build_options& options) {
     const double shown_s = span * plan.seconds_per_unit / a.speed;
     const double frames = std::floor(shown_s * a.fps + 1e-9) + 1;
     if (frames > max_frames) {
-        throw std::invalid_argument("animation '" + e.id + "' would have " + pendulum::format_double(frames) +
+        throw bad_input("animation '" + e.id + "' would have " + pendulum::format_double(frames) +
                                     " frames; at most " + std::to_string(max_frames) +
                                     " (lower fps, periods or duration_s, or raise speed)");
     }
@@ -160,7 +160,7 @@ void write_animation(const entry& e, const build_options& options, const plot::t
                      const std::filesystem::path& dir, double dpi, int first, int last) {
     const animation_plan plan = plan_animation(e, options);
     if (first < 0 || last >= plan.frames || first > last) {
-        throw std::invalid_argument("frames " + std::to_string(first + 1) + ".." + std::to_string(last + 1) +
+        throw bad_input("frames " + std::to_string(first + 1) + ".." + std::to_string(last + 1) +
                                     " are outside animation '" + e.id + "', which has frames 1.." +
                                     std::to_string(plan.frames));
     }

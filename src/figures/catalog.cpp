@@ -37,7 +37,7 @@ const entry& find(std::string_view id) {
     }
     std::string ids;
     for (const auto& e : catalog()) ids += (ids.empty() ? "" : ", ") + e.id;
-    throw std::invalid_argument("unknown figure '" + std::string(id) + "'; figures: " + ids +
+    throw bad_input("unknown figure '" + std::string(id) + "'; figures: " + ids +
                                 " (or fig1 ... fig7, or a spec file NAME.toml)");
 }
 

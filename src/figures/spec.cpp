@@ -324,7 +324,7 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
 }  // namespace
 
 spec_error::spec_error(std::vector<spec_problem> problems)
-    : std::invalid_argument(join_problems(problems)), problems_(std::move(problems)) {}
+    : bad_input(join_problems(problems)), problems_(std::move(problems)) {}
 
 std::span<const plot_row> plot_table() { return plots; }
 

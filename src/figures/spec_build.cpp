@@ -675,7 +675,7 @@ std::string typeset_angle(std::string_view text) {
 
 plot::figure figure_grid(const figure_spec& spec, const build_options& options) {
     const int n = static_cast<int>(panels_with(spec, options).size());
-    if (n == 0) throw std::invalid_argument("figure '" + spec.id + "' has no panels");
+    if (n == 0) throw bad_input("figure '" + spec.id + "' has no panels");
     plot::figure f;
     f.cols = std::min(spec.columns.value_or(3), n);
     f.rows = (n + f.cols - 1) / f.cols;

@@ -50,7 +50,7 @@ std::optional<std::tm> source_date() {
     if (!digits || seconds > last || !gmtime_r(&t, &tm)) {
         std::string shown;
         for (const char c : value.substr(0, 40)) shown += static_cast<unsigned char>(c) < 0x20 ? '?' : c;
-        throw std::invalid_argument("SOURCE_DATE_EPOCH '" + shown +
+        throw bad_input("SOURCE_DATE_EPOCH '" + shown +
                                     "' must be a whole number of seconds since 1970-01-01, 0 to " +
                                     std::to_string(last));
     }
@@ -292,13 +292,13 @@ std::string write_eps(const figure& fig, const theme& th, const output_options& 
 
 /// Overlay formats write two files; standard output can take only one.
 std::string refuse_one_stream(const figure&, const theme&, const output_options&) {
-    throw std::invalid_argument("pdf_tex and eps_tex write two files (the drawing and its LaTeX text); give an "
+    throw bad_input("pdf_tex and eps_tex write two files (the drawing and its LaTeX text); give an "
                                 "output directory, not -o -");
 }
 
 std::string render_gif(const figure& fig, const theme& th, const output_options& options) {
     if (!(options.dpi >= min_dpi && options.dpi <= max_dpi)) {
-        throw std::invalid_argument("dpi must be between 10 and 2400");
+        throw bad_input("dpi must be between 10 and 2400");
     }
     const argb_image image = render_argb(fig, th, options.dpi);
     std::vector<rgb> inks = th.palette;
@@ -310,7 +310,7 @@ std::string render_gif(const figure& fig, const theme& th, const output_options&
 
 std::string render_raster(const figure& fig, const theme& th, const output_options& options) {
     if (!(options.dpi >= min_dpi && options.dpi <= max_dpi)) {
-        throw std::invalid_argument("dpi must be between 10 and 2400");
+        throw bad_input("dpi must be between 10 and 2400");
     }
     return render_png(fig, th, options.dpi);
 }
@@ -343,7 +343,7 @@ void check_raster_size(const figure& fig, const theme& th, double dpi) {
     const double by_area = std::sqrt(max_raster_pixels / (size.width_pt * size.height_pt)) * 72.0;
     char fits[32];
     std::snprintf(fits, sizeof fits, "%.0f", std::floor(std::min(by_side, by_area)));
-    throw std::invalid_argument("a raster of " + std::to_string(static_cast<long long>(w)) + " x " +
+    throw bad_input("a raster of " + std::to_string(static_cast<long long>(w)) + " x " +
                                 std::to_string(static_cast<long long>(h)) + " pixels is too large (at most " +
                                 std::to_string(max_raster_side) + " a side and 100 million in all); --dpi " +
                                 fits + " is the most for this figure");
@@ -369,7 +369,7 @@ const format_row& find_format(std::string_view format) {
     }
     std::string list;
     for (const auto& f : formats) list += (list.empty() ? "" : ", ") + std::string(f.name);
-    throw std::invalid_argument("unknown format '" + std::string(format) + "'; formats: " + list);
+    throw bad_input("unknown format '" + std::string(format) + "'; formats: " + list);
 }
 
 void check_format(std::string_view format) { find_format(format); }

@@ -216,7 +216,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     if (fig.rows < 1 || fig.cols < 1 || fig.panels.size() > static_cast<std::size_t>(fig.rows * fig.cols)) {
         throw std::invalid_argument("figure grid is too small for its panels");
     }
-    if (th.palette.empty()) throw std::invalid_argument("theme has no colours");
+    if (th.palette.empty()) throw bad_input("theme has no colours");
     text_engine text(cr, th.font_family);
     text.record_into(texts);
     if (pass != draw_pass::overlay) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/tex_markup.hpp"
 
+#include "plot/errors.hpp"
 #include "plot/figure.hpp"
 
 #include <algorithm>
@@ -73,7 +74,7 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& why) const {
-        throw std::invalid_argument("label '" + std::string(tex_) + "': " + why);
+        throw bad_input("label '" + std::string(tex_) + "': " + why);
     }
 
     std::string escape(const std::string& s) const { return markup_ ? escape_markup(s) : s; }
@@ -273,7 +274,7 @@ public:
         while (pos_ < m_.size()) {
             if (m_[pos_] == '<') {
                 const std::size_t end = m_.find('>', pos_);
-                if (end == std::string_view::npos) throw std::invalid_argument("unclosed tag in '" + std::string(m_) + "'");
+                if (end == std::string_view::npos) throw bad_input("unclosed tag in '" + std::string(m_) + "'");
                 const std::string tag(m_.substr(pos_ + 1, end - pos_ - 1));
                 pos_ = end + 1;
                 if (!until.empty() && tag == until) return out;
@@ -332,7 +333,7 @@ std::string math_character(const std::string& c, const std::string& whole) {
     for (const auto& sym : symbols) {
         if (sym.text == c && static_cast<unsigned char>(sym.text[0]) >= 0x80) return "\\" + std::string(sym.name) + " ";
     }
-    throw std::invalid_argument("label '" + whole + "': no LaTeX for the character '" + c + "'");
+    throw bad_input("label '" + whole + "': no LaTeX for the character '" + c + "'");
 }
 
 std::string math_of(const std::vector<markup_node>& nodes, const std::string& whole) {

@@ -575,7 +575,7 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
         const plot::theme& th = moving ? moving_theme : theme;
         figures::build_options grid{build.amplitudes, th.panel_width_cm, th.panel_aspect};
         for (const auto& f : formats) {
-            if (f != "png" && f != "gif") continue;
+            if (!plot::find_format(f).raster) continue;
             try {
                 plot::check_raster_size(figures::figure_grid(e->spec, grid), th, moving ? moving_dpi : dpi);
             } catch (const plot::bad_input& err) {
@@ -592,9 +592,10 @@ int render_entries(const std::vector<const figures::entry*>& chosen, const rende
         if (!jobs.empty()) figures::write_figures(jobs, build, theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes});
         for (const auto& m : moving) {
             for (const auto& f : formats) {
-                if (!at && figures::is_animation_format(f)) {
-                    figures::write_animation(*m.entry, build, moving_theme, f, o.dir, moving_dpi, m.frames.first,
-                                             m.frames.second);
+                const plot::format_row& row = plot::find_format(f);
+                if (!at && row.animate) {
+                    figures::write_animation(*m.entry, build, moving_theme, row, o.dir, plot::output_options{moving_dpi},
+                                             m.frames.first, m.frames.second);
                     continue;
                 }
                 // A still format, or --at: one frame.
@@ -616,6 +617,9 @@ int run_render(const render_options& o) {
     std::deque<figures::entry> loaded;
     return render_entries(selected_figures(o.ids, o.all, loaded), o);
 }
+
+/// True for a LaTeX overlay format.
+bool is_overlay(const plot::format_row& f) { return !f.graphics.empty(); }
 
 /// `text` padded with spaces to `width` (at least one space).
 std::string padded(const std::string& text, std::size_t width) {
@@ -652,7 +656,8 @@ std::string list_markdown() {
     }
     out << "\n| format | what |\n| --- | --- |\n";
     for (const auto& f : plot::format_table()) out << "| `" << f.name << "` | " << f.description << " |\n";
-    out << "\n| text sizes | what (`render --tex-sizes`, for pdf_tex and eps_tex) |\n| --- | --- |\n";
+    out << "\n| text sizes | what (`render --tex-sizes`, for " << plot::format_names(is_overlay, " and ")
+        << ") |\n| --- | --- |\n";
     for (const auto& t : plot::tex_sizing_table()) out << "| `" << t.name << "` | " << md_cell(std::string(t.description)) << " |\n";
     out << "\n| theme | what |\n| --- | --- |\n";
     for (const auto& t : figures::builtin_themes()) out << "| `" << t.name << "` | " << t.description << " |\n";
@@ -697,6 +702,28 @@ std::string format_list() {
     std::string out;
     for (const auto& f : plot::format_names()) out += (out.empty() ? "" : ", ") + f;
     return out;
+}
+
+/// The raster formats, for --help: "png, gif".
+std::string raster_formats() {
+    return plot::format_names([](const plot::format_row& f) { return f.raster; }, " and ");
+}
+
+/// The LaTeX overlay formats, for --help: "pdf_tex, eps_tex".
+std::string overlay_formats() { return plot::format_names(is_overlay); }
+
+/// How each format writes an animation, for --help.
+std::string animation_help() {
+    std::vector<std::string_view> ways;
+    for (const auto& f : plot::format_table()) {
+        if (f.animate) ways.push_back(f.animation);
+    }
+    std::string out;
+    for (std::size_t i = 0; i < ways.size(); ++i) {
+        out += std::string(i == 0 ? "" : i + 1 == ways.size() ? ", or " : ", ") + std::string(ways[i]);
+    }
+    return out + "; " + plot::format_names([](const plot::format_row& f) { return f.animate == nullptr; }, " and ") +
+           ", and every format with --at, get one frame";
 }
 
 /// The formats with what each is, for --help.
@@ -897,8 +924,8 @@ int main(int argc, char** argv) {
     render->add_option("--set", ro.sets, "KEY=VALUE of a style file on top of the theme, e.g. tick_font_pt=9; "
                                          "repeatable ('show --theme paper' lists the keys)")
         ->type_name("KEY=VALUE")->check(non_empty);
-    render->add_option("--dpi", ro.dpi, "PNG resolution in dots per inch, 10..2400 (default: the theme's, 300 for "
-                                        "paper)")
+    render->add_option("--dpi", ro.dpi, "Resolution of " + raster_formats() + " in dots per inch, 10..2400 (default: "
+                                        "the theme's, 300 for paper)")
         ->type_name("N");
     render->add_option("--theta0", ro.theta0, "Amplitudes of the trajectory figures, a comma-separated LIST")
         ->type_name("LIST")->check(non_empty);
@@ -910,11 +937,11 @@ int main(int argc, char** argv) {
     render->add_flag("--force", ro.force, "Rewrite files that would not change (by default they are left alone, "
                                           "so their time stays and make does not rebuild)");
     render->add_option("--tex-font-size", ro.tex_font_size,
-                       "pdf_tex, eps_tex: the document's font size in points, 5..30 (default 10); the figure's "
+                       overlay_formats() + ": the document's font size in points, 5..30 (default 10); the figure's "
                        "text is set at sizes relative to it (\\footnotesize, \\small) and laid out to fit")
         ->type_name("PT");
     {
-        std::string help = "pdf_tex, eps_tex: how the text is sized (default relative):";
+        std::string help = overlay_formats() + ": how the text is sized (default relative):";
         for (const auto& row : plot::tex_sizing_table()) {
             help += "\n  " + std::string(row.name) + ": " + std::string(row.description);
         }
@@ -939,9 +966,8 @@ int main(int argc, char** argv) {
                    "are the specs' TeX, verbatim; a macro LaTeX lacks shows only when the document is compiled.\n"
                    "  pendulum-figures render fig2 -f pdf_tex -o figures --tex-font-size 10\n"
                    "  pendulum-figures render fig7 -f eps_tex --tex-sizes absolute --set tick_font_pt=8\n"
-                   "\nAnimations (a spec with [animation]; built in: swing, separatrix) are written as a looping "
-                   "GIF, a PDF of one page per frame, or PNG frames ID-0001.png ...; SVG and EPS, and every format "
-                   "with --at, get one frame. In Beamer: \\usepackage{animate} and "
+                   "\nAnimations (a spec with [animation]; built in: swing, separatrix) are written as " +
+                   animation_help() + ". In Beamer: \\usepackage{animate} and "
                    "\\animategraphics[loop,autoplay]{30}{swing}{}{} (30: the spec's fps). A video: ffmpeg -framerate "
                    "30 -i swing-%04d.png -pix_fmt yuv420p swing.mp4\n"
                    "  pendulum-figures render swing --theme slides -f gif,pdf\n"
@@ -1000,7 +1026,8 @@ int main(int argc, char** argv) {
     plot_cmd->add_option("--theme", po.theme, figures::theme_help() + "; default paper")->type_name("NAME")->check(non_empty);
     plot_cmd->add_option("--set", po.sets, "KEY=VALUE of a style file on top of the theme; repeatable")
         ->type_name("KEY=VALUE")->check(non_empty);
-    plot_cmd->add_option("--dpi", po.dpi, "PNG resolution in dots per inch, 10..2400 (default: the theme's)")
+    plot_cmd->add_option("--dpi", po.dpi, "Resolution of " + raster_formats() + " in dots per inch, 10..2400 (default: "
+                                          "the theme's)")
         ->type_name("N");
     plot_cmd->footer(std::string("\n") + angle_help +
                      "\n\nThe same as a spec with one [[panel]] of these keys; 'show' prints specs to start from.\n\n"

@@ -96,7 +96,10 @@ void write_gif_animation(const animation_frames& frames, const theme& th, const 
     std::vector<rgb> inks = th.palette;
     inks.push_back(th.foreground);
     const figure first_frame = frames.frame(first);
-    const auto [width, height] = pixel_size(first_frame, th, dpi);
+    // Plain variables, not a structured binding: the threads below capture them.
+    const std::pair<int, int> pixels = pixel_size(first_frame, th, dpi);
+    const int width = pixels.first;
+    const int height = pixels.second;
     const auto palette = gif_palette(inks, th.background, 16);
     // What stays is drawn once; each frame draws what moves over a copy of it.
     const argb_image still_image = render_argb(first_frame, th, dpi, draw_pass::still);

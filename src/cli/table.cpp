@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/table.hpp"
 
+#include "cli/errors.hpp"
 #include "pendulum/amplitude.hpp"
 
 #include <cmath>
@@ -12,7 +13,7 @@ namespace pendulum::cli {
 table_format parse_table_format(std::string_view text) {
     if (text == "csv") return table_format::csv;
     if (text == "json") return table_format::json;
-    throw std::invalid_argument("unknown format '" + std::string(text) + "'; use csv or json");
+    throw usage_error("unknown format '" + std::string(text) + "'; use csv or json");
 }
 
 namespace {

@@ -3,6 +3,7 @@
 
 #include "figures/catalog.hpp"
 #include "plot/figure.hpp"
+#include "plot/output.hpp"
 #include "plot/theme.hpp"
 
 #include <filesystem>
@@ -24,7 +25,7 @@ struct animation_plan {
 };
 
 /// The frames of an animation spec (with the command line's amplitudes). Without a
-/// [pendulum] the time is that of a 1 m pendulum. Throws std::invalid_argument naming the
+/// [pendulum] the time is that of a 1 m pendulum. Throws figures::bad_input naming the
 /// key and the limit for more than max_frames frames.
 animation_plan plan_animation(const entry& e, const build_options& options);
 
@@ -33,14 +34,11 @@ animation_plan plan_animation(const entry& e, const build_options& options);
 plot::figure animation_frame(const entry& e, const build_options& options, const animation_plan& plan,
                              const plot::figure& base, double w0_t);
 
-/// The animation formats: gif (looping), pdf (one page per frame) and png (a sequence).
-bool is_animation_format(std::string_view format);
-
-/// Writes frames first..last (inclusive) of the animation: DIR/ID.gif, DIR/ID.pdf, or
-/// DIR/ID-0001.png ... (numbered from 1). Frames are drawn on every core and encoded in
-/// order; each file is written atomically. Throws std::invalid_argument for a frame range
-/// outside the animation.
+/// Writes frames first..last (inclusive, from 0) of the animation in a format whose row
+/// holds an animation writer (format.animate), e.g. DIR/ID.gif. Throws figures::bad_input
+/// for a frame range outside the animation.
 void write_animation(const entry& e, const build_options& options, const plot::theme& theme,
-                     std::string_view format, const std::filesystem::path& dir, double dpi, int first, int last);
+                     const plot::format_row& format, const std::filesystem::path& dir,
+                     const plot::output_options& output, int first, int last);
 
 }  // namespace figures

@@ -31,7 +31,7 @@ std::vector<figure_file> files_for(const std::vector<const entry*>& figures, con
         }
         for (std::size_t i = 0; i < panels.size(); ++i) {
             if (panels[i].paper_file.empty()) {
-                throw std::invalid_argument("figure '" + e->id + "' panel " + std::to_string(i + 1) +
+                throw bad_input("figure '" + e->id + "' panel " + std::to_string(i + 1) +
                                             " has no paper file name (paper_file in its spec)" +
                                             (options.amplitudes.empty() ? "" : "; give at most as many --theta0 "
                                                                                "amplitudes as the figure has panels"));

@@ -35,7 +35,7 @@ const entry& find(std::string_view id) {
     }
     std::string ids;
     for (const auto& e : catalog()) ids += (ids.empty() ? "" : ", ") + e.id;
-    throw std::invalid_argument("unknown figure '" + std::string(id) + "'; figures: " + ids +
+    throw bad_input("unknown figure '" + std::string(id) + "'; figures: " + ids +
                                 " (or fig1 ... fig7, or a spec file NAME.toml)");
 }
 
@@ -54,11 +54,11 @@ entry load(std::string_view id_or_file) {
 }
 
 std::vector<panel_spec> panels_of(const entry& e, const build_options& options) {
-    return panels_with(e.spec, spec_overrides{options.amplitudes, options.panel_width_cm, options.panel_aspect, options.animated});
+    return panels_with(e.spec, options);
 }
 
 plot::figure build(const entry& e, const build_options& options) {
-    return build_figure(e.spec, spec_overrides{options.amplitudes, options.panel_width_cm, options.panel_aspect, options.animated});
+    return build_figure(e.spec, options);
 }
 
 }  // namespace figures

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "figures/build_options.hpp"
 #include "figures/spec.hpp"
 #include "plot/figure.hpp"
 
@@ -33,14 +34,6 @@ const entry& find(std::string_view id);
 /// A built-in figure by id or alias, or a spec file (a name ending in .toml) read from disk;
 /// throws spec_error for a bad spec and std::runtime_error for an unreadable file.
 entry load(std::string_view id_or_file);
-
-/// Choices that change what a figure shows.
-struct build_options {
-    std::vector<amplitude> amplitudes;  ///< --theta0: replaces the spec's amplitudes
-    double panel_width_cm = 6.0;        ///< panel width where the spec gives none (the theme's)
-    double panel_aspect = 0.75;         ///< panel aspect where the spec gives none (the theme's)
-    bool animated = false;              ///< leave out what moves (animation frames add it)
-};
 
 /// The panels the figure will have with these options, as specs (for paper file names).
 std::vector<panel_spec> panels_of(const entry& e, const build_options& options = {});

@@ -303,7 +303,7 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
 }  // namespace
 
 spec_error::spec_error(std::vector<spec_problem> problems)
-    : std::invalid_argument(join_problems(problems)), problems_(std::move(problems)) {}
+    : bad_input(join_problems(problems)), problems_(std::move(problems)) {}
 
 std::string suggest(std::string_view word, const std::vector<std::string>& names) {
     // Edit distance with transpositions (optimal string alignment); a name within a third of

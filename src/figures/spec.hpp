@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "figures/errors.hpp"
 #include "figures/plots.hpp"
 #include "pendulum/methods.hpp"
 #include "plot/figure.hpp"
@@ -34,7 +35,7 @@ struct spec_problem {
 };
 
 /// Thrown for a spec with problems; what() lists every problem, one per line.
-class spec_error : public std::invalid_argument {
+class spec_error : public bad_input {
 public:
     /// Collects the problems; there is at least one.
     explicit spec_error(std::vector<spec_problem> problems);

@@ -23,8 +23,8 @@ std::string panel_letter(std::size_t i) {
 
 }  // namespace
 
-std::vector<panel_spec> panels_with(const figure_spec& spec, const spec_overrides& o) {
-    if (o.theta0.empty()) return spec.panels;
+std::vector<panel_spec> panels_with(const figure_spec& spec, const build_options& o) {
+    if (o.amplitudes.empty()) return spec.panels;
     std::vector<panel_spec> out;
     const auto per_amplitude = [](const panel_spec& p) { return p.plot->amplitudes == amplitude_policy::one_per_panel; };
     const auto first_trajectory = std::find_if(spec.panels.begin(), spec.panels.end(), per_amplitude);
@@ -35,10 +35,10 @@ std::vector<panel_spec> panels_with(const figure_spec& spec, const spec_override
     for (const auto& p : spec.panels) {
         if (per_amplitude(p)) {
             if (&p != &*first_trajectory) continue;
-            for (std::size_t i = 0; i < o.theta0.size(); ++i) {
+            for (std::size_t i = 0; i < o.amplitudes.size(); ++i) {
                 panel_spec q = i < trajectories.size() ? *trajectories[i] : p;
                 if (i >= trajectories.size()) q.paper_file.clear();
-                q.theta0 = {o.theta0[i]};
+                q.theta0 = {o.amplitudes[i]};
                 q.title.reset();
                 out.push_back(std::move(q));
             }
@@ -46,9 +46,9 @@ std::vector<panel_spec> panels_with(const figure_spec& spec, const spec_override
         }
         panel_spec q = p;
         if (p.plot->amplitudes == amplitude_policy::list) {
-            q.theta0 = o.theta0;
+            q.theta0 = o.amplitudes;
         } else if (p.plot->amplitudes == amplitude_policy::one) {
-            q.theta0 = {o.theta0.front()};
+            q.theta0 = {o.amplitudes.front()};
         }
         out.push_back(std::move(q));
     }
@@ -76,22 +76,22 @@ std::string panel_name(std::size_t i) {
 
 plot::label method_label(const pendulum::method_choice& m) { return plot::tex_label(m.label()); }
 
-plot::figure figure_grid(const figure_spec& spec, const spec_overrides& overrides) {
-    const int n = static_cast<int>(panels_with(spec, overrides).size());
-    if (n == 0) throw std::invalid_argument("figure '" + spec.id + "' has no panels");
+plot::figure figure_grid(const figure_spec& spec, const build_options& options) {
+    const int n = static_cast<int>(panels_with(spec, options).size());
+    if (n == 0) throw bad_input("figure '" + spec.id + "' has no panels");
     plot::figure f;
     f.cols = std::min(spec.columns.value_or(3), n);
     f.rows = (n + f.cols - 1) / f.cols;
-    f.panel_width_cm = spec.panel_width_cm.value_or(overrides.panel_width_cm);
-    f.panel_aspect = spec.panel_aspect.value_or(overrides.panel_aspect);
+    f.panel_width_cm = spec.panel_width_cm.value_or(options.panel_width_cm);
+    f.panel_aspect = spec.panel_aspect.value_or(options.panel_aspect);
     f.shared_legend = spec.legend == legend_mode::first;
     return f;
 }
 
-plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrides) {
-    const auto panels = panels_with(spec, overrides);
-    plot::figure f = figure_grid(spec, overrides);
-    const panel_context c{spec, f.panel_width_cm, overrides.animated};
+plot::figure build_figure(const figure_spec& spec, const build_options& options) {
+    const auto panels = panels_with(spec, options);
+    plot::figure f = figure_grid(spec, options);
+    const panel_context c{spec, f.panel_width_cm, options.animated};
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const auto& p = panels[i];
         plot::panel panel = p.plot->build(c, p);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "figures/build_options.hpp"
 #include "figures/panel_support.hpp"
 #include "figures/plot_builders.hpp"
 #include "figures/spec.hpp"
@@ -12,24 +13,16 @@
 
 namespace figures {
 
-/// Choices from the command line that change what a spec shows.
-struct spec_overrides {
-    std::vector<amplitude> theta0;  ///< replaces the amplitudes: one trajectory panel each, or the lists
-    double panel_width_cm = 6.0;    ///< panel width where the spec gives none (the theme's)
-    double panel_aspect = 0.75;     ///< panel aspect where the spec gives none (the theme's)
-    bool animated = false;          ///< leave out the moving parts: add_frame_state adds them per frame
-};
-
 /// The spec's panels with the command line's amplitudes put in: one trajectory panel per
 /// amplitude in place of the trajectory panels (keeping their paper file names in order),
 /// and the amplitude lists of phase, convergence and spectrum panels replaced.
-std::vector<panel_spec> panels_with(const figure_spec& spec, const spec_overrides& overrides);
+std::vector<panel_spec> panels_with(const figure_spec& spec, const build_options& options);
 
 /// The figure's grid and sizes, without its panels: enough to know its page size.
-plot::figure figure_grid(const figure_spec& spec, const spec_overrides& overrides = {});
+plot::figure figure_grid(const figure_spec& spec, const build_options& options = {});
 
 /// The figure a spec describes, its data computed by the core library.
-plot::figure build_figure(const figure_spec& spec, const spec_overrides& overrides = {});
+plot::figure build_figure(const figure_spec& spec, const build_options& options = {});
 
 /// Adds what moves at time w0 t: the pendulums, a time cursor and a dot per method on
 /// trajectories, a dot per orbit on phase panels. `panels` are the specs f was built from.

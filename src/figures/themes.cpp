@@ -202,7 +202,7 @@ std::string_view theme_source(std::string_view name) {
     std::vector<std::string> names;
     for (const auto& t : builtin_themes()) names.emplace_back(t.name);
     const std::string guess = suggest(name, names);
-    throw std::invalid_argument("unknown theme '" + std::string(name) + "'; themes: " + theme_names() +
+    throw bad_input("unknown theme '" + std::string(name) + "'; themes: " + theme_names() +
                                 ", or a style file NAME.toml" + (guess.empty() ? "" : "; did you mean " + guess + "?"));
 }
 

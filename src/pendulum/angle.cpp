@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pendulum/angle.hpp"
 
+#include "pendulum/amplitude.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <algorithm>
@@ -47,7 +49,7 @@ private:
         const std::string shown = text_.size() <= 80 ? std::string(text_)
                                                       : std::string(text_.substr(0, 40)) + "..." +
                                                             std::string(text_.substr(text_.size() - 20));
-        throw std::invalid_argument("invalid value '" + shown + "': " + why + "; " + std::string(allowed));
+        throw domain_error("invalid value '" + shown + "': " + why + "; " + std::string(allowed));
     }
 
     /// Records a piece for angle_tokens.

@@ -9,7 +9,7 @@ namespace pendulum {
 
 /// Evaluates an arithmetic expression with numbers, pi (or π), + - * / and parentheses;
 /// a number directly before pi or "(" multiplies it ("9pi/10", "0.9pi"). Throws
-/// std::invalid_argument with a message naming the text when it is not such an expression
+/// domain_error (a std::invalid_argument) with a message naming the text when it is not such an expression
 /// or its value is not finite.
 double parse_expression(std::string_view text);
 

@@ -33,7 +33,7 @@ std::pair<int, int> pixel_size(const figure& fig, const theme& th, double dpi) {
     const int width = static_cast<int>(std::lround(size.width_pt * dpi / 72.0));
     const int height = static_cast<int>(std::lround(size.height_pt * dpi / 72.0));
     if (width < 1 || height < 1 || width > 32767 || height > 32767) {
-        throw std::invalid_argument("a frame of " + std::to_string(width) + " x " + std::to_string(height) +
+        throw bad_input("a frame of " + std::to_string(width) + " x " + std::to_string(height) +
                                     " pixels is out of range; choose another --dpi");
     }
     return {width, height};

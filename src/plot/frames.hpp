@@ -19,7 +19,7 @@ struct argb_image {
     std::vector<unsigned char> data;  ///< height * stride bytes
 };
 
-/// The pixel size of a figure at dpi; throws std::invalid_argument naming it if it is out of range.
+/// The pixel size of a figure at dpi; throws plot::bad_input naming it if it is out of range.
 std::pair<int, int> pixel_size(const figure& fig, const theme& th, double dpi);
 
 /// Draws the figure into pixels at dpi: one pass of it, over a copy of `under` if given

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/latex_overlay.hpp"
 
+#include "plot/errors.hpp"
 #include "plot/tex_markup.hpp"
 
 #include <array>
@@ -102,7 +103,7 @@ const tex_sizing_row& find_tex_sizing(std::string_view name) {
     }
     std::string list;
     for (const auto& row : sizings) list += (list.empty() ? "" : ", ") + std::string(row.name);
-    throw std::invalid_argument("unknown text sizing '" + std::string(name) + "'; sizings: " + list);
+    throw bad_input("unknown text sizing '" + std::string(name) + "'; sizings: " + list);
 }
 
 std::string latex_picture(const std::vector<placed_text>& texts, page_size size, const theme& th,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/output.hpp"
 
+#include "plot/animation_writers.hpp"
 #include "plot/frames.hpp"
 #include "plot/gif.hpp"
 #include "plot/handles.hpp"
@@ -50,7 +51,7 @@ std::optional<std::tm> source_date() {
     if (!digits || seconds > last || !gmtime_r(&t, &tm)) {
         std::string shown;
         for (const char c : value.substr(0, 40)) shown += static_cast<unsigned char>(c) < 0x20 ? '?' : c;
-        throw std::invalid_argument("SOURCE_DATE_EPOCH '" + shown +
+        throw bad_input("SOURCE_DATE_EPOCH '" + shown +
                                     "' must be a whole number of seconds since 1970-01-01, 0 to " +
                                     std::to_string(last));
     }
@@ -96,8 +97,7 @@ std::string render_vector(const figure& fig, const theme& th, std::string_view f
     return bytes;
 }
 
-std::string render_pdf(const figure& fig, const theme& th, const output_options&,
-                       std::vector<placed_text>* texts = nullptr) {
+std::string render_pdf(const figure& fig, const theme& th, const output_options&, std::vector<placed_text>* texts) {
     return render_vector(
         fig, th, "pdf",
         [](std::string* bytes, page_size size) {
@@ -109,7 +109,7 @@ std::string render_pdf(const figure& fig, const theme& th, const output_options&
 }
 
 std::string write_pdf(const figure& fig, const theme& th, const output_options& options) {
-    return render_pdf(fig, th, options);
+    return render_pdf(fig, th, options, nullptr);
 }
 
 /// Cairo numbers SVG surface ids from a process-wide counter; renumber them in order of
@@ -274,8 +274,7 @@ std::string write_svg(const figure& fig, const theme& th, const output_options&)
     }));
 }
 
-std::string render_eps(const figure& fig, const theme& th, const output_options&,
-                       std::vector<placed_text>* texts = nullptr) {
+std::string render_eps(const figure& fig, const theme& th, const output_options&, std::vector<placed_text>* texts) {
     return fix_eps_date(render_vector(
         fig, th, "eps",
         [](std::string* bytes, page_size size) {
@@ -287,18 +286,18 @@ std::string render_eps(const figure& fig, const theme& th, const output_options&
 }
 
 std::string write_eps(const figure& fig, const theme& th, const output_options& options) {
-    return render_eps(fig, th, options);
+    return render_eps(fig, th, options, nullptr);
 }
 
 /// Overlay formats write two files; standard output can take only one.
 std::string refuse_one_stream(const figure&, const theme&, const output_options&) {
-    throw std::invalid_argument("pdf_tex and eps_tex write two files (the drawing and its LaTeX text); give an "
-                                "output directory, not -o -");
+    throw bad_input(format_names([](const format_row& f) { return !f.graphics.empty(); }, " and ") +
+                    " write two files (the drawing and its LaTeX text); give an output directory, not -o -");
 }
 
 std::string render_gif(const figure& fig, const theme& th, const output_options& options) {
     if (!(options.dpi >= min_dpi && options.dpi <= max_dpi)) {
-        throw std::invalid_argument("dpi must be between 10 and 2400");
+        throw bad_input("dpi must be between 10 and 2400");
     }
     const argb_image image = render_argb(fig, th, options.dpi);
     std::vector<rgb> inks = th.palette;
@@ -310,23 +309,30 @@ std::string render_gif(const figure& fig, const theme& th, const output_options&
 
 std::string render_raster(const figure& fig, const theme& th, const output_options& options) {
     if (!(options.dpi >= min_dpi && options.dpi <= max_dpi)) {
-        throw std::invalid_argument("dpi must be between 10 and 2400");
+        throw bad_input("dpi must be between 10 and 2400");
     }
     return render_png(fig, th, options.dpi);
 }
 
-// Every output format: one row each. A format is written by its row's function, so a
-// format without a writer cannot be listed.
+// Every output format: one row each, with all that the format means. A format is written
+// by its row's functions, so a format without a writer cannot be listed.
+//  name, description,
+//  still writer, overlay's graphics format, writer under an overlay, raster, animation writer, what it animates as
 constexpr format_row formats[] = {
-    {"png", "raster at --dpi", render_raster, {}},
-    {"pdf", "vector, fonts embedded", write_pdf, {}},
-    {"svg", "vector, for the web", write_svg, {}},
-    {"eps", "vector, for latex and dvips", write_eps, {}},
-    {"gif", "animation that loops; one frame for a still figure", render_gif, {}},
+    {"png", "raster at --dpi",
+     render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)"},
+    {"pdf", "vector, fonts embedded",
+     write_pdf, {}, render_pdf, false, write_pdf_animation, "a PDF of one page per frame"},
+    {"svg", "vector, for the web",
+     write_svg, {}, nullptr, false, nullptr, {}},
+    {"eps", "vector, for latex and dvips",
+     write_eps, {}, render_eps, false, nullptr, {}},
+    {"gif", "animation that loops; one frame for a still figure",
+     render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF"},
     {"pdf_tex", "ID.pdf without text and ID.pdf_tex setting the text in the document's fonts (pdflatex)",
-     refuse_one_stream, "pdf"},
+     refuse_one_stream, "pdf", nullptr, false, nullptr, {}},
     {"eps_tex", "ID.eps without text and ID.eps_tex setting the text in the document's fonts (latex, dvips)",
-     refuse_one_stream, "eps"},
+     refuse_one_stream, "eps", nullptr, false, nullptr, {}},
 };
 
 }  // namespace
@@ -343,7 +349,7 @@ void check_raster_size(const figure& fig, const theme& th, double dpi) {
     const double by_area = std::sqrt(max_raster_pixels / (size.width_pt * size.height_pt)) * 72.0;
     char fits[32];
     std::snprintf(fits, sizeof fits, "%.0f", std::floor(std::min(by_side, by_area)));
-    throw std::invalid_argument("a raster of " + std::to_string(static_cast<long long>(w)) + " x " +
+    throw bad_input("a raster of " + std::to_string(static_cast<long long>(w)) + " x " +
                                 std::to_string(static_cast<long long>(h)) + " pixels is too large (at most " +
                                 std::to_string(max_raster_side) + " a side and 100 million in all); --dpi " +
                                 fits + " is the most for this figure");
@@ -363,13 +369,26 @@ std::vector<std::string> format_names() {
     return names;
 }
 
+std::string format_names(bool (*keep)(const format_row&), std::string_view last) {
+    std::vector<std::string_view> names;
+    for (const auto& f : formats) {
+        if (keep(f)) names.push_back(f.name);
+    }
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) out += i + 1 == names.size() ? last : ", ";
+        out += names[i];
+    }
+    return out;
+}
+
 const format_row& find_format(std::string_view format) {
     for (const auto& f : formats) {
         if (f.name == format) return f;
     }
     std::string list;
     for (const auto& f : formats) list += (list.empty() ? "" : ", ") + std::string(f.name);
-    throw std::invalid_argument("unknown format '" + std::string(format) + "'; formats: " + list);
+    throw bad_input("unknown format '" + std::string(format) + "'; formats: " + list);
 }
 
 void check_format(std::string_view format) { find_format(format); }
@@ -394,8 +413,11 @@ overlay_files render_overlay(const figure& fig, const theme& th, std::string_vie
     const theme sized = latex_sized_theme(th, options);
     std::vector<placed_text> texts;
     overlay_files files;
-    files.graphics = graphics_format == "pdf" ? render_pdf(fig, sized, options, &texts)
-                                              : render_eps(fig, sized, options, &texts);
+    const format_row& graphics = find_format(graphics_format);
+    if (!graphics.write_without_text) {
+        throw std::logic_error("format " + std::string(graphics_format) + " cannot be drawn under an overlay");
+    }
+    files.graphics = graphics.write_without_text(fig, sized, options, &texts);
     files.tex = latex_picture(texts, figure_size(fig, sized), sized, graphics_name, options);
     return files;
 }

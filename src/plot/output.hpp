@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "plot/errors.hpp"
 #include "plot/figure.hpp"
 #include "plot/theme.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -28,7 +30,7 @@ struct tex_sizing_row {
 /// Every way of sizing an overlay's text, the default first.
 std::span<const tex_sizing_row> tex_sizing_table();
 
-/// The sizing of that name; throws std::invalid_argument listing the names otherwise.
+/// The sizing of that name; throws plot::bad_input listing the names otherwise.
 const tex_sizing_row& find_tex_sizing(std::string_view name);
 
 /// Options that apply when a figure is written.
@@ -49,16 +51,41 @@ inline constexpr int max_raster_side = 32767;
 /// The most pixels in one raster (400 MB as Cairo holds it).
 inline constexpr double max_raster_pixels = 1e8;
 
-/// Throws std::invalid_argument, naming the size and the largest dpi that fits, if the
+/// Throws plot::bad_input, naming the size and the largest dpi that fits, if the
 /// figure at dpi would be a raster larger than the limits above.
 void check_raster_size(const figure& fig, const theme& th, double dpi);
 
-/// One output format: its file extension, what it is, and the function that writes it.
+struct placed_text;
+
+/// The frames of an animation, as an animation writer takes them.
+struct animation_frames {
+    int first = 0;                     ///< the first frame to write, from 0
+    int last = 0;                      ///< the last frame to write (inclusive)
+    int count = 1;                     ///< frames in the whole animation (a sequence's numbers have its width)
+    double fps = 30;                   ///< frames per second of playback
+    std::function<figure(int)> frame;  ///< the figure of frame i, callable from several threads
+};
+
+/// Writes an animation's frames as DIR/ID.EXT (or a sequence DIR/ID-0001.EXT ...).
+using animation_writer = void (*)(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
+                                  const std::string& id, const output_options& options);
+
+/// One output format and what it means: its file extension, what it is, and the functions
+/// that write it. A new format is a row here and its writers; help, lists, messages and
+/// the command line's checks read the rest from the row.
 struct format_row {
     std::string_view name;         ///< file extension
     std::string_view description;  ///< one line for help and lists
-    std::string (*write)(const figure& fig, const theme& th, const output_options& options);  ///< the bytes
+    /// A still figure's bytes.
+    std::string (*write)(const figure& fig, const theme& th, const output_options& options);
     std::string_view graphics;     ///< for a LaTeX overlay: the format of the drawing beside it
+    /// The bytes with every text left out and recorded in `texts` instead, to be the drawing
+    /// under a LaTeX overlay; null if the format cannot be one.
+    std::string (*write_without_text)(const figure& fig, const theme& th, const output_options& options,
+                                      std::vector<placed_text>* texts);
+    bool raster;                   ///< pixels at --dpi: its size is checked before any work
+    animation_writer animate;      ///< writes all frames of an animation; null: an animation is one frame
+    std::string_view animation;    ///< what animate writes, for help: "a looping GIF"
 };
 
 /// A LaTeX overlay's two files: the drawing without text, and the picture that sets the text.
@@ -75,17 +102,21 @@ overlay_files render_overlay(const figure& fig, const theme& th, std::string_vie
 /// Every output format, in the order help lists them.
 std::span<const format_row> format_table();
 
-/// The format of that name; throws std::invalid_argument listing the formats otherwise.
+/// The format of that name; throws plot::bad_input listing the formats otherwise.
 const format_row& find_format(std::string_view format);
 
-/// The supported output formats, as file extensions: png, pdf, svg, eps.
+/// The supported output formats, as file extensions, in the table's order.
 std::vector<std::string> format_names();
 
-/// Throws std::invalid_argument listing the supported formats unless `format` is one.
+/// The names of the formats whose row passes `keep`, joined with ", " and `last` before the
+/// final one: "pdf_tex and eps_tex".
+std::string format_names(bool (*keep)(const format_row&), std::string_view last = ", ");
+
+/// Throws plot::bad_input listing the supported formats unless `format` is one.
 void check_format(std::string_view format);
 
 /// The creation date of PDF files, "YYYY-MM-DDTHH:MM:SSZ" from SOURCE_DATE_EPOCH, or empty;
-/// throws std::invalid_argument naming it if it is set and not 0 to 253402300799 seconds.
+/// throws plot::bad_input naming it if it is set and not 0 to 253402300799 seconds.
 std::string pdf_creation_date();
 
 /// Renders the figure in the format and returns the file's bytes. The same input always

@@ -216,7 +216,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     if (fig.rows < 1 || fig.cols < 1 || fig.panels.size() > static_cast<std::size_t>(fig.rows * fig.cols)) {
         throw std::invalid_argument("figure grid is too small for its panels");
     }
-    if (th.palette.empty()) throw std::invalid_argument("theme has no colours");
+    if (th.palette.empty()) throw bad_input("theme has no colours");
     text_engine text(cr, th.font_family);
     text.record_into(texts);
     if (pass != draw_pass::overlay) {
@@ -250,13 +250,19 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
             const rect area = axes_area(plans[i], cells[i]);
             if (area.w >= least && area.h >= least) continue;
             constexpr double cm = 2.54 / 72;
-            char what[256];
-            std::snprintf(what, sizeof what,
-                          "a figure of %.1f x %.1f cm leaves panel %zu of %zu axes of %.1f x %.1f cm, too small for "
-                          "%.3g pt text: make the figure larger (figure_width_cm and figure_height_cm, or "
-                          "panel_width_cm) or its text smaller (tick_font_pt, label_font_pt, legend_font_pt)",
-                          size.width_pt * cm, size.height_pt * cm, i + 1, fig.panels.size(), std::max(area.w, 0.0) * cm,
-                          std::max(area.h, 0.0) * cm, th.tick_font_pt);
+            const auto number = [](const char* format, double value) {
+                char buf[32];
+                std::snprintf(buf, sizeof buf, format, value);
+                return std::string(buf);
+            };
+            const auto cm_of = [&](double pt) { return number("%.1f", pt * cm); };
+            const std::string what =
+                "a figure of " + cm_of(size.width_pt) + " x " + cm_of(size.height_pt) + " cm leaves panel " +
+                std::to_string(i + 1) + " of " + std::to_string(fig.panels.size()) + " axes of " +
+                cm_of(std::max(area.w, 0.0)) + " x " + cm_of(std::max(area.h, 0.0)) + " cm, too small for " +
+                number("%.3g", th.tick_font_pt) +
+                " pt text: make the figure larger (figure_width_cm and figure_height_cm, or panel_width_cm) or its "
+                "text smaller (tick_font_pt, label_font_pt, legend_font_pt)";
             throw layout_error(what);
         }
     };

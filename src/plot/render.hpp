@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "plot/errors.hpp"
 #include "plot/figure.hpp"
 #include "plot/theme.hpp"
 
@@ -27,9 +28,9 @@ enum class draw_pass { all, still, overlay };
 struct placed_text;
 
 /// A figure that cannot be laid out as asked: its size leaves axes too small to read.
-class layout_error : public std::invalid_argument {
+class layout_error : public bad_input {
 public:
-    using std::invalid_argument::invalid_argument;
+    using bad_input::bad_input;
 };
 
 /// Draws the figure on cr, whose user units are points, filling [0, w] x [0, h]; with

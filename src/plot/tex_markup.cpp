@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/tex_markup.hpp"
 
+#include "plot/errors.hpp"
 #include "plot/figure.hpp"
 
 #include <algorithm>
@@ -67,7 +68,7 @@ public:
 
     std::string run() {
         if (tex_.size() > max_label_bytes) {
-            throw std::invalid_argument("label of " + std::to_string(tex_.size()) + " bytes: at most " +
+            throw bad_input("label of " + std::to_string(tex_.size()) + " bytes: at most " +
                                         std::to_string(max_label_bytes));
         }
         for (const char c : tex_) {
@@ -106,7 +107,7 @@ private:
         const std::string shown = tex_.size() <= 80 ? std::string(tex_)
                                                      : std::string(tex_.substr(0, 40)) + "..." +
                                                            std::string(tex_.substr(tex_.size() - 20));
-        throw std::invalid_argument("label '" + shown + "': " + why);
+        throw bad_input("label '" + shown + "': " + why);
     }
 
     /// One character outside math, as the target writes it.
@@ -404,7 +405,7 @@ public:
         while (pos_ < m_.size()) {
             if (m_[pos_] == '<') {
                 const std::size_t end = m_.find('>', pos_);
-                if (end == std::string_view::npos) throw std::invalid_argument("unclosed tag in '" + std::string(m_) + "'");
+                if (end == std::string_view::npos) throw bad_input("unclosed tag in '" + std::string(m_) + "'");
                 const std::string tag(m_.substr(pos_ + 1, end - pos_ - 1));
                 pos_ = end + 1;
                 if (!until.empty() && tag == until) return out;
@@ -463,7 +464,7 @@ std::string math_character(const std::string& c, const std::string& whole) {
     for (const auto& sym : symbols) {
         if (sym.text == c && static_cast<unsigned char>(sym.text[0]) >= 0x80) return "\\" + std::string(sym.name) + " ";
     }
-    throw std::invalid_argument("label '" + whole + "': no LaTeX for the character '" + c + "'");
+    throw bad_input("label '" + whole + "': no LaTeX for the character '" + c + "'");
 }
 
 std::string math_of(const std::vector<markup_node>& nodes, const std::string& whole) {

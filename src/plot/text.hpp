@@ -2,6 +2,7 @@
 #pragma once
 // Part of the plot layer's renderer; not a public interface.
 
+#include "plot/errors.hpp"
 #include "plot/figure.hpp"
 #include "plot/handles.hpp"
 #include "plot/math_layout.hpp"
@@ -269,7 +270,7 @@ private:
         if (!pango_parse_markup(spans.c_str(), -1, 0, nullptr, nullptr, nullptr, &error)) {
             const std::string why = error ? error->message : "not valid";
             g_clear_error(&error);
-            throw std::invalid_argument("invalid text markup '" + whole + "': " + why);
+            throw bad_input("invalid text markup '" + whole + "': " + why);
         }
         pango_layout_set_markup(layout.get(), spans.c_str(), -1);
         return layout;

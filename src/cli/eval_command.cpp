@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// eval: periods T/T0 and Fourier coefficients per amplitude, as CSV or JSON.
+#include "cli/commands.hpp"
+#include "cli/eval_columns.hpp"
+#include "cli/options.hpp"
+#include "cli/report.hpp"
+#include "cli/table.hpp"
+#include "pendulum/approximants.hpp"
+#include "pendulum/methods.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pendulum::cli {
+
+namespace {
+
+/// Says on standard error which levels of the iteration have no period at this amplitude.
+void warn_breakdown(double theta0, const std::vector<int>& levels) {
+    std::string list;
+    for (int n : levels) list += (list.empty() ? "" : ", ") + std::to_string(n);
+    std::cerr << "pendulum-figures: warning: theta0 = " << format_double(theta0) << ": the iteration has no period at order "
+              << list << " (lambda = (w/w0)^2 < 0 there: the scheme itself breaks down near pi); "
+              << (levels.size() == 1 ? "that field is" : "those fields are") << " left empty\n";
+}
+
+struct eval_options {
+    std::string theta0;
+    std::vector<std::string> orders;
+    std::vector<std::string> methods;
+    std::string format = "csv";
+    std::optional<double> length;  // metres: adds the period in seconds
+    double g = 9.80665;
+};
+
+/// Writes eval's table row by row: every input is checked first (nothing is written for
+/// bad input), then each amplitude's row goes out as it is computed.
+void eval_stream(std::ostream& out, const eval_options& o) {
+    const auto format = parse_table_format(o.format);
+    const auto amplitudes = parse_amplitude_values(o.theta0);
+    const std::vector<int> orders = parse_orders(list_items(o.orders));
+    std::vector<method_choice> methods;
+    for (const auto& text : list_items(o.methods)) {
+        if (text.empty()) throw usage_error("--method: empty value; see 'list' for the methods");
+        const auto m = parse_method_option("--method", text);
+        if (std::none_of(methods.begin(), methods.end(), [&](const method_choice& c) { return c.text() == m.text(); })) {
+            methods.push_back(m);
+        }
+    }
+    std::vector<std::string> columns;
+    for (const auto& c : eval_columns()) columns.emplace_back(c.name);
+    for (int n : orders) columns.push_back("period_order" + std::to_string(n));
+    for (const auto& m : methods) columns.push_back("period_" + m.text());
+    double small_period_s = 0;
+    if (o.length) {
+        if (!(*o.length > 0 && *o.length <= 1e6)) {
+            throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
+        }
+        if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
+        small_period_s = 2 * std::acos(-1.0) * std::sqrt(*o.length / o.g);
+        columns.push_back("T_s");
+    }
+    // The iteration is computed once per amplitude, to the highest level asked for, and
+    // every --order and --method order:N column is read off that one sequence.
+    int highest = -1;
+    for (int n : orders) highest = std::max(highest, n);
+    for (const auto& m : methods) {
+        if (m.row->role == method_role::iterated) highest = std::max(highest, m.n);
+    }
+    table_writer writer(out, columns, format);
+    for (const double value : amplitudes) {
+        const eval_point point(value);
+        const auto levels = highest >= 0 ? iterated_sequence(value, highest) : std::vector<fourier_solution>{};
+        std::vector<int> broken;
+        const auto level_period = [&](int n) {
+            const auto& level = levels[static_cast<std::size_t>(n)];
+            if (!level.exists() && std::find(broken.begin(), broken.end(), n) == broken.end()) broken.push_back(n);
+            return level.period_ratio();
+        };
+        std::vector<double> row;
+        for (const auto& c : eval_columns()) row.push_back(c.value(point));
+        for (int n : orders) row.push_back(level_period(n));
+        for (const auto& m : methods) row.push_back(m.row->role == method_role::iterated ? level_period(m.n) : method_period(m, value));
+        if (o.length) row.push_back(small_period_s * point.exact.period_ratio());
+        writer.row(row);
+        if (!broken.empty()) warn_breakdown(value, broken);
+    }
+    writer.finish();
+}
+
+}  // namespace
+
+command add_eval_command(CLI::App& app) {
+    auto ev = std::make_shared<eval_options>();
+    auto* cmd = app.add_subcommand(
+        "eval", "Print periods T/T0 and Fourier coefficients, exact and approximate, per amplitude.");
+    cmd->add_option("--theta0", ev->theta0, "Amplitudes, a comma-separated LIST of angles")
+        ->required()
+        ->type_name("LIST")->check(non_empty);
+    cmd->add_option("--order", ev->orders,
+                     "Add a column period_orderN for the iteration to order N (0.." +
+                         std::to_string(max_order) + "), or one for each N of a range a..b; repeatable")
+        ->type_name("N")
+        ->take_all();
+    cmd->add_option("--method", ev->methods,
+                     "Add a column period_NAME for any method of 'list', e.g. kidd-fogg, agm:2, series:3; "
+                     "repeatable")
+        ->type_name("NAME")
+        ->take_all();
+    cmd->add_option("--length", ev->length, "Pendulum length in metres: adds T_s, the exact period in seconds")
+        ->type_name("L");
+    cmd->add_option("--g", ev->g, "Gravity in m/s^2 for --length (default 9.80665)")->type_name("G");
+    cmd->add_option("--format", ev->format, "Output format: csv (default) or json")
+        ->type_name("csv|json");
+    cmd->footer(std::string("\n") + angle_help + "\n\nColumns: " + cli::eval_columns_help() +
+                 "; then period_orderN for each --order N, period_NAME for each --method NAME, and T_s with "
+                 "--length. Periods are T/T0. Numbers round-trip a double.\n\n"
+                 "Close to pi (from about pi - 3e-4) some levels of the iteration have lambda = (w/w0)^2 < 0, "
+                 "so no period: at pi - 1e-6 the orders 6, 8, 16 and 17. That field is left empty (null in "
+                 "JSON), a warning on standard error names the amplitude and the orders, and the exit status "
+                 "stays 0: the table is complete, the value does not exist.\n\n"
+                 "Examples:\n"
+                 "  pendulum-figures eval --theta0 'pi/2,9pi/10' --order 12\n"
+                 "  pendulum-figures eval --theta0 0.99pi --order 0..40\n"
+                 "  pendulum-figures eval --theta0 170deg --method kidd-fogg,lima-arun,ganley,agm:2\n"
+                 "  pendulum-figures eval --theta0 170deg --length 0.5");
+
+    return {cmd, [ev] {
+                eval_stream(std::cout, *ev);
+                return write_stdout("");
+            }};
+}
+
+}  // namespace pendulum::cli

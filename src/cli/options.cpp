@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "cli/options.hpp"
+
+#include "figures/themes.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <unistd.h>
+
+namespace pendulum::cli {
+
+const char* const angle_help =
+    "Angles are expressions in radians: 1.2, pi/2, 9pi/10, 9*pi/10, 0.9pi, pi-1e-6, or degrees "
+    "with deg: 162deg. A LIST is comma-separated: --theta0 'pi/3,pi/2,162deg'.";
+
+const CLI::Validator non_empty(
+    [](std::string& value) { return value.empty() ? std::string("empty value") : std::string(); }, "", "NON-EMPTY");
+
+std::vector<double> parse_amplitude_values(const std::string& given) {
+    std::vector<double> values;
+    for_each_amplitude(given, [&](const std::string&, double v) { values.push_back(v); });
+    return values;
+}
+
+std::vector<figures::amplitude> parse_amplitudes(const std::string& given) {
+    std::vector<figures::amplitude> values;
+    for_each_amplitude(given, [&](const std::string& item, double v) { values.push_back({item, v}); });
+    return values;
+}
+
+method_choice parse_method_option(const std::string& option, const std::string& text) {
+    try {
+        return parse_method(text);
+    } catch (const domain_error& e) {
+        throw usage_error(option + " '" + text + "': " + e.what());
+    }
+}
+
+namespace {
+
+void check_order(int order) {
+    if (order < 0 || order > max_order) {
+        throw usage_error("--order " + std::to_string(order) + ": order must be between 0 and " +
+                          std::to_string(max_order));
+    }
+}
+
+}  // namespace
+
+int parse_order(const std::string& text) {
+    // Spaces around the number are allowed on both sides, as in angles.
+    const auto first = text.find_first_not_of(" \t");
+    const auto last = text.find_last_not_of(" \t");
+    const std::string digits = first == std::string::npos ? "" : text.substr(first, last - first + 1);
+    if (digits.empty()) throw usage_error("--order: empty value; orders are 0.." + std::to_string(max_order));
+    if (digits.find_first_not_of("0123456789") != std::string::npos) {
+        throw usage_error("--order '" + text + "': not a whole number; orders are 0.." + std::to_string(max_order));
+    }
+    if (digits.size() > 9) {
+        throw usage_error("--order " + digits + ": order must be between 0 and " + std::to_string(max_order));
+    }
+    const int order = std::stoi(digits);
+    check_order(order);
+    return order;
+}
+
+std::vector<int> parse_orders(const std::vector<std::string>& items) {
+    std::vector<int> orders;
+    const auto add = [&](int n) {
+        if (std::find(orders.begin(), orders.end(), n) == orders.end()) orders.push_back(n);
+    };
+    for (const auto& text : items) {
+        const auto dots = text.find("..");
+        if (dots == std::string::npos) {
+            add(parse_order(text));
+            continue;
+        }
+        const int from = parse_order(text.substr(0, dots));
+        const int to = parse_order(text.substr(dots + 2));
+        if (from > to) {
+            throw usage_error("--order '" + text + "': a range a..b needs a <= b, e.g. 0.." + std::to_string(max_order));
+        }
+        for (int n = from; n <= to; ++n) add(n);
+    }
+    return orders;
+}
+
+std::vector<std::string> list_items(const std::vector<std::string>& values) {
+    std::vector<std::string> items;
+    for (const auto& v : values) {
+        for (auto& item : split_list(v)) items.push_back(std::move(item));
+    }
+    return items;
+}
+
+plot::theme chosen_theme(const std::string& name, const std::vector<std::string>& sets) {
+    try {
+        return figures::load_theme(name, sets);
+    } catch (const figures::spec_error& e) {
+        throw usage_error(std::string("bad theme:\n") + e.what());
+    } catch (const std::runtime_error& e) {
+        throw usage_error(e.what());
+    }
+}
+
+void check_output_dir(const std::string& dir) {
+    std::error_code ec;
+    if (!std::filesystem::exists(dir, ec)) throw usage_error("output directory '" + dir + "' does not exist");
+    if (!std::filesystem::is_directory(dir, ec)) throw usage_error("output path '" + dir + "' is not a directory");
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+        throw usage_error("output directory '" + dir + "' is not writable");
+    }
+}
+
+}  // namespace pendulum::cli

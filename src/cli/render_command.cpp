@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// render: figures, built in or spec files, into files of the formats asked for.
+#include "cli/commands.hpp"
+#include "cli/format_help.hpp"
+#include "cli/options.hpp"
+#include "cli/render_figures.hpp"
+#include "cli/report.hpp"
+#include "figures/plots.hpp"
+#include "figures/render_plan.hpp"
+#include "figures/themes.hpp"
+#include "plot/output.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <deque>
+#include <memory>
+#include <utility>
+
+namespace pendulum::cli {
+
+namespace {
+
+/// Parses --frames a..b (1-based, inclusive) into 0-based indices; b may be left out.
+std::pair<int, int> parse_frames(const std::string& text, int count) {
+    const auto dots = text.find("..");
+    const auto number = [&](const std::string& part, int fallback) {
+        if (part.empty()) return fallback;
+        std::size_t used = 0;
+        long long v = -1;
+        try {
+            v = std::stoll(part, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != part.size() || v < 1 || v > count) {
+            throw usage_error("--frames '" + text + "': frames are 1.." + std::to_string(count) + ", as A..B");
+        }
+        return static_cast<int>(v);
+    };
+    if (dots == std::string::npos) {
+        const int one = number(text, 0);
+        return {one - 1, one - 1};
+    }
+    const int a = number(text.substr(0, dots), 1);
+    const int b = number(text.substr(dots + 2), count);
+    if (a > b) throw usage_error("--frames '" + text + "': the first frame comes after the last");
+    return {a - 1, b - 1};
+}
+
+}  // namespace
+
+int render_figures(const std::vector<const figures::entry*>& chosen, const render_options& o) {
+    // The environment is input too: a bad SOURCE_DATE_EPOCH stops the run before any work.
+    plot::pdf_creation_date();
+    std::vector<std::string> formats;
+    for (const auto& f : split_list(o.formats)) {
+        plot::check_format(f);
+        if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
+    }
+    // An overlay format writes its drawing under the drawing format's name.
+    for (const auto& row : plot::format_table()) {
+        if (row.graphics.empty()) continue;
+        const std::string overlay(row.name);
+        const std::string graphics(row.graphics);
+        if (std::count(formats.begin(), formats.end(), graphics) && std::count(formats.begin(), formats.end(), overlay)) {
+            throw usage_error("-f " + o.formats + ": " + graphics + " and " + overlay + " both write ID." + graphics +
+                              " (" + overlay + "'s without its text); render them into different directories");
+        }
+    }
+    plot::output_options overlay;  // what the LaTeX overlays need; dpi is set per theme below
+    try {
+        overlay.tex_sizes = plot::find_tex_sizing(o.tex_sizes).value;
+    } catch (const plot::bad_input& e) {
+        throw usage_error(std::string("--tex-sizes: ") + e.what());
+    }
+    if (o.tex_font_size) {
+        if (!(*o.tex_font_size >= 5 && *o.tex_font_size <= 30)) {
+            throw usage_error("--tex-font-size " + format_double(*o.tex_font_size) +
+                              ": the document's font size in points, 5 to 30");
+        }
+        if (overlay.tex_sizes == plot::tex_sizing::absolute) {
+            throw usage_error("--tex-font-size does nothing with --tex-sizes absolute: the text has the theme's "
+                              "sizes in points (--set tick_font_pt=... changes them)");
+        }
+        overlay.tex_font_pt = *o.tex_font_size;
+    }
+    const plot::theme theme = chosen_theme(o.theme.empty() ? "paper" : o.theme, o.sets);
+    // Animations are for slides: theirs unless a theme is asked for.
+    const plot::theme moving_theme = o.theme.empty() ? chosen_theme("slides", o.sets) : theme;
+    const double dpi = o.dpi.value_or(theme.dpi);
+    const double moving_dpi = o.dpi.value_or(moving_theme.dpi);
+    for (const double d : {dpi, moving_dpi}) {
+        if (!(d >= plot::min_dpi && d <= plot::max_dpi)) {
+            throw usage_error("--dpi " + format_double(d) + ": must be between " + format_double(plot::min_dpi) +
+                              " and " + format_double(plot::max_dpi));
+        }
+    }
+    figures::build_options build;
+    if (!o.theta0.empty()) {
+        if (std::none_of(chosen.begin(), chosen.end(), [](const auto* e) { return e->takes_amplitudes(); })) {
+            throw usage_error("--theta0 applies to figures with " + figures::plot_names(true, "or") + " panels, "
+                              "and none was chosen");
+        }
+        build.amplitudes = parse_amplitudes(o.theta0);
+    }
+    const figures::render_style style{theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes},
+                                      moving_theme,
+                                      plot::output_options{moving_dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes}};
+    if (o.dir == "-") {
+        // One still figure in one format, to standard output.
+        if (chosen.size() != 1 || formats.size() != 1 || o.paper_files || chosen.front()->spec.animation) {
+            throw usage_error("-o - writes one still figure in one format to standard output");
+        }
+        return write_stdout(figures::render_one(*chosen.front(), build, theme, formats.front(), plot::output_options{dpi}));
+    }
+    check_output_dir(o.dir);
+
+    std::vector<const figures::entry*> stills;
+    std::vector<const figures::entry*> animations;
+    for (const auto* e : chosen) (e->spec.animation ? animations : stills).push_back(e);
+    if ((!o.frames.empty() || !o.at.empty()) && animations.empty()) {
+        throw usage_error("--frames and --at apply to animations, and none was chosen (see 'list')");
+    }
+    if (!o.frames.empty() && !o.at.empty()) throw usage_error("give --frames or --at, not both");
+    if (o.paper_files && !animations.empty()) throw usage_error("--paper-files applies to still figures, not to animations");
+
+    const std::vector<figures::figure_file> jobs = figures::files_for(stills, formats, o.dir, o.paper_files, build);
+    if (jobs.empty() && animations.empty()) {
+        throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
+    }
+    std::optional<double> at;
+    if (!o.at.empty()) {
+        try {
+            at = parse_expression(o.at);
+        } catch (const std::invalid_argument& e) {
+            throw usage_error(std::string("--at: ") + e.what());
+        }
+    }
+    // Rasters too large for Cairo or for memory are refused before any work, and every
+    // animation is checked before any file is written.
+    figures::check_raster_sizes(chosen, formats, build, style);
+    std::vector<figures::animation_job> moving;
+    for (const auto* e : animations) {
+        const auto plan = figures::plan_animation(*e, build);
+        const auto [first, last] = o.frames.empty() ? std::pair{0, plan.frames - 1} : parse_frames(o.frames, plan.frames);
+        moving.push_back({e, plan, first, last});
+    }
+    figures::write_render(jobs, moving, formats, o.dir, build, style, at);
+    return 0;
+}
+
+command add_render_command(CLI::App& app) {
+    auto ro = std::make_shared<render_options>();
+    auto* cmd = app.add_subcommand("render", "Draw figures (built-in or spec files) into files: " + format_list() + ".");
+    cmd->add_option("ids", ro->ids, "Figure ids or aliases (see 'list'), or spec files NAME.toml")->type_name("ID");
+    cmd->add_flag("--all", ro->all, "Render every built-in still figure (and the figures given with it); animations are rendered by name");
+    cmd->add_option("-o,--output-dir", ro->dir, "Existing directory for the files (default: .); - writes one "
+                                                  "figure in one format to standard output")->type_name("DIR")->check(non_empty);
+    cmd->add_option("-f,--formats", ro->formats, "Comma-separated formats (default: pdf,png): " + format_help())
+        ->type_name("LIST")->check(non_empty);
+    cmd->add_option("--theme", ro->theme, figures::theme_help() + "; default paper, slides for animations")
+        ->type_name("NAME")->check(non_empty);
+    cmd->add_option("--set", ro->sets, "KEY=VALUE of a style file on top of the theme, e.g. tick_font_pt=9; "
+                                         "repeatable ('show --theme paper' lists the keys)")
+        ->type_name("KEY=VALUE")->check(non_empty);
+    cmd->add_option("--dpi", ro->dpi, "Resolution of " + raster_formats() + " in dots per inch, 10..2400 (default: "
+                                        "the theme's, 300 for paper)")
+        ->type_name("N");
+    cmd->add_option("--theta0", ro->theta0, "Amplitudes of the trajectory figures, a comma-separated LIST")
+        ->type_name("LIST")->check(non_empty);
+    cmd->add_option("--frames", ro->frames, "Animations: only frames A..B (from 1; A.. or ..B for the rest)")
+        ->type_name("A..B")->check(non_empty);
+    cmd->add_option("--at", ro->at, "Animations: one frame at time t/T (T the exact period of the first "
+                                      "amplitude), in every format")
+        ->type_name("T")->check(non_empty);
+    cmd->add_flag("--force", ro->force, "Rewrite files that would not change (by default they are left alone, "
+                                          "so their time stays and make does not rebuild)");
+    cmd->add_option("--tex-font-size", ro->tex_font_size,
+                       overlay_formats() + ": the document's font size in points, 5..30 (default 10); the figure's "
+                       "text is set at sizes relative to it (\\footnotesize, \\small) and laid out to fit")
+        ->type_name("PT");
+    {
+        std::string help = overlay_formats() + ": how the text is sized (default relative):";
+        for (const auto& row : plot::tex_sizing_table()) {
+            help += "\n  " + std::string(row.name) + ": " + std::string(row.description);
+        }
+        cmd->add_option("--tex-sizes", ro->tex_sizes, help)->type_name("HOW");
+    }
+    cmd->add_flag("--paper-files", ro->paper_files,
+                     "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
+    cmd->footer(std::string("\n") + angle_help +
+                   "\n\nFiles are DIR/ID.EXT (or the paper's names with --paper-files). Each file is written "
+                   "under a temporary name and renamed, so a failed run never leaves a partial figure. Set "
+                   "SOURCE_DATE_EPOCH to stamp PDF and EPS files with that date; otherwise they carry none.\n\n"
+                   "Examples:\n"
+                   "  pendulum-figures render --all -o figures -f pdf,png\n"
+                   "  pendulum-figures render fig2 --theta0 170deg --theme slides -f png --dpi 150\n"
+                   "  pendulum-figures render --all --paper-files -f eps -o paper/\n"
+                   "\nLaTeX sets the text: -f pdf_tex writes ID.pdf without text and ID.pdf_tex, which the document "
+                   "reads with \\usepackage{graphicx} and \\input{ID.pdf_tex}: every label in the document's own "
+                   "fonts, at \\footnotesize or \\small of its size (--tex-font-size), or at the theme's sizes in "
+                   "points with --tex-sizes absolute (with Computer Modern: \\RequirePackage{fix-cm} first). "
+                   "\\def\\figurewidth{8.6cm} "
+                   "before \\input scales the drawing, not the text. eps_tex is the same for latex and dvips. Labels "
+                   "are the specs' TeX, verbatim; a macro LaTeX lacks shows only when the document is compiled.\n"
+                   "  pendulum-figures render fig2 -f pdf_tex -o figures --tex-font-size 10\n"
+                   "  pendulum-figures render fig7 -f eps_tex --tex-sizes absolute --set tick_font_pt=8\n"
+                   "\nAnimations (a spec with [animation]; built in: swing, separatrix) are written as " +
+                   animation_help() + ". In Beamer: \\usepackage{animate} and "
+                   "\\animategraphics[loop,autoplay]{30}{swing}{}{} (30: the spec's fps). A video: ffmpeg -framerate "
+                   "30 -i swing-%04d.png -pix_fmt yuv420p swing.mp4\n"
+                   "  pendulum-figures render swing --theme slides -f gif,pdf\n"
+                   "  pendulum-figures render swing --at 0.25 -f svg");
+    return {cmd, [ro] {
+                std::deque<figures::entry> loaded;
+                return render_figures(figures::selected_figures(ro->ids, ro->all, loaded), *ro);
+            }};
+}
+
+}  // namespace pendulum::cli

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "figures/render_plan.hpp"
+
+#include "figures/spec_build.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace figures {
+
+entry load_input(std::string_view id_or_file) {
+    try {
+        return load(id_or_file);
+    } catch (const spec_error& e) {
+        throw bad_input(std::string("bad figure spec:\n") + e.what());
+    } catch (const std::runtime_error& e) {
+        throw bad_input(e.what());
+    }
+}
+
+std::vector<const entry*> selected_figures(const std::vector<std::string>& ids, bool all,
+                                           std::deque<entry>& loaded) {
+    if (!all && ids.empty()) throw bad_input("name the figures to render, or use --all (see 'list')");
+    std::vector<const entry*> chosen;
+    if (all) {
+        // Every still figure; animations are rendered by name.
+        for (const auto& e : catalog()) {
+            if (!e.spec.animation) chosen.push_back(&e);
+        }
+    }
+    for (const auto& id : ids) {
+        const entry* e = id.ends_with(".toml") ? &loaded.emplace_back(load_input(id)) : &find(id);
+        const auto same = std::find_if(chosen.begin(), chosen.end(), [&](const auto* c) { return c->id == e->id; });
+        if (same != chosen.end()) {
+            // The same figure twice is drawn once; two different ones cannot share file names.
+            if ((*same)->source != e->source) {
+                throw bad_input("two different figures are named '" + e->id + "' and would write the same files");
+            }
+            continue;
+        }
+        chosen.push_back(e);
+    }
+    return chosen;
+}
+
+void check_raster_sizes(const std::vector<const entry*>& figures, const std::vector<std::string>& formats,
+                        const build_options& build, const render_style& style) {
+    for (const auto* e : figures) {
+        const bool moving = e->spec.animation.has_value();
+        const plot::theme& th = moving ? style.moving_theme : style.still_theme;
+        const build_options grid{build.amplitudes, th.panel_width_cm, th.panel_aspect};
+        for (const auto& f : formats) {
+            if (!plot::find_format(f).raster) continue;
+            try {
+                plot::check_raster_size(figure_grid(e->spec, grid), th, moving ? style.moving.dpi : style.still.dpi);
+            } catch (const plot::bad_input& err) {
+                throw bad_input(e->id + "." + f + ": " + err.what());
+            }
+        }
+    }
+}
+
+std::string render_one(const entry& e, const build_options& build, const plot::theme& theme,
+                       std::string_view format, const plot::output_options& output) {
+    build_options one = build;
+    one.panel_width_cm = theme.panel_width_cm;
+    one.panel_aspect = theme.panel_aspect;
+    plot::check_raster_size(figure_grid(e.spec, one), theme, output.dpi);
+    return plot::render(figures::build(e, one), theme, format, output);
+}
+
+void write_render(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
+                  const std::vector<std::string>& formats, const std::filesystem::path& dir,
+                  const build_options& build, const render_style& style, std::optional<double> at) {
+    if (!stills.empty()) write_figures(stills, build, style.still_theme, style.still);
+    for (const auto& m : animations) {
+        for (const auto& f : formats) {
+            const plot::format_row& row = plot::find_format(f);
+            if (!at && row.animate) {
+                write_animation(*m.figure, build, style.moving_theme, row, dir, style.moving, m.first, m.last);
+                continue;
+            }
+            // A format that holds no animation, or --at: one frame.
+            build_options still = build;
+            still.animated = true;
+            still.panel_width_cm = style.moving_theme.panel_width_cm;
+            still.panel_aspect = style.moving_theme.panel_aspect;
+            const double w0_t = at ? *at * m.plan.reference_period : m.plan.time(m.first);
+            const auto frame = animation_frame(*m.figure, still, m.plan, figures::build(*m.figure, still), w0_t);
+            plot::save(frame, style.moving_theme, dir / (m.figure->id + "." + f), style.moving);
+        }
+    }
+}
+
+}  // namespace figures

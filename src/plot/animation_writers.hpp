@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The writers of animations that the format table's rows hold; not a public interface
+// (write an animation through find_format(name).animate).
+
+#include "plot/output.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace plot {
+
+/// DIR/ID.gif: a GIF that loops, frames encoded on every core and joined in order.
+void write_gif_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
+                         const std::string& id, const output_options& options);
+
+/// DIR/ID.pdf: one page per frame, for Beamer's animate package.
+void write_pdf_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
+                         const std::string& id, const output_options& options);
+
+/// DIR/ID-0001.png ...: one PNG per frame, numbered from 1, drawn on every core.
+void write_png_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
+                         const std::string& id, const output_options& options);
+
+}  // namespace plot

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # pendulum-figures: thin front end to CMake.
 #   make            build (installs missing Debian packages when run as root)
-#   make test       build and run every test
+#   make test       build and run every test (with CI set, as CI sets it for .ci/run, warnings are
+#                   errors: PENDULUM_WERROR=ON)
 #   make check-sanitizers  the tests again under ASan and UBSan (run by .ci/run)
 #   make figures    build and write every figure into figures/
 #   make bench      run the benchmarks
@@ -13,6 +14,10 @@
 BUILD ?= build
 JOBS ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+# Continuous integration (CI=true in the environment of .ci/run) builds with -Werror.
+ifneq ($(CI),)
+CMAKE_FLAGS += -DPENDULUM_WERROR=ON
+endif
 
 # Debian packages needed to build and test. GoogleTest and Google Benchmark are listed too,
 # so that a machine without them gets them the same way.

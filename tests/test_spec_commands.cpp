@@ -32,7 +32,7 @@ TEST(SpecCommands, ShownSpecRendersTheSameBytes) {
     const auto b = run_cli("render fig2 -f png,pdf,svg --dpi 60", dir);
     ASSERT_EQ(b.status, 0) << b.err;
     for (const char* ext : {".png", ".pdf", ".svg"}) {
-        EXPECT_EQ(slurp(dir / ("x" + std::string(ext))), slurp(dir / ("trajectory-lowest" + std::string(ext)))) << ext;
+        EXPECT_EQ(slurp(dir / (std::string("x") + ext)), slurp(dir / (std::string("trajectory-lowest") + ext))) << ext;
     }
     // data of the spec file is the figure's data.
     EXPECT_EQ(run_cli("data x.toml", dir).out, run_cli("data fig2").out);

@@ -18,6 +18,7 @@
 #include <optional>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace figures {
@@ -193,7 +194,11 @@ void write_animation(const entry& e, const build_options& options, const plot::t
     // The palette: the theme's colours and their anti-aliasing shades over the background.
     std::vector<plot::rgb> inks = theme.palette;
     inks.push_back(theme.foreground);
-    const auto [width, height] = plot::pixel_size(base, theme, dpi);
+    // Variables, not a structured binding: the writers below capture them, which clang
+    // before 16 does not allow of a binding.
+    const std::pair<int, int> pixels = plot::pixel_size(base, theme, dpi);
+    const int width = pixels.first;
+    const int height = pixels.second;
     const auto palette = plot::gif_palette(inks, theme.background, 16);
     // What stays is drawn once; each frame draws what moves over a copy of it.
     const plot::argb_image still_image = plot::render_argb(frame(first), theme, dpi, plot::draw_pass::still);

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # pendulum-figures: thin front end to CMake.
 #   make            build (installs missing Debian packages when run as root)
-#   make test       build and run every test
+#   make test       build and run every test (with CI set, as CI sets it for .ci/run, warnings are
+#                   errors: PENDULUM_WERROR=ON)
 #   make check-sanitizers  the tests again under ASan and UBSan (run by .ci/run)
 #   make figures    build and write every figure into figures/
 #   make bench      run the benchmarks
@@ -13,6 +14,10 @@
 BUILD ?= build
 JOBS ?= 2
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+# Continuous integration (CI=true in the environment of .ci/run) builds with -Werror.
+ifneq ($(CI),)
+CMAKE_FLAGS += -DPENDULUM_WERROR=ON
+endif
 
 # Debian packages needed to build and test. GoogleTest and Google Benchmark are listed too,
 # so that a machine without them gets them the same way.
@@ -95,20 +100,21 @@ PREFIX ?= /usr/local
 install: build
 	DESTDIR=$(DESTDIR) cmake --install $(BUILD) --prefix $(PREFIX)
 
-# make fuzz: libFuzzer harnesses for the angle parser and the spec reader (clang, ASan,
-# UBSan), each run for FUZZ_SECONDS on a copy of its seed corpus in fuzz/corpus.
+# make fuzz: the libFuzzer harnesses of fuzz/ (fuzz/CMakeLists.txt: clang, ASan, UBSan, the
+# program's libraries instrumented) built in build-fuzz/, each run for FUZZ_SECONDS on a copy
+# of its seed corpus fuzz/corpus/NAME. The test Fuzz.BuildAndRunBriefly does the same briefly.
 FUZZ_SECONDS ?= 60
-FUZZ_FLAGS := -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -Isrc
+FUZZ_BUILD ?= build-fuzz
 fuzz: deps
-	mkdir -p build-fuzz
-	clang++ $(FUZZ_FLAGS) fuzz/angle_fuzzer.cpp src/cli/angle.cpp -o build-fuzz/angle_fuzzer
-	clang++ $(FUZZ_FLAGS) fuzz/spec_fuzzer.cpp src/figures/spec.cpp src/figures/toml_reader.cpp src/cli/angle.cpp \
-	  src/pendulum/*.cpp $$(pkg-config --cflags --libs tomlplusplus gsl) -o build-fuzz/spec_fuzzer
-	rm -rf build-fuzz/corpus-angle build-fuzz/corpus-spec
-	cp -r fuzz/corpus/angle build-fuzz/corpus-angle
-	cp -r fuzz/corpus/spec build-fuzz/corpus-spec
-	build-fuzz/angle_fuzzer -max_total_time=$(FUZZ_SECONDS) -artifact_prefix=build-fuzz/ build-fuzz/corpus-angle
-	build-fuzz/spec_fuzzer -max_total_time=$(FUZZ_SECONDS) -artifact_prefix=build-fuzz/ build-fuzz/corpus-spec
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DPENDULUM_BUILD_FUZZERS=ON \
+	  -DPENDULUM_BUILD_TESTS=OFF -DPENDULUM_BUILD_BENCH=OFF
+	cmake --build $(FUZZ_BUILD) --target fuzzers -j $(JOBS)
+	for name in $$(cat $(FUZZ_BUILD)/fuzzers.txt); do \
+	  rm -rf $(FUZZ_BUILD)/corpus-$$name && cp -r fuzz/corpus/$$name $(FUZZ_BUILD)/corpus-$$name && \
+	  $(FUZZ_BUILD)/fuzz/$${name}_fuzzer -max_total_time=$(FUZZ_SECONDS) -artifact_prefix=$(FUZZ_BUILD)/ \
+	    $(FUZZ_BUILD)/corpus-$$name || exit 1; \
+	done
 
 # make deb: build/pendulum-figures_VERSION_ARCH.deb
 deb: build

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -109,11 +110,19 @@ TEST(Animation, GifPdfAndPngSequence) {
 
 TEST(Animation, OneFrameAt) {
     const auto dir = temp_dir("animation-at");
-    const auto r = run_cli("render swing --at 0.25 -f svg,png --dpi 20 -o '" + dir.string() + "'");
+    const auto r = run_cli("render swing --at 0.25 -f svg,png,pdf --dpi 20 -o '" + dir.string() + "'");
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(files_in(dir), (std::set<std::string>{"swing.svg", "swing.png"}));
-    // The clock shows the time asked for.
-    EXPECT_NE(slurp(dir / "swing.svg").size(), 0u);
+    EXPECT_EQ(files_in(dir), (std::set<std::string>{"swing.svg", "swing.png", "swing.pdf"}));
+    // The clock shows the time asked for: a quarter of the exact period of the spec's 1 m
+    // pendulum released at 170 degrees, in seconds, and no other time.
+    const double period_s = 2 * std::numbers::pi * std::sqrt(1.0 / 9.80665) *
+                            pendulum::period_ratio(170 * std::numbers::pi / 180);
+    char clock[32];
+    std::snprintf(clock, sizeof clock, "t = %.2f s", 0.25 * period_s);
+    const auto text = run_command("pdftotext '" + (dir / "swing.pdf").string() + "' -");
+    ASSERT_EQ(text.status, 0) << "pdftotext (poppler-utils): " << text.err;
+    EXPECT_NE(text.out.find(clock), std::string::npos) << "no '" << clock << "' in:\n" << text.out;
+    EXPECT_EQ(text.out.find("t = "), text.out.rfind("t = ")) << text.out;
     fs::remove_all(dir);
 }
 

@@ -4,11 +4,17 @@
 #include "figures/builtin.hpp"
 #include "figures/spec.hpp"
 #include "figures/spec_build.hpp"
+#include "pendulum/approximants.hpp"
+#include "pendulum/exact.hpp"
+#include "plot/figure.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <numbers>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -46,6 +52,65 @@ TEST(Builtin, PaperFilesAndSizes) {
     EXPECT_EQ(parsed(*find_builtin("fig5")).panel_width_cm, 4.3);
     EXPECT_EQ(parsed(*find_builtin("fig6")).panel_width_cm, 4.2);
     EXPECT_EQ(names("convergence"), (std::vector<std::string>{""}));
+}
+
+/// The built figure of a built-in spec.
+plot::figure built(const char* id) { return build_figure(parsed(*find_builtin(id))); }
+
+/// Every point of the series `label` of panel `panel` lies on `y(x)`, to 1e-13 of the
+/// value or of `scale` (an angle's amplitude), whichever is larger; the series has at least
+/// `min_points` points.
+void expect_on(const plot::figure& f, std::size_t panel, const std::string& label,
+               const std::function<double(double)>& y, double scale = 1e-300, std::size_t min_points = 20) {
+    ASSERT_LT(panel, f.panels.size()) << label;
+    const plot::series* found = nullptr;
+    for (const auto& s : f.panels[panel].data) {
+        if (s.label.markup == label) found = &s;
+    }
+    ASSERT_NE(found, nullptr) << "panel " << panel << " has no series '" << label << "'";
+    ASSERT_EQ(found->x.size(), found->y.size()) << label;
+    EXPECT_GE(found->x.size(), min_points) << label;
+    for (std::size_t i = 0; i < found->x.size(); ++i) {
+        const double x = found->x[i];
+        const double want = y(x);
+        EXPECT_NEAR(found->y[i], want, 1e-13 * std::max(std::abs(want), scale))
+            << "panel " << panel << ", " << label << " at x = " << x;
+    }
+}
+
+constexpr double pi = std::numbers::pi;
+
+TEST(Builtin, PaperFiguresHoldTheCoreLibrarysValues) {
+    using namespace pendulum;
+    // Fig. 1: c1 against the amplitude.
+    const auto fig1 = built("fig1");
+    expect_on(fig1, 0, "exact", [](double t) { return exact_solution(t).coefficient(0); });
+    expect_on(fig1, 0, "lowest order", [](double t) { return lowest_order(t).coefficients.at(0); });
+    expect_on(fig1, 0, "polynomial", [](double t) { return polynomial(t).coefficients.at(0); });
+    // Fig. 3: c1' and c3' of the first order.
+    const auto fig3 = built("fig3");
+    expect_on(fig3, 0, "first order", [](double t) { return first_order(t).coefficients.at(0); });
+    expect_on(fig3, 1, "exact", [](double t) { return exact_solution(t).coefficient(1); });
+    expect_on(fig3, 1, "first order", [](double t) { return first_order(t).coefficients.at(1); });
+    // Fig. 5: c5'' of the second order.
+    expect_on(built("fig5"), 2, "second order", [](double t) { return second_order(t).coefficients.at(2); });
+    // Fig. 2: theta against t/T (T the exact period) at pi/3, pi/2, 3pi/4 and 9pi/10.
+    const auto fig2 = built("fig2");
+    const double amplitudes[] = {pi / 3, pi / 2, 3 * pi / 4, 9 * pi / 10};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const double t0 = amplitudes[i];
+        const double w0_T = 2 * pi * period_ratio(t0);
+        expect_on(fig2, i, "exact", [&](double s) { return exact_solution(t0).theta_at_fraction(s); }, t0);
+        expect_on(fig2, i, "lowest order", [&](double s) { return lowest_order(t0).theta(w0_T * s); }, t0);
+        expect_on(fig2, i, "harmonic", [&](double s) { return harmonic(t0).theta(w0_T * s); }, t0);
+    }
+    // Fig. 7: T/T0 against the amplitude, and the relative error of each order's period in %.
+    const auto fig7 = built("fig7");
+    expect_on(fig7, 0, "exact", [](double t) { return period_ratio(t); });
+    expect_on(fig7, 0, "lowest order", [](double t) { return lowest_order(t).period_ratio(); });
+    expect_on(fig7, 0, "second order", [](double t) { return second_order(t).period_ratio(); });
+    expect_on(fig7, 1, "first order",
+              [](double t) { return 100 * (first_order(t).period_ratio() / period_ratio(t) - 1); });
 }
 
 }  // namespace

@@ -9,9 +9,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace pendulum;
 using std::numbers::pi;
@@ -84,6 +89,75 @@ std::vector<double> numbers(const std::string& line) {
     return v;
 }
 
+/// One record of a JSON table: its keys and values in order, null as NaN.
+using json_record = std::vector<std::pair<std::string, double>>;
+
+/// Reads the whole of a JSON table as eval writes it: an array of objects whose values are
+/// numbers or null. Anything else, trailing text included, throws std::runtime_error.
+std::vector<json_record> parse_json_table(const std::string& s) {
+    std::size_t i = 0;
+    const auto fail = [&](const std::string& what) {
+        throw std::runtime_error(what + " at byte " + std::to_string(i) + ": '" + s.substr(i, 20) + "'");
+    };
+    const auto space = [&] {
+        while (i < s.size() && (s[i] == ' ' || s[i] == '\n' || s[i] == '\t' || s[i] == '\r')) ++i;
+    };
+    const auto accept = [&](char c) {
+        space();
+        if (i < s.size() && s[i] == c) {
+            ++i;
+            return true;
+        }
+        return false;
+    };
+    const auto expect = [&](char c) {
+        if (!accept(c)) fail(std::string("expected '") + c + "'");
+    };
+    const auto string = [&] {
+        expect('"');
+        const auto end = s.find('"', i);
+        if (end == std::string::npos) fail("unterminated string");
+        std::string out = s.substr(i, end - i);
+        if (out.find('\\') != std::string::npos) fail("escape in a key");
+        i = end + 1;
+        return out;
+    };
+    const auto number = [&] {
+        space();
+        if (s.compare(i, 4, "null") == 0) {
+            i += 4;
+            return std::nan("");
+        }
+        const auto end = s.find_first_not_of("-+0123456789.eE", i);
+        double v = 0;
+        const auto [ptr, ec] = std::from_chars(s.data() + i, s.data() + (end == std::string::npos ? s.size() : end), v);
+        if (ec != std::errc() || ptr == s.data() + i || ptr != s.data() + (end == std::string::npos ? s.size() : end)) {
+            fail("not a JSON number");
+        }
+        i = static_cast<std::size_t>(ptr - s.data());
+        return v;
+    };
+    std::vector<json_record> table;
+    expect('[');
+    if (!accept(']')) {
+        do {
+            json_record record;
+            expect('{');
+            do {
+                std::string key = string();
+                expect(':');
+                record.emplace_back(std::move(key), number());
+            } while (accept(','));
+            expect('}');
+            table.push_back(std::move(record));
+        } while (accept(','));
+        expect(']');
+    }
+    space();
+    if (i != s.size()) fail("text after the table");
+    return table;
+}
+
 }  // namespace
 
 TEST(Cli, EvalPrintsTheDocumentedColumns) {
@@ -108,10 +182,59 @@ TEST(Cli, EvalPrintsTheDocumentedColumns) {
 }
 
 TEST(Cli, EvalJson) {
-    const auto r = run_cli("eval --theta0 1 --format json");
+    // One object per amplitude, the CSV's columns as keys in the same order, every value
+    // the core library's, and null where the iteration breaks down (order 6 at pi - 1e-6).
+    const std::string args = "eval --theta0 '1,pi-1e-6' --order 6";
+    const auto csv = run_cli(args);
+    ASSERT_EQ(csv.status, 0) << csv.err;
+    const auto r = run_cli(args + " --format json");
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(r.out.substr(0, 15), "[\n {\"theta0\": 1");
-    EXPECT_NE(r.out.find("\"c5_poly\": "), std::string::npos);
+    std::vector<json_record> table;
+    ASSERT_NO_THROW(table = parse_json_table(r.out)) << r.out;
+    ASSERT_EQ(table.size(), 2u) << r.out;
+    std::vector<std::string> header;
+    {
+        std::istringstream in(lines(csv.out).at(0));
+        for (std::string key; std::getline(in, key, ',');) header.push_back(key);
+    }
+    for (const double t0 : {1.0, pi - 1e-6}) {
+        const auto& record = table[t0 == 1.0 ? 0 : 1];
+        const exact_solution e(t0);
+        const auto first = first_order(t0);
+        const auto second = second_order(t0);
+        const auto poly = polynomial(t0);
+        const std::vector<std::pair<std::string, double>> want = {
+            {"theta0", t0},
+            {"period_exact", e.period_ratio()},
+            {"period_lowest", lowest_order(t0).period_ratio()},
+            {"period_first", first.period_ratio()},
+            {"period_second", second.period_ratio()},
+            {"c1_exact", e.coefficient(0)},
+            {"c3_exact", e.coefficient(1)},
+            {"c5_exact", e.coefficient(2)},
+            {"c1_lowest", lowest_order(t0).coefficients.at(0)},
+            {"c1_first", first.coefficients.at(0)},
+            {"c3_first", first.coefficients.at(1)},
+            {"c1_second", second.coefficients.at(0)},
+            {"c3_second", second.coefficients.at(1)},
+            {"c5_second", second.coefficients.at(2)},
+            {"c1_poly", poly.coefficients.at(0)},
+            {"c3_poly", poly.coefficients.at(1)},
+            {"c5_poly", poly.coefficients.at(2)},
+            {"period_order6", t0 == 1.0 ? iterated(1.0, 6).period_ratio() : std::nan("")},
+        };
+        ASSERT_EQ(record.size(), want.size()) << r.out;
+        for (std::size_t k = 0; k < want.size(); ++k) {
+            EXPECT_EQ(record[k].first, want[k].first) << t0;
+            EXPECT_EQ(record[k].first, header.at(k)) << "JSON keys and CSV columns differ";
+            if (std::isnan(want[k].second)) {
+                EXPECT_TRUE(std::isnan(record[k].second)) << want[k].first << " at " << t0 << " is not null";
+            } else {
+                EXPECT_EQ(record[k].second, want[k].second) << want[k].first << " at " << t0;
+            }
+        }
+    }
+    EXPECT_THROW(parse_json_table(r.out + "]"), std::runtime_error);
 }
 
 TEST(Cli, TrajectoryMethodsAtTheSamePhysicalTime) {

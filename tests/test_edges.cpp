@@ -109,7 +109,9 @@ TEST(Iteration, BreaksDownAtTheLevelsOfTheExactArithmeticIteration) {
         for (const auto& row : r) {
             const auto& level = levels[static_cast<std::size_t>(row.order)];
             EXPECT_EQ(level.exists(), row.lambda > 0) << name << " N = " << row.order;
-            if (!level.exists()) EXPECT_TRUE(std::isnan(level.period_ratio())) << name << " N = " << row.order;
+            if (!level.exists()) {
+                EXPECT_TRUE(std::isnan(level.period_ratio())) << name << " N = " << row.order;
+            }
         }
     }
 }
@@ -141,7 +143,9 @@ TEST(Edges, EveryMethodIsRightDownToTheSmallestSubnormalAmplitude) {
         EXPECT_EQ(e.theta(2 * pi), t) << t;
         EXPECT_EQ(e.theta_at_fraction(0.25), 0.0) << t;
         // A sixth of a period: theta0 cos(pi/3) = theta0/2 (to the rounding of the phase).
-        if (t > 1e-300) EXPECT_NEAR(e.theta_at_fraction(1.0 / 6) / t, 0.5, 1e-15) << t;
+        if (t > 1e-300) {
+            EXPECT_NEAR(e.theta_at_fraction(1.0 / 6) / t, 0.5, 1e-15) << t;
+        }
     }
     // c3 = -theta0^3/192 and c5 = theta0^5/20480, underflowing gracefully.
     EXPECT_EQ(pendulum::exact_solution(1e-100).coefficient(1), -1e-300 / 192);

@@ -343,8 +343,8 @@ TEST(RenderCommand, SameBytesAloneOrInABatch) {
 TEST(ListAndData, CsvQuotesAndPlainText) {
     plot::figure f;
     plot::panel p;
-    p.data.push_back(plot::series{"<i>a</i>, &amp; \"b\"", {1, 2}, {0.5, 0.25}});
-    p.data.push_back(plot::series{"c", {3}, {std::nan("")}});
+    p.data.push_back(plot::series{.label = "<i>a</i>, &amp; \"b\"", .x = {1, 2}, .y = {0.5, 0.25}});
+    p.data.push_back(plot::series{.label = "c", .x = {3}, .y = {std::nan("")}});
     f.panels = {p, p};
     EXPECT_EQ(figures::figure_csv(f),
               "panel,series,x,y\n"

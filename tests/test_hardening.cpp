@@ -83,7 +83,10 @@ TEST(Hardening, UnwritableStandardOutputIsAnError) {
 
 TEST(Hardening, ManyPanelsAreLetteredInPlainAscii) {
     std::string amplitudes;
-    for (int i = 1; i <= 30; ++i) amplitudes += (i > 1 ? "," : "") + std::to_string(i * 0.1);
+    for (int i = 1; i <= 30; ++i) {
+        if (i > 1) amplitudes += ',';
+        amplitudes += std::to_string(i * 0.1);
+    }
     const auto r = run_cli("data fig2 --theta0 '" + amplitudes + "'");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("\nz,"), std::string::npos);

@@ -99,7 +99,7 @@ TEST(Labels, ScriptsAndPrimesAreValidLatex) {
 }
 
 TEST(Labels, ControlCharactersLengthAndNestingAreRefused) {
-    for (const std::string bad : {std::string("a\rb"), std::string("a\x1b[2Jb"), std::string("a\0b", 3),
+    for (const std::string& bad : {std::string("a\rb"), std::string("a\x1b[2Jb"), std::string("a\0b", 3),
                                   std::string("$x\ny$"), std::string("tab\there")}) {
         EXPECT_THROW(plot::tex_to_markup(bad), std::invalid_argument) << bad;
         EXPECT_THROW(plot::tex_to_latex(bad), std::invalid_argument) << bad;

@@ -345,9 +345,13 @@ TEST(SmallAmplitudes, EveryColumnFromTheSeries) {
         EXPECT_EQ(e.period_ratio(), 1.0) << t;
         EXPECT_NEAR(e.coefficient(0) / t, 1.0, 1e-16) << t;
         const double c3 = -t * t * t / 192;
-        if (c3 != 0) EXPECT_NEAR(e.coefficient(1) / c3, 1.0, 1e-15) << t;
+        if (c3 != 0) {
+            EXPECT_NEAR(e.coefficient(1) / c3, 1.0, 1e-15) << t;
+        }
         const double c5 = std::pow(t, 5) / 20480;
-        if (c5 > 1e-300) EXPECT_NEAR(e.coefficient(2) / c5, 1.0, 1e-15) << t;
+        if (c5 > 1e-300) {
+            EXPECT_NEAR(e.coefficient(2) / c5, 1.0, 1e-15) << t;
+        }
         EXPECT_EQ(pendulum::lowest_order(t).period_ratio(), 1.0) << t;
         EXPECT_NO_THROW(pendulum::second_order(t)) << t;
         EXPECT_EQ(pendulum::first_order(t).coefficients[0], t) << t;

@@ -40,8 +40,8 @@ figure sample_figure() {
         p.x.label = "<i>\u03d1</i><sub>0</sub>";
         p.y.label = "<i>c</i><sup>\u2032</sup><sub>1</sub>";
         p.x.ticks = tick_kind::multiples_of_pi;
-        series s{"curve", {}, {}, line_style::dashed, marker_style::none, 1};
-        series m{"points", {}, {}, line_style::none, marker_style::open_circle, 0};
+        series s{.label = "curve", .line = line_style::dashed, .marker = marker_style::none, .color = 1};
+        series m{.label = "points", .line = line_style::none, .marker = marker_style::open_circle, .color = 0};
         for (int i = 0; i <= 50; ++i) {
             s.x.push_back(pi * i / 50);
             s.y.push_back(std::sin(pi * i / 50));
@@ -134,7 +134,9 @@ TEST(Ticks, EdgeCases) {
         EXPECT_GE(t.major.size(), c.min_major) << c.name;
         EXPECT_LE(t.major.size(), c.max_major) << c.name;
         EXPECT_EQ(t.labels.size(), t.major.size()) << c.name;
-        if (c.minor_wanted) EXPECT_FALSE(t.minor.empty()) << c.name;
+        if (c.minor_wanted) {
+            EXPECT_FALSE(t.minor.empty()) << c.name;
+        }
         EXPECT_TRUE(std::is_sorted(t.major.begin(), t.major.end())) << c.name;
         EXPECT_TRUE(std::is_sorted(t.minor.begin(), t.minor.end())) << c.name;
         for (double v : t.major) {
@@ -385,8 +387,8 @@ TEST(Legend, NeverCoversData) {
     // renders with and without labels; no data may lie under it.
     figure with;
     panel p;
-    series s{"a parabola", {}, {}, line_style::solid, marker_style::none, 0};
-    series m{"its points", {}, {}, line_style::none, marker_style::open_circle, 0};
+    series s{.label = "a parabola", .line = line_style::solid, .marker = marker_style::none, .color = 0};
+    series m{.label = "its points", .line = line_style::none, .marker = marker_style::open_circle, .color = 0};
     for (int i = 0; i <= 200; ++i) {
         const double x = -1 + i / 100.0;
         s.x.push_back(x);
@@ -431,7 +433,7 @@ TEST(Legend, GoesAboveWhenNoCornerIsFree) {
     // Data everywhere: the legend takes a band above the axes, which therefore shrink.
     figure with;
     panel p;
-    series s{"zigzag", {}, {}, line_style::solid, marker_style::none, 0};
+    series s{.label = "zigzag", .line = line_style::solid, .marker = marker_style::none, .color = 0};
     for (int i = 0; i <= 400; ++i) {
         s.x.push_back(i / 400.0);
         s.y.push_back(i % 2);
@@ -471,7 +473,7 @@ figure line_figure() {
     panel p;
     p.x.label = "<i>x</i>";
     p.y.label = "<i>y</i>";
-    p.data = {series{"line", {0, 1}, {10, 20}, line_style::solid, marker_style::none, 0}};
+    p.data = {series{.label = "line", .x = {0, 1}, .y = {10, 20}, .line = line_style::solid, .marker = marker_style::none, .color = 0}};
     f.panels.push_back(p);
     return f;
 }

@@ -32,7 +32,7 @@ TEST(SpecCommands, ShownSpecRendersTheSameBytes) {
     const auto b = run_cli("render fig2 -f png,pdf,svg --dpi 60", dir);
     ASSERT_EQ(b.status, 0) << b.err;
     for (const char* ext : {".png", ".pdf", ".svg"}) {
-        EXPECT_EQ(slurp(dir / ("x" + std::string(ext))), slurp(dir / ("trajectory-lowest" + std::string(ext)))) << ext;
+        EXPECT_EQ(slurp(dir / (std::string("x") + ext)), slurp(dir / (std::string("trajectory-lowest") + ext))) << ext;
     }
     // data of the spec file is the figure's data.
     EXPECT_EQ(run_cli("data x.toml", dir).out, run_cli("data fig2").out);
@@ -130,13 +130,23 @@ TEST(SpecCommands, EvalMethodsAndTrajectoryNames) {
 TEST(SpecCommands, ThemesFromTheCommandLine) {
     const auto dir = scratch("themes");
     std::ofstream(dir / "big.toml") << "base = \"slides\"\ntick_font_pt = 20\n";
-    auto r = run_cli("render fig1 --theme slides-dark -f png --dpi 20", dir);
-    ASSERT_EQ(r.status, 0) << r.err;
-    const std::string dark = slurp(dir / "c1-lowest.png");
-    r = run_cli("render fig1 --theme big.toml --set label_font_pt=22 -f png --dpi 20", dir);
-    ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(slurp(dir / "c1-lowest.png"), dark);
-    r = run_cli("render fig1 --theme big.toml --set label_fnt_pt=22 -f png --dpi 20", dir);
+    std::ofstream(dir / "big22.toml") << "base = \"slides\"\ntick_font_pt = 20\nlabel_font_pt = 22\n";
+    const auto render = [&](const std::string& theme) {
+        const auto r = run_cli("render fig1 --force --theme " + theme + " -f png --dpi 20", dir);
+        EXPECT_EQ(r.status, 0) << theme << ": " << r.err;
+        return slurp(dir / "c1-lowest.png");
+    };
+    const std::string plain = render("big.toml");
+    ASSERT_FALSE(plain.empty());
+    // The key changes the figure...
+    const std::string set = render("big.toml --set label_font_pt=22");
+    EXPECT_TRUE(set != plain) << "--set label_font_pt=22 changed nothing";
+    // ... as the same key in the style file does, and nothing else: the same bytes.
+    EXPECT_TRUE(set == render("big22.toml")) << "--set differs from the style file's label_font_pt = 22";
+    EXPECT_TRUE(set == render("slides --set tick_font_pt=20 --set label_font_pt=22")) << "two --set differ";
+    // The value the theme already has changes nothing.
+    EXPECT_TRUE(render("big.toml --set label_font_pt=16") == plain) << "--set of the theme's own value changed the figure";
+    const auto r = run_cli("render fig1 --theme big.toml --set label_fnt_pt=22 -f png --dpi 20", dir);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("did you mean label_font_pt?"), std::string::npos) << r.err;
     fs::remove_all(dir);

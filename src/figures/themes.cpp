@@ -135,6 +135,14 @@ void throw_problems(reader& r) {
     if (!r.problems().empty()) throw spec_error(std::move(r.problems()));
 }
 
+/// Throws one problem of a command-line option, which has no line or column.
+[[noreturn]] void throw_option_problem(std::string option, std::string what) {
+    std::vector<spec_problem> problems(1);
+    problems.front().where.file = std::move(option);
+    problems.front().what = std::move(what);
+    throw spec_error(std::move(problems));
+}
+
 plot::theme load(std::string_view name_or_file, int depth) {
     const bool is_file = name_or_file.ends_with(".toml");
     const std::string file = is_file ? std::string(name_or_file) : std::string(name_or_file) + ".toml";
@@ -211,7 +219,7 @@ plot::theme load_theme(std::string_view name_or_file, const std::vector<std::str
     for (const auto& set : sets) {
         const auto eq = set.find('=');
         if (eq == std::string::npos || eq == 0) {
-            throw spec_error({{{"--set", 0, 0}, "'" + set + "' must be KEY=VALUE, e.g. tick_font_pt=9"}});
+            throw_option_problem("--set", "'" + set + "' must be KEY=VALUE, e.g. tick_font_pt=9");
         }
         const std::string key = set.substr(0, eq);
         std::string value = set.substr(eq + 1);
@@ -231,7 +239,7 @@ plot::theme load_theme(std::string_view name_or_file, const std::vector<std::str
                 const std::string line = key + " = " + quoted + "\"";
                 doc = toml::parse(std::string_view(line), std::string_view("--set"));
             } catch (const toml::parse_error& e) {
-                throw spec_error({{{"--set " + key, 0, 0}, "not a value: " + std::string(e.description())}});
+                throw_option_problem("--set " + key, "not a value: " + std::string(e.description()));
             }
         }
         apply(r, doc, t);

@@ -45,16 +45,18 @@ enum class marker_style { none, open_circle, filled_circle };
 
 /// One curve or set of points, with its legend entry.
 struct series {
-    plot::label label;                      ///< legend text; empty: no entry
-    std::vector<double> x;                  ///< abscissae
-    std::vector<double> y;                  ///< ordinates; non-finite values break the line
+    // Every member has an initializer, so that an aggregate initialization may name only
+    // some (-Wmissing-field-initializers).
+    plot::label label{};                    ///< legend text; empty: no entry
+    std::vector<double> x{};                ///< abscissae
+    std::vector<double> y{};                ///< ordinates; non-finite values break the line
     line_style line = line_style::solid;    ///< line style
     marker_style marker = marker_style::none;  ///< marker
     int color = 0;                          ///< index into the theme's palette
-    std::optional<rgb> rgb_color;           ///< a colour of its own, in place of the palette's
+    std::optional<rgb> rgb_color{};         ///< a colour of its own, in place of the palette's
     bool autoscale = true;                  ///< false: leaves the axis limits alone (reference lines)
     bool sets_limits = true;                ///< false: data that leaves the axis limits alone and is clipped
-    std::string style_key;                  ///< a theme's style for this name replaces line and marker
+    std::string style_key{};                ///< a theme's style for this name replaces line and marker
     double marker_scale = 1.0;              ///< marker radius in units of the theme's
     double width_scale = 1.0;               ///< line width in units of the theme's
     double alpha = 1.0;                     ///< opacity, 0 (invisible) to 1

@@ -425,7 +425,8 @@ public:
                 const std::size_t end = m_.find(';', pos_);
                 const std::string entity(m_.substr(pos_ + 1, end == std::string_view::npos ? 0 : end - pos_ - 1));
                 pos_ = end == std::string_view::npos ? m_.size() : end + 1;
-                n.text = entity == "amp" ? "&" : entity == "lt" ? "<" : entity == "gt" ? ">" : entity == "quot" ? "\"" : "'";
+                const char c = entity == "amp" ? '&' : entity == "lt" ? '<' : entity == "gt" ? '>' : entity == "quot" ? '"' : '\'';
+                n.text.assign(1, c);
             } else {
                 std::size_t end = pos_ + 1;
                 while (end < m_.size() && (static_cast<unsigned char>(m_[end]) & 0xc0) == 0x80) ++end;
@@ -568,7 +569,11 @@ std::string text_of(const std::vector<markup_node>& nodes, const std::string& wh
     std::string out;
     std::vector<markup_node> math;
     const auto flush = [&] {
-        if (!math.empty()) out += "$" + math_of(math, whole) + "$";
+        if (!math.empty()) {
+            out += '$';
+            out += math_of(math, whole);
+            out += '$';
+        }
         math.clear();
     };
     for (const auto& n : nodes) {

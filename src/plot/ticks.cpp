@@ -150,8 +150,13 @@ tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
             label = "0";
         } else {
             const long long ap = p < 0 ? -p : p;
-            label = (p < 0 ? minus : "") + (ap == 1 ? std::string() : std::to_string(ap)) + "<i>\u03c0</i>" +
-                    (q == 1 ? std::string() : "/" + std::to_string(q));
+            if (p < 0) label += minus;
+            if (ap != 1) label += std::to_string(ap);
+            label += "<i>\u03c0</i>";
+            if (q != 1) {
+                label += '/';
+                label += std::to_string(q);
+            }
         }
         t.labels.push_back(label);
     }

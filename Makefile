@@ -67,14 +67,15 @@ test: build
 # The whole suite again under AddressSanitizer and UndefinedBehaviorSanitizer, in a second
 # build directory (a slow build: .ci/run runs it after make test). Only fontconfig's
 # process-lifetime allocations are suppressed; the install tests, which link the installed
-# (instrumented) library into an uninstrumented program, are left out.
+# (instrumented) library into an uninstrumented program, are left out, and so is the fuzz
+# test, whose build is instrumented already (make test runs it).
 SANITIZE := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 check-sanitizers: deps
 	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_BUILD_BENCH=OFF \
 	  -DCMAKE_CXX_FLAGS="$(SANITIZE) -O1" -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE)"
 	cmake --build build-asan -j $(JOBS)
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -E '^Install\.'
+	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -E '^(Install|Fuzz)\.'
 
 bench: build
 	$(BUILD)/bench_pendulum --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \

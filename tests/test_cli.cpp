@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the command line: angle expressions, output tables and every kind of bad input.
-#include "cli/angle.hpp"
+#include "cli/lists.hpp"
+#include "pendulum/angle.hpp"
 #include "cli/table.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
@@ -23,30 +24,30 @@ using std::numbers::pi;
 using test_support::run_cli;
 
 TEST(Angle, ParsesWhatPhysicistsType) {
-    EXPECT_EQ(cli::parse_angle("1.2"), 1.2);
-    EXPECT_EQ(cli::parse_angle("pi/2"), pi / 2);
-    EXPECT_EQ(cli::parse_angle("9pi/10"), 9 * pi / 10);
-    EXPECT_EQ(cli::parse_angle("9*pi/10"), 9 * pi / 10);
-    EXPECT_EQ(cli::parse_angle("0.9pi"), 0.9 * pi);
-    EXPECT_EQ(cli::parse_angle("162deg"), 0.9 * pi);
-    EXPECT_EQ(cli::parse_angle("90 deg"), pi / 2);
-    EXPECT_EQ(cli::parse_angle("90\u00b0"), pi / 2);
-    EXPECT_EQ(cli::parse_angle("\u03c0/3"), pi / 3);
-    EXPECT_EQ(cli::parse_angle(" 3pi/4 "), 3 * pi / 4);
-    EXPECT_EQ(cli::parse_angle("pi - 1e-9"), pi - 1e-9);
-    EXPECT_EQ(cli::parse_angle("2(pi/3)"), 2 * (pi / 3));
-    EXPECT_EQ(cli::parse_angle("1e-8"), 1e-8);
-    EXPECT_EQ(cli::parse_angle("1.5rad"), 1.5);
-    EXPECT_EQ(cli::parse_angle("-pi/2"), -pi / 2);
+    EXPECT_EQ(pendulum::parse_angle("1.2"), 1.2);
+    EXPECT_EQ(pendulum::parse_angle("pi/2"), pi / 2);
+    EXPECT_EQ(pendulum::parse_angle("9pi/10"), 9 * pi / 10);
+    EXPECT_EQ(pendulum::parse_angle("9*pi/10"), 9 * pi / 10);
+    EXPECT_EQ(pendulum::parse_angle("0.9pi"), 0.9 * pi);
+    EXPECT_EQ(pendulum::parse_angle("162deg"), 0.9 * pi);
+    EXPECT_EQ(pendulum::parse_angle("90 deg"), pi / 2);
+    EXPECT_EQ(pendulum::parse_angle("90\u00b0"), pi / 2);
+    EXPECT_EQ(pendulum::parse_angle("\u03c0/3"), pi / 3);
+    EXPECT_EQ(pendulum::parse_angle(" 3pi/4 "), 3 * pi / 4);
+    EXPECT_EQ(pendulum::parse_angle("pi - 1e-9"), pi - 1e-9);
+    EXPECT_EQ(pendulum::parse_angle("2(pi/3)"), 2 * (pi / 3));
+    EXPECT_EQ(pendulum::parse_angle("1e-8"), 1e-8);
+    EXPECT_EQ(pendulum::parse_angle("1.5rad"), 1.5);
+    EXPECT_EQ(pendulum::parse_angle("-pi/2"), -pi / 2);
 }
 
 TEST(Angle, RejectsWhatIsNotAnAngle) {
     for (const char* bad : {"", " ", "abc", "pi/0", "1e999", "inf", "nan", "1..2", "pi/", "(pi",
                             "2 3", "0x10", "1e", ".", "pideg deg", "1e308*10"}) {
-        EXPECT_THROW(cli::parse_angle(bad), std::invalid_argument) << "'" << bad << "'";
+        EXPECT_THROW(pendulum::parse_angle(bad), std::invalid_argument) << "'" << bad << "'";
     }
     try {
-        cli::parse_angle("pi/0");
+        pendulum::parse_angle("pi/0");
         FAIL();
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("'pi/0'"), std::string::npos);

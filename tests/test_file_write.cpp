@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstdio>
+
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -67,14 +70,34 @@ TEST(FileWrite, LongNamesAndLeftovers) {
     const std::string long_name = std::string(250, 'x') + ".png";  // 254 bytes: a name may have 255
     write_atomically(dir / long_name, "ok");
     EXPECT_EQ(slurp(dir / long_name), "ok");
-    // A temporary file that a killed run left long ago goes; a fresh one (another run's) stays.
-    std::ofstream(dir / ".pf-AbC123") << "stale";
-    std::ofstream(dir / ".pf-XyZ789") << "in use";
+    // A temporary that a killed run left long ago while writing f.svg goes when f.svg is
+    // written again; a fresh one (another run's), one of another file, and a user's file
+    // that merely looks like one stay.
+    const auto fnv1a = [](const std::string& name) {
+        std::uint64_t h = 0xcbf29ce484222325ULL;
+        for (const char c : name) {
+            h ^= static_cast<unsigned char>(c);
+            h *= 0x100000001b3ULL;
+        }
+        char hex[17];
+        std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+        return std::string(hex);
+    };
+    const std::string ours = ".pendulum-figures-" + fnv1a("f.svg") + "-";
+    const std::string other = ".pendulum-figures-" + fnv1a("g.svg") + "-";
     const auto old = fs::file_time_type::clock::now() - std::chrono::hours(2);
-    fs::last_write_time(dir / ".pf-AbC123", old);
+    for (const std::string& name : {ours + "AbC123", ours + "XyZ789", other + "AbC123", std::string(".pf-notes1"),
+                                   std::string(".pf-AbC123"), ours + "AbC12"}) {
+        std::ofstream(dir / name) << "x";
+        if (name != ours + "XyZ789") fs::last_write_time(dir / name, old);
+    }
     write_atomically(dir / "f.svg", "svg");
-    EXPECT_FALSE(fs::exists(dir / ".pf-AbC123"));
-    EXPECT_TRUE(fs::exists(dir / ".pf-XyZ789"));
+    EXPECT_FALSE(fs::exists(dir / (ours + "AbC123")));
+    EXPECT_TRUE(fs::exists(dir / (ours + "XyZ789")));
+    EXPECT_TRUE(fs::exists(dir / (other + "AbC123")));
+    EXPECT_TRUE(fs::exists(dir / ".pf-notes1"));
+    EXPECT_TRUE(fs::exists(dir / ".pf-AbC123"));
+    EXPECT_TRUE(fs::exists(dir / (ours + "AbC12")));
     EXPECT_THROW(write_atomically(dir, "x"), std::runtime_error);  // a directory
     fs::remove_all(dir);
 }

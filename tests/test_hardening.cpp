@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile input: deep nesting, malformed numbers, control characters, a bad
 // SOURCE_DATE_EPOCH, an unwritable standard output, many panels, too many amplitudes.
-#include "cli/angle.hpp"
+#include "cli/lists.hpp"
+#include "pendulum/angle.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
@@ -21,7 +22,7 @@ using test_support::temp_dir;
 
 std::string why(const std::string& text) {
     try {
-        pendulum::cli::parse_angle(text);
+        pendulum::parse_angle(text);
     } catch (const std::invalid_argument& e) {
         return e.what();
     }
@@ -35,7 +36,7 @@ TEST(Hardening, DeepNestingIsAnErrorNotACrash) {
         EXPECT_NE(why(text).find("nested too deeply"), std::string::npos) << text.size();
         EXPECT_LT(why(text).size(), 300u);  // the value is shown by its ends
     }
-    EXPECT_EQ(pendulum::cli::parse_angle(std::string(100, '(') + "1" + std::string(100, ')')), 1.0);
+    EXPECT_EQ(pendulum::parse_angle(std::string(100, '(') + "1" + std::string(100, ')')), 1.0);
     const auto r = run_cli("eval --theta0 '" + std::string(40000, '(') + "1'");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("nested too deeply"), std::string::npos);
@@ -45,8 +46,8 @@ TEST(Hardening, NumbersNeedADigit) {
     for (const char* text : {".e5", "1+.e5", ".", "-.e-3", "2*.E1"}) {
         EXPECT_NE(why(text).find("is not a number"), std::string::npos) << text << ": " << why(text);
     }
-    EXPECT_EQ(pendulum::cli::parse_angle("1.e-1"), 0.1);
-    EXPECT_EQ(pendulum::cli::parse_angle(".5e1"), 5.0);
+    EXPECT_EQ(pendulum::parse_angle("1.e-1"), 0.1);
+    EXPECT_EQ(pendulum::parse_angle(".5e1"), 5.0);
 }
 
 TEST(Hardening, ControlCharactersAreShownEscaped) {

@@ -176,3 +176,13 @@ TEST(Labels, SameBytesAloneOrInABatchInEveryFormat) {
     }
     fs::remove_all(specs);
 }
+
+TEST(Labels, InvalidUtf8IsRefused) {
+    // A lone lead byte, a stray continuation byte, an overlong form, a surrogate, a truncated end.
+    for (const std::string& bad : {std::string("$c'\xc8'_1$"), std::string("a\x80"), std::string("\xc0\xaf"),
+                                  std::string("\xed\xa0\x80"), std::string("ab\xe2\x82")}) {
+        EXPECT_THROW(plot::tex_to_markup(bad), std::invalid_argument);
+        EXPECT_THROW(plot::tex_to_latex(bad), std::invalid_argument);
+    }
+    EXPECT_NO_THROW(plot::tex_to_markup("\xcf\x91 \xe2\x80\x93 \xf0\x9f\x98\x80"));  // ϑ, en dash, an emoji
+}

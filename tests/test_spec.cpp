@@ -168,7 +168,7 @@ TEST(Spec, WrongTypesAndStructure) {
                   .find("'orders' must satisfy"),
               std::string::npos);
     EXPECT_NE(problems_of("[[panel]]\nplot = \"phase\"\ntheta0 = 1\nmethods = [\"exact\"]\npaper_file = \"../x\"\n")
-                  .find("plain file name"),
+                  .find("without a directory"),
               std::string::npos);
     EXPECT_NE(problems_of("[[panel]]\nplot = \"period\"\nmethods = [\"exact\"]\n[[panel.line]]\nlabel = \"x\"\n")
                   .find("either x = ... or y = ..."),

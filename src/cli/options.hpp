@@ -3,7 +3,8 @@
 // What several commands parse and check alike: lists of values, amplitudes, orders,
 // methods, the output directory and the theme.
 
-#include "cli/angle.hpp"
+#include "cli/lists.hpp"
+#include "pendulum/angle.hpp"
 #include "cli/errors.hpp"
 #include "figures/spec.hpp"
 #include "pendulum/amplitude.hpp"

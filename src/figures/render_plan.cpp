@@ -4,6 +4,7 @@
 #include "figures/spec_build.hpp"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 
 namespace figures {
@@ -69,9 +70,52 @@ std::string render_one(const entry& e, const build_options& build, const plot::t
     return plot::render(figures::build(e, one), theme, format, output);
 }
 
+void check_distinct_outputs(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
+                            const std::vector<std::string>& formats, const std::filesystem::path& dir, bool at) {
+    // Every file the render writes, with what writes it.
+    std::map<std::filesystem::path, std::string> outputs;
+    const auto add = [&](const std::filesystem::path& path, const std::string& what) {
+        const auto [it, fresh] = outputs.emplace(path.lexically_normal(), what);
+        if (!fresh) {
+            throw bad_input("two outputs of this render are " + path.string() + ": " + it->second + " and " + what +
+                            "; give them different names (paper_file, or the spec file's name)");
+        }
+    };
+    for (const auto& f : stills) {
+        const std::string what = f.panel < 0 ? "figure '" + f.figure->id + "'"
+                                             : "figure '" + f.figure->id + "' panel " + std::to_string(f.panel + 1);
+        add(f.path, what);
+        std::string ext = f.path.extension().string();
+        if (!ext.empty()) ext.erase(0, 1);
+        const plot::format_row& row = plot::find_format(ext);
+        if (!row.graphics.empty()) {
+            auto drawing = f.path;
+            add(drawing.replace_extension(row.graphics), what + " (the drawing under its " + ext + ")");
+        }
+    }
+    for (const auto& m : animations) {
+        for (const auto& f : formats) {
+            const plot::format_row& row = plot::find_format(f);
+            const std::string what = "animation '" + m.figure->id + "' as " + f;
+            if (!at && row.animate) {
+                std::string previous;
+                for (int i = m.first; i <= m.last; ++i) {
+                    const std::string name = row.frame_file(m.figure->id, i, m.plan.frames);
+                    if (name != previous) add(dir / name, what);
+                    previous = name;
+                }
+                continue;
+            }
+            add(dir / (m.figure->id + "." + f), what);
+            if (!row.graphics.empty()) add(dir / (m.figure->id + "." + std::string(row.graphics)), what);
+        }
+    }
+}
+
 void write_render(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
                   const std::vector<std::string>& formats, const std::filesystem::path& dir,
                   const build_options& build, const render_style& style, std::optional<double> at) {
+    check_distinct_outputs(stills, animations, formats, dir, at.has_value());
     if (!stills.empty()) write_figures(stills, build, style.still_theme, style.still);
     for (const auto& m : animations) {
         for (const auto& f : formats) {

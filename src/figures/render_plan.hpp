@@ -54,7 +54,13 @@ struct animation_job {
     int last = 0;                   ///< the last frame to write
 };
 
-/// Writes a render: the still figures' files, then each animation in each format, all its
+/// Throws bad_input, before any work, if two outputs of a render would be the same file:
+/// two panels with one paper_file, a spec's paper_file equal to a built-in's, a figure's
+/// overlay drawing and another figure's file, a frame of a PNG sequence and a still figure.
+void check_distinct_outputs(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
+                            const std::vector<std::string>& formats, const std::filesystem::path& dir, bool at);
+
+/// Writes a render (after check_distinct_outputs): the still figures' files, then each animation in each format, all its
 /// frames where the format holds an animation, otherwise one frame, at t/T = `at` if given
 /// (in every format) or the first frame written.
 void write_render(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,

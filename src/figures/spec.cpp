@@ -8,6 +8,8 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -245,8 +247,8 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
     p.x_label = r.label(t, "x_label");
     p.y_label = r.label(t, "y_label");
     if (auto v = r.string(t, "paper_file")) {
-        if (v->empty() || v->find_first_of("/\\") != std::string::npos || (*v)[0] == '.') {
-            r.problem(*t.get("paper_file"), "'paper_file' must be a plain file name without a directory");
+        if (const std::string why = file_name_problem(*v); !why.empty()) {
+            r.problem(*t.get("paper_file"), "'paper_file' " + why);
         } else {
             p.paper_file = *v;
         }
@@ -301,6 +303,27 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
 }
 
 }  // namespace
+
+std::string file_name_problem(std::string_view name) {
+    static constexpr std::string_view allowed_characters = "letters, digits and . _ + -";
+    if (name.empty()) return "is empty; give a file name such as Fig.C1.Lowest";
+    if (name.size() > max_file_name_bytes) {
+        return "has " + std::to_string(name.size()) + " characters; at most " + std::to_string(max_file_name_bytes);
+    }
+    for (const char c : name) {
+        const bool ok = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '+' || c == '-';
+        if (!ok) {
+            const auto u = static_cast<unsigned char>(c);
+            char shown[16];
+            std::snprintf(shown, sizeof shown, u < 0x20 || u >= 0x7f ? "\\x%02x" : "'%c'", u);
+            return std::string("has the character ") + shown + ": a file name here is " + std::string(allowed_characters) +
+                   ", without a directory";
+        }
+    }
+    if (name[0] == '.' || name[0] == '-') return "must not start with '" + std::string(1, name[0]) + "'";
+    if (name.find("..") != std::string_view::npos) return "must not contain '..'";
+    return {};
+}
 
 spec_error::spec_error(std::vector<spec_problem> problems)
     : bad_input(join_problems(problems)), problems_(std::move(problems)) {}

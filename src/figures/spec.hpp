@@ -139,6 +139,13 @@ figure_spec parse_spec(std::string_view text, const std::string& file);
 /// Reads a spec file; throws spec_error for a bad spec, std::runtime_error if unreadable.
 figure_spec load_spec(const std::filesystem::path& path);
 
+/// The longest file name a spec may give (paper_file), in bytes.
+inline constexpr std::size_t max_file_name_bytes = 100;
+
+/// Why `name` is not a file name a spec may give (empty if it is): letters, digits and
+/// . _ + - only, no directory, not starting with . or -, no "..", at most max_file_name_bytes.
+std::string file_name_problem(std::string_view name);
+
 /// The closest of `names` to `word` when it is a likely misspelling, else empty.
 std::string suggest(std::string_view word, const std::vector<std::string>& names);
 

@@ -150,27 +150,36 @@ void write_gif_animation(const animation_frames& frames, const theme& th, const 
         std::string().swap(p);  // each part's memory goes as soon as it is copied
     }
     bytes += ';';
-    write_atomically(dir / (id + ".gif"), bytes);
+    write_atomically(dir / gif_animation_file(id, frames.first, frames.count), bytes);
 }
 
 void write_pdf_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
                          const std::string& id, const output_options&) {
     const std::string bytes =
         render_pdf_pages(frames.last - frames.first + 1, [&](int i) { return frames.frame(frames.first + i); }, th);
-    write_atomically(dir / (id + ".pdf"), bytes);
+    write_atomically(dir / pdf_animation_file(id, frames.first, frames.count), bytes);
 }
 
 void write_png_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
                          const std::string& id, const output_options& options) {
-    const int digits = std::max(4, static_cast<int>(std::to_string(frames.count).size()));
     in_order<int>(frames.first, frames.last,
                   [&](int i) {
-                      char number[16];
-                      std::snprintf(number, sizeof number, "-%0*d.png", digits, i + 1);
-                      write_atomically(dir / (id + number), render(frames.frame(i), th, "png", output_options{options.dpi}));
+                      write_atomically(dir / png_frame_file(id, i, frames.count),
+                                       render(frames.frame(i), th, "png", output_options{options.dpi}));
                       return i;
                   },
                   [](int, int) {});
+}
+
+std::string gif_animation_file(const std::string& id, int, int) { return id + ".gif"; }
+
+std::string pdf_animation_file(const std::string& id, int, int) { return id + ".pdf"; }
+
+std::string png_frame_file(const std::string& id, int frame, int count) {
+    const std::size_t digits = std::max<std::size_t>(4, std::to_string(count).size());
+    std::string number = std::to_string(frame + 1);
+    if (number.size() < digits) number.insert(0, digits - number.size(), '0');
+    return id + "-" + number + ".png";
 }
 
 }  // namespace plot

@@ -22,4 +22,14 @@ void write_pdf_animation(const animation_frames& frames, const theme& th, const 
 void write_png_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
                          const std::string& id, const output_options& options);
 
+/// ID.gif, the file of every frame.
+std::string gif_animation_file(const std::string& id, int frame, int count);
+
+/// ID.pdf, the file of every frame.
+std::string pdf_animation_file(const std::string& id, int frame, int count);
+
+/// ID-0001.png ...: frame i's file, numbered from 1 with at least four digits, as many as
+/// the largest number needs.
+std::string png_frame_file(const std::string& id, int frame, int count);
+
 }  // namespace plot

@@ -8,11 +8,14 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace plot {
 
@@ -60,18 +63,38 @@ fs::path resolve_links(const fs::path& path) {
     fail(path, ELOOP);
 }
 
-/// Temporary files are named ".pf-XXXXXX" beside their target.
-constexpr const char* temp_prefix = ".pf-";
+/// Temporary files are named ".pendulum-figures-H-XXXXXX" beside their target, H the hash
+/// of the target's name: a name no one else would choose, and one that says whose it is.
+constexpr std::string_view temp_prefix = ".pendulum-figures-";
 
-/// Removes our temporary files in dir that a killed run left more than an hour ago (a
-/// running writer's are younger).
-void remove_stale_temporaries(const fs::path& dir) {
+/// FNV-1a of the name, as 16 hex digits: the same on every machine and in every run.
+std::string name_hash(const std::string& name) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    for (const char c : name) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 0x100000001b3ULL;
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+    return hex;
+}
+
+/// The start of the names of target's temporaries, up to mkstemp's six characters.
+std::string temp_stem(const fs::path& target) {
+    return std::string(temp_prefix) + name_hash(target.filename().string()) + "-";
+}
+
+/// Removes the temporaries of this target that a killed run left more than an hour ago (a
+/// running writer's are younger). Only a regular file named as this program names the
+/// temporaries of this very target is removed: nothing a user made.
+void remove_stale_temporaries(const fs::path& dir, const fs::path& target) {
     DIR* d = ::opendir(dir.c_str());
     if (!d) return;
+    const std::string stem = temp_stem(target);
     const std::time_t now = std::time(nullptr);
     while (const dirent* e = ::readdir(d)) {
         const std::string name = e->d_name;
-        if (name.size() != std::strlen(temp_prefix) + 6 || name.rfind(temp_prefix, 0) != 0) continue;
+        if (name.size() != stem.size() + 6 || name.rfind(stem, 0) != 0) continue;
         const fs::path p = dir / name;
         struct stat st {};
         if (::lstat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode) && now - st.st_mtime > 3600) ::unlink(p.c_str());
@@ -79,25 +102,32 @@ void remove_stale_temporaries(const fs::path& dir) {
     ::closedir(d);
 }
 
-}  // namespace
+/// A file written under a temporary name and on disk, waiting to take its name; or a
+/// device, FIFO or socket, written through in place.
+struct prepared_file {
+    fs::path path;    ///< as given, for messages
+    fs::path target;  ///< what the path leads to
+    std::string temp; ///< the temporary's name; empty when written in place
+};
 
-void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
-    const fs::path target = resolve_links(path);
+/// Writes bytes where `path` leads, under a temporary name, fsynced; the caller renames it.
+prepared_file prepare(const fs::path& path, const std::string& bytes) {
+    prepared_file out{path, resolve_links(path), {}};
     struct stat st {};
-    const bool exists = ::stat(target.c_str(), &st) == 0;
+    const bool exists = ::stat(out.target.c_str(), &st) == 0;
     if (exists && S_ISDIR(st.st_mode)) fail(path, EISDIR);
     if (exists && !S_ISREG(st.st_mode)) {
         // A device, FIFO or socket: written through, in place, never replaced.
-        const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+        const int fd = ::open(out.target.c_str(), O_WRONLY | O_CLOEXEC);
         if (fd < 0) fail(path, errno);
         const int e = write_all(fd, bytes);
         if (::close(fd) != 0 && e == 0) fail(path, errno);
         if (e != 0) fail(path, e);
-        return;
+        return out;
     }
-    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    remove_stale_temporaries(dir);
-    std::string temp = (dir / (std::string(temp_prefix) + "XXXXXX")).string();
+    const fs::path dir = out.target.has_parent_path() ? out.target.parent_path() : fs::path(".");
+    remove_stale_temporaries(dir, out.target);
+    std::string temp = (dir / (temp_stem(out.target) + "XXXXXX")).string();
     const int fd = ::mkstemp(temp.data());
     if (fd < 0) fail(path, errno);
     const auto give_up = [&](int e) {
@@ -124,10 +154,47 @@ void write_atomically(const std::filesystem::path& path, const std::string& byte
         ::unlink(temp.c_str());
         fail(path, e);
     }
-    if (std::rename(temp.c_str(), target.c_str()) != 0) {
+    out.temp = std::move(temp);
+    return out;
+}
+
+/// Gives a prepared file its name.
+void commit(prepared_file& f) {
+    if (f.temp.empty()) return;
+    if (std::rename(f.temp.c_str(), f.target.c_str()) != 0) {
         const int e = errno;
-        ::unlink(temp.c_str());
-        fail(path, e);
+        ::unlink(f.temp.c_str());
+        f.temp.clear();
+        fail(f.path, e);
+    }
+    f.temp.clear();
+}
+
+/// Removes what a failed write prepared and did not rename.
+void discard(std::vector<prepared_file>& files) {
+    for (auto& f : files) {
+        if (!f.temp.empty()) ::unlink(f.temp.c_str());
+        f.temp.clear();
+    }
+}
+
+}  // namespace
+
+void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
+    prepared_file f = prepare(path, bytes);
+    commit(f);
+}
+
+void write_atomically(const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
+    // Every file is on disk under its temporary name before the first takes its name, so
+    // the files change together but for the few microseconds of the renames, in order.
+    std::vector<prepared_file> ready;
+    try {
+        for (const auto& [path, bytes] : files) ready.push_back(prepare(path, bytes));
+        for (auto& f : ready) commit(f);
+    } catch (...) {
+        discard(ready);
+        throw;
     }
 }
 

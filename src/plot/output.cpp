@@ -317,22 +317,23 @@ std::string render_raster(const figure& fig, const theme& th, const output_optio
 // Every output format: one row each, with all that the format means. A format is written
 // by its row's functions, so a format without a writer cannot be listed.
 //  name, description,
-//  still writer, overlay's graphics format, writer under an overlay, raster, animation writer, what it animates as
+//  still writer, overlay's graphics format, writer under an overlay, raster, animation writer, what it animates as,
+//  the file of an animation's frame
 constexpr format_row formats[] = {
     {"png", "raster at --dpi",
-     render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)"},
+     render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)", png_frame_file},
     {"pdf", "vector, fonts embedded",
-     write_pdf, {}, render_pdf, false, write_pdf_animation, "a PDF of one page per frame"},
+     write_pdf, {}, render_pdf, false, write_pdf_animation, "a PDF of one page per frame", pdf_animation_file},
     {"svg", "vector, for the web",
-     write_svg, {}, nullptr, false, nullptr, {}},
+     write_svg, {}, nullptr, false, nullptr, {}, nullptr},
     {"eps", "vector, for latex and dvips",
-     write_eps, {}, render_eps, false, nullptr, {}},
+     write_eps, {}, render_eps, false, nullptr, {}, nullptr},
     {"gif", "animation that loops; one frame for a still figure",
-     render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF"},
+     render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF", gif_animation_file},
     {"pdf_tex", "ID.pdf without text and ID.pdf_tex setting the text in the document's fonts (pdflatex)",
-     refuse_one_stream, "pdf", nullptr, false, nullptr, {}},
+     refuse_one_stream, "pdf", nullptr, false, nullptr, {}, nullptr},
     {"eps_tex", "ID.eps without text and ID.eps_tex setting the text in the document's fonts (latex, dvips)",
-     refuse_one_stream, "eps", nullptr, false, nullptr, {}},
+     refuse_one_stream, "eps", nullptr, false, nullptr, {}, nullptr},
 };
 
 }  // namespace
@@ -397,13 +398,23 @@ std::string render(const figure& fig, const theme& th, std::string_view format, 
     return find_format(format).write(fig, th, options);
 }
 
-bool write_if_changed(const std::filesystem::path& path, const std::string& bytes) {
+namespace {
+
+/// True if path is a regular file that holds exactly these bytes.
+bool holds(const std::filesystem::path& path, const std::string& bytes) {
     std::error_code ec;
-    if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) == bytes.size() && !ec) {
-        std::ifstream in(path, std::ios::binary);
-        std::string old(bytes.size(), '\0');
-        if (in.read(old.data(), static_cast<std::streamsize>(old.size())) && old == bytes) return false;
+    if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) != bytes.size() || ec) {
+        return false;
     }
+    std::ifstream in(path, std::ios::binary);
+    std::string old(bytes.size(), '\0');
+    return in.read(old.data(), static_cast<std::streamsize>(old.size())) && old == bytes;
+}
+
+}  // namespace
+
+bool write_if_changed(const std::filesystem::path& path, const std::string& bytes) {
+    if (holds(path, bytes)) return false;
     write_atomically(path, bytes);
     return true;
 }
@@ -437,12 +448,15 @@ void save_unnamed(const figure& fig, const theme& th, const std::filesystem::pat
     };
     const format_row& row = find_format(ext);
     if (!row.graphics.empty()) {
-        // ID.pdf_tex inputs ID.pdf: the drawing first, so the text never refers to a missing file.
         auto graphics = path;
         graphics.replace_extension(row.graphics);
         const overlay_files files = render_overlay(fig, th, row.graphics, graphics.filename().string(), options);
-        write(graphics, files.graphics);
-        write(path, files.tex);
+        // The pair changes together: both on disk before either is renamed, the drawing
+        // first, so that the text never refers to a missing file.
+        std::vector<std::pair<std::filesystem::path, std::string>> changed;
+        if (options.force || !holds(graphics, files.graphics)) changed.emplace_back(graphics, files.graphics);
+        if (options.force || !holds(path, files.tex)) changed.emplace_back(path, files.tex);
+        write_atomically(changed);
         return;
     }
     write(path, row.write(fig, th, options));

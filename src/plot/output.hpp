@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace plot {
@@ -86,6 +87,10 @@ struct format_row {
     bool raster;                   ///< pixels at --dpi: its size is checked before any work
     animation_writer animate;      ///< writes all frames of an animation; null: an animation is one frame
     std::string_view animation;    ///< what animate writes, for help: "a looping GIF"
+    /// The name of the file that frame i (from 0) of an animation of `count` frames goes to:
+    /// ID.EXT for a format that holds every frame in one file, ID-0001.EXT ... for a
+    /// sequence; null where animate is.
+    std::string (*frame_file)(const std::string& id, int frame, int count);
 };
 
 /// A LaTeX overlay's two files: the drawing without text, and the picture that sets the text.
@@ -126,6 +131,12 @@ std::string render(const figure& fig, const theme& th, std::string_view format, 
 /// Writes bytes to path through a temporary file in the same directory and a rename, so the
 /// file is either the old one or the complete new one. Throws std::runtime_error naming the path.
 void write_atomically(const std::filesystem::path& path, const std::string& bytes);
+
+/// Writes the files as write_atomically does one, each complete under a temporary name and
+/// on disk before the first is renamed, then renamed in order: a pair that belongs together
+/// (a LaTeX overlay and its drawing) changes together. Throws std::runtime_error naming
+/// the path that failed; then no file has changed unless its rename had already been done.
+void write_atomically(const std::vector<std::pair<std::filesystem::path, std::string>>& files);
 
 /// Writes bytes to path unless it is a regular file that already holds them (so its
 /// modification time stays, and make does not rebuild what depends on it); true if written.

@@ -1,16 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "pendulum/angle.hpp"
-
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace pendulum::cli {
-
-using pendulum::parse_angle;
-using pendulum::parse_expression;
 
 /// Splits a comma-separated list; empty items are kept so that they can be reported.
 std::vector<std::string> split_list(std::string_view text);

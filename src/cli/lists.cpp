@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "cli/angle.hpp"
+#include "cli/lists.hpp"
 
 namespace pendulum::cli {
 

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// libFuzzer harness: any bytes as a spec label give an error, or markup that Pango accepts
+// and LaTeX that holds only the characters and control sequences the engine draws, with
+// balanced braces and dollars (so that no label can reach into a document that \inputs it).
+#include "plot/tex_markup.hpp"
+
+#include <pango/pango.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace {
+
+/// What an overlay's text may contain after a backslash.
+bool allowed(const std::string& name) {
+    static const std::set<std::string> names = {
+        "alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta", "vartheta", "iota",
+        "kappa", "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "varphi", "chi", "psi",
+        "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega", "cdot", "times",
+        "pm", "mp", "le", "leq", "ge", "geq", "approx", "sim", "infty", "circ", "prime", "ldots", "dots", "to",
+        "propto", "partial", "ln", "log", "exp", "sin", "cos", "tan", "lvert", "rvert", "dot", "ddot", "quad",
+        "qquad", "mathrm", "mathit", "text", "textrm", "operatorname", "textbackslash", "textbar", "textless",
+        "textgreater", "backslash", "hat", "ss", "ae", "AE", "o", "O", "oe", "OE", "l", "L", "i", "c", "H", "v",
+        "u", "r", ",", ":", ">", ";", "!", " ", "{", "}", "%", "$", "&", "#", "_", "|", "^", "~", "`", "'", "\"",
+        "=", "."};
+    return names.count(name) > 0;
+}
+
+void check_latex(const std::string& latex) {
+    int braces = 0;
+    int dollars = 0;
+    for (std::size_t i = 0; i < latex.size(); ++i) {
+        const auto c = static_cast<unsigned char>(latex[i]);
+        if (c < 0x20 || c >= 0x7f) std::abort();  // only printable ASCII reaches LaTeX
+        if (latex[i] == '\\') {
+            if (i + 1 >= latex.size()) std::abort();  // a trailing backslash escapes what follows
+            std::size_t end = i + 1;
+            if (std::isalpha(static_cast<unsigned char>(latex[end]))) {
+                while (end < latex.size() && std::isalpha(static_cast<unsigned char>(latex[end]))) ++end;
+            } else {
+                ++end;
+            }
+            if (!allowed(latex.substr(i + 1, end - i - 1))) std::abort();
+            i = end - 1;
+            continue;
+        }
+        if (latex[i] == '{') ++braces;
+        if (latex[i] == '}' && --braces < 0) std::abort();
+        if (latex[i] == '$') ++dollars;
+    }
+    if (braces != 0 || dollars % 2 != 0) std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string_view tex(reinterpret_cast<const char*>(data), size);
+    std::string markup;
+    try {
+        markup = plot::tex_to_markup(tex);
+    } catch (const std::invalid_argument&) {
+        return 0;  // refused: documented
+    }
+    // What is drawn is markup Pango reads (or invalid UTF-8 that the spec reader refuses).
+    if (g_utf8_validate(markup.data(), static_cast<gssize>(markup.size()), nullptr) &&
+        !pango_parse_markup(markup.c_str(), -1, 0, nullptr, nullptr, nullptr, nullptr)) {
+        std::abort();
+    }
+    try {
+        check_latex(plot::tex_to_latex(tex));
+    } catch (const std::invalid_argument&) {
+        // A character LaTeX has no form for: the overlay names it when one is written.
+    }
+    return 0;
+}

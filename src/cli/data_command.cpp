@@ -28,7 +28,7 @@ std::string figure_data(const std::string& id, const std::string& theta0) {
             throw usage_error("--theta0 applies to figures with " + figures::plot_names(true, "or") + " panels, "
                               "not to " + e.id);
         }
-        build.amplitudes = parse_amplitudes(theta0);
+        build.amplitudes = parse_amplitudes(theta0, figures::max_amplitudes_per_panel);
     }
     return figures::figure_csv(figures::build(e, build));
 }

@@ -22,10 +22,34 @@ std::vector<double> parse_amplitude_values(const std::string& given) {
     return values;
 }
 
-std::vector<figures::amplitude> parse_amplitudes(const std::string& given) {
+std::vector<figures::amplitude> parse_amplitudes(const std::string& given, std::size_t most) {
     std::vector<figures::amplitude> values;
-    for_each_amplitude(given, [&](const std::string& item, double v) { values.push_back({item, v}); });
+    for_each_amplitude(given, [&](const std::string& item, double v) {
+        if (values.size() == most) {
+            throw usage_error("--theta0: more than " + std::to_string(most) + " amplitudes; a figure's panel takes at most " +
+                              std::to_string(most));
+        }
+        values.push_back({item, v});
+    });
     return values;
+}
+
+bool read_line(std::istream& in, std::string& line) {
+    line.clear();
+    std::streambuf* buf = in.rdbuf();
+    bool any = false;
+    for (;;) {
+        const auto c = buf->sbumpc();
+        if (c == std::char_traits<char>::eof()) {
+            if (!any) in.setstate(std::ios::eofbit | std::ios::failbit);
+            return any;
+        }
+        any = true;
+        if (c == '\n') return true;
+        line += static_cast<char>(c);
+        // Past the limit the caller refuses the line: reading on could take forever (/dev/zero).
+        if (line.size() > max_list_line_bytes) return true;
+    }
 }
 
 method_choice parse_method_option(const std::string& option, const std::string& text) {

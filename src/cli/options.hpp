@@ -13,7 +13,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <fstream>
+#include <limits>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -26,6 +28,14 @@ extern const char* const angle_help;
 /// Refuses an empty value (CLI11 validator): '' is never a figure, directory or amplitude.
 extern const CLI::Validator non_empty;
 
+/// The longest line of a list file (@FILE, -): far more than any list of amplitudes needs.
+inline constexpr std::size_t max_list_line_bytes = 65536;
+
+/// Reads a line as std::getline does, but stops after max_list_line_bytes + 1 bytes (a
+/// line that long is refused by the caller): a file of no newlines, /dev/zero, takes no
+/// more time or memory than that.
+bool read_line(std::istream& in, std::string& line);
+
 /// Calls take(item) for each item of a list option: its text, or the lines (each
 /// comma-separated, # comments) of FILE for @FILE and of standard input for -, read as
 /// they come, so that a million amplitudes need no more memory than their values.
@@ -37,12 +47,22 @@ void for_each_item(const std::string& text, const std::string& option, Take take
     }
     std::ifstream file;
     if (text != "-") {
+        std::error_code ec;
+        if (std::filesystem::is_directory(text.substr(1), ec)) {
+            throw usage_error(option + " " + text + ": '" + text.substr(1) + "' is a directory, not a list");
+        }
         file.open(text.substr(1), std::ios::binary);
         if (!file) throw usage_error(option + " " + text + ": cannot read '" + text.substr(1) + "'");
     }
     std::istream& in = text == "-" ? std::cin : file;
     bool any = false;
-    for (std::string line; std::getline(in, line);) {
+    std::size_t number = 0;
+    for (std::string line; read_line(in, line);) {
+        ++number;
+        if (line.size() > max_list_line_bytes) {
+            throw usage_error(option + " " + text + ": line " + std::to_string(number) + " is longer than " +
+                              std::to_string(max_list_line_bytes) + " bytes");
+        }
         line = line.substr(0, line.find('#'));
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
         for (auto& item : split_list(line)) {
@@ -74,8 +94,10 @@ void for_each_amplitude(const std::string& given, Take take) {
 /// The values of --theta0, checked (a million of them take 8 MB).
 std::vector<double> parse_amplitude_values(const std::string& given);
 
-/// Amplitudes as typed and their values; figure titles show them as typed.
-std::vector<figures::amplitude> parse_amplitudes(const std::string& given);
+/// Amplitudes as typed and their values; figure titles show them as typed. More than
+/// `most` is bad input (the reading stops there).
+std::vector<figures::amplitude> parse_amplitudes(const std::string& given,
+                                                 std::size_t most = std::numeric_limits<std::size_t>::max());
 
 /// Parses a method name (NAME or NAME:N) for the option `option`.
 method_choice parse_method_option(const std::string& option, const std::string& text);

@@ -102,7 +102,7 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
             throw usage_error("--theta0 applies to figures with " + figures::plot_names(true, "or") + " panels, "
                               "and none was chosen");
         }
-        build.amplitudes = parse_amplitudes(o.theta0);
+        build.amplitudes = parse_amplitudes(o.theta0, figures::max_amplitudes_per_panel);
     }
     const figures::render_style style{theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes},
                                       moving_theme,

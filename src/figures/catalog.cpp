@@ -2,6 +2,7 @@
 #include "figures/catalog.hpp"
 
 #include "figures/builtin.hpp"
+#include "figures/input_file.hpp"
 #include "figures/spec_build.hpp"
 
 #include <algorithm>
@@ -42,12 +43,8 @@ const entry& find(std::string_view id) {
 entry load(std::string_view id_or_file) {
     if (!id_or_file.ends_with(".toml")) return find(id_or_file);
     const std::filesystem::path path(id_or_file);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read spec file '" + path.string() + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
     entry e;
-    e.source = text.str();
+    e.source = read_input_file(path, "spec file");
     e.spec = parse_spec(e.source, path.string());
     e.id = e.spec.id;
     return e;

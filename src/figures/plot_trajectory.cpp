@@ -32,6 +32,7 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
         return s;
     };
     const double span = hi - lo;
+    // 300 points and 24 circles a period (the spec reader bounds the periods).
     const int circles = std::max(2, static_cast<int>(std::lround(24 * span)));
     const int points = std::max(300, static_cast<int>(std::lround(300 * span)));
     plot::panel panel;

@@ -2,6 +2,8 @@
 #include "figures/render_plan.hpp"
 
 #include "figures/spec_build.hpp"
+#include "pendulum/amplitude.hpp"
+#include "plot/frames.hpp"
 
 #include <algorithm>
 #include <map>
@@ -112,10 +114,30 @@ void check_distinct_outputs(const std::vector<figure_file>& stills, const std::v
     }
 }
 
+void check_animation_work(const std::vector<animation_job>& animations, const std::vector<std::string>& formats,
+                          const build_options& build, const render_style& style) {
+    for (const auto& m : animations) {
+        const build_options grid{build.amplitudes, style.moving_theme.panel_width_cm, style.moving_theme.panel_aspect};
+        const auto [w, h] = plot::pixel_size(figure_grid(m.figure->spec, grid), style.moving_theme, style.moving.dpi);
+        const double frames = m.last - m.first + 1;
+        const double pixels = frames * w * h;
+        for (const auto& f : formats) {
+            const plot::format_row& row = plot::find_format(f);
+            if (!row.raster || !row.animate || pixels <= max_animation_pixels) continue;
+            throw bad_input(m.figure->id + "." + f + ": " + pendulum::format_double(frames) + " frames of " +
+                            std::to_string(w) + " x " + std::to_string(h) + " pixels are " +
+                            pendulum::format_double(pixels) + " pixels; an animation has at most " +
+                            pendulum::format_double(max_animation_pixels) +
+                            " (lower --dpi, fewer frames with --frames, or a lower fps or duration)");
+        }
+    }
+}
+
 void write_render(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
                   const std::vector<std::string>& formats, const std::filesystem::path& dir,
                   const build_options& build, const render_style& style, std::optional<double> at) {
     check_distinct_outputs(stills, animations, formats, dir, at.has_value());
+    if (!at) check_animation_work(animations, formats, build, style);
     if (!stills.empty()) write_figures(stills, build, style.still_theme, style.still);
     for (const auto& m : animations) {
         for (const auto& f : formats) {

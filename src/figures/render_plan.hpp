@@ -60,7 +60,15 @@ struct animation_job {
 void check_distinct_outputs(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
                             const std::vector<std::string>& formats, const std::filesystem::path& dir, bool at);
 
-/// Writes a render (after check_distinct_outputs): the still figures' files, then each animation in each format, all its
+/// The most pixels an animation's raster frames add up to: five minutes of 1080p at 30 fps.
+inline constexpr double max_animation_pixels = 2e10;
+
+/// Throws bad_input, before any work, if the frames to write of an animation in a raster
+/// format add up to more than max_animation_pixels.
+void check_animation_work(const std::vector<animation_job>& animations, const std::vector<std::string>& formats,
+                          const build_options& build, const render_style& style);
+
+/// Writes a render (after check_distinct_outputs and check_animation_work): the still figures' files, then each animation in each format, all its
 /// frames where the format holds an animation, otherwise one frame, at t/T = `at` if given
 /// (in every format) or the first frame written.
 void write_render(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,

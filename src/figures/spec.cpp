@@ -1,17 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/spec.hpp"
 
-#include "pendulum/angle.hpp"
+#include "figures/input_file.hpp"
 #include "figures/toml_reader.hpp"
 #include "pendulum/amplitude.hpp"
+#include "pendulum/angle.hpp"
 
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cstdio>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <fstream>
 #include <sstream>
 
@@ -162,6 +164,48 @@ void read_range(reader& r, const toml::table& t, const plot_row& plot, panel_spe
     p.range = v;
 }
 
+/// The work a panel asks for is bounded before any is done: amplitudes, methods, the
+/// iteration's orders on an amplitude axis, and the periods a trajectory draws.
+void check_costs(reader& r, const toml::table& t, const figure_spec& f, const panel_spec& p) {
+    const auto at = [&](std::string_view key) -> source_position {
+        const toml::node* n = t.get(key);
+        return n ? r.at(n->source()) : p.where;
+    };
+    if (p.theta0.size() > max_amplitudes_per_panel) {
+        r.problem(at("theta0"), "'theta0' lists " + std::to_string(p.theta0.size()) + " amplitudes; a panel takes at most " +
+                                    std::to_string(max_amplitudes_per_panel));
+    }
+    if (p.methods.size() > max_methods_per_panel) {
+        r.problem(at("methods"), "'methods' lists " + std::to_string(p.methods.size()) + " methods; a panel takes at most " +
+                                     std::to_string(max_methods_per_panel));
+    }
+    if (p.plot->amplitudes == amplitude_policy::none) {
+        // The iteration to order N at each of the axis' amplitudes: its cost grows with N.
+        int orders = 0;
+        for (const auto& m : p.methods) {
+            if (m.method.row->role == pendulum::method_role::iterated) orders += m.method.n;
+        }
+        if (orders > max_iteration_orders_per_panel) {
+            r.problem(at("methods"), "the orders of the order:N methods add up to " + std::to_string(orders) +
+                                         "; on an amplitude axis at most " +
+                                         std::to_string(max_iteration_orders_per_panel));
+        }
+    }
+    if (p.plot->range == range_kind::times && p.range) {
+        // The most periods the time range can hold, whatever the amplitude (T >= T0).
+        const double span = (*p.range)[1] - (*p.range)[0];
+        double periods = span;
+        if (p.time == time_unit::seconds && f.pendulum) {
+            periods = span / (2 * std::numbers::pi * std::sqrt(f.pendulum->length_m / f.pendulum->g));
+        }
+        if (!(periods <= max_periods_per_panel)) {
+            r.problem(at("range"), "'range' spans up to " + pendulum::format_double(periods) +
+                                       " periods; a trajectory panel draws at most " +
+                                       std::to_string(max_periods_per_panel));
+        }
+    }
+}
+
 std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figure_spec& f) {
     panel_spec p;
     p.where = r.at(t.source());
@@ -299,6 +343,7 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
             }
         }
     }
+    check_costs(r, t, f, p);
     return p;
 }
 
@@ -331,6 +376,8 @@ spec_error::spec_error(std::vector<spec_problem> problems)
 std::string suggest(std::string_view word, const std::vector<std::string>& names) {
     // Edit distance with transpositions (optimal string alignment); a name within a third of
     // the word's length (at least 1) is a likely typo.
+    // A word far longer than any name is no typo of one (and would cost length squared).
+    if (word.size() > 64) return {};
     std::string best;
     std::size_t best_d = std::max<std::size_t>(1, word.size() / 3) + 1;
     for (const auto& name : names) {
@@ -375,7 +422,7 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
             f.panel_width_cm = r.number(*t, "panel_width_cm", 1.0, 100.0);
             f.panel_aspect = r.number(*t, "panel_aspect", 0.1, 10.0);
             if (auto v = r.choice(*t, "legend", legend_modes)) f.legend = *v;
-            if (auto v = r.string(*t, "title")) f.title = *v;
+            if (auto v = r.label(*t, "title")) f.title = *v;
         } else {
             r.problem(*n, "'figure' must be a table: [figure]");
         }
@@ -418,8 +465,8 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
         r.problem(source_position{file, 0, 0}, "the spec has no [[panel]]");
     } else if (!list || !list->is_array_of_tables()) {
         r.problem(*panels, "panels are [[panel]] tables");
-    } else if (list->size() > 26) {
-        r.problem(*panels, "a figure has at most 26 panels, (a) to (z)");
+    } else if (list->size() > static_cast<std::size_t>(max_panels)) {
+        r.problem(*panels, "a figure has at most " + std::to_string(max_panels) + " panels, (a) to (z)");
     } else {
         for (const auto& e : *list) {
             if (auto p = read_panel(r, *e.as_table(), f)) f.panels.push_back(std::move(*p));
@@ -436,12 +483,7 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
 }
 
 figure_spec load_spec(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read spec '" + path.string() + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in.good() && !in.eof()) throw std::runtime_error("cannot read spec '" + path.string() + "'");
-    return parse_spec(text.str(), path.string());
+    return parse_spec(read_input_file(path, "spec file"), path.string());
 }
 
 }  // namespace figures

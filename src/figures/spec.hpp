@@ -139,6 +139,17 @@ figure_spec parse_spec(std::string_view text, const std::string& file);
 /// Reads a spec file; throws spec_error for a bad spec, std::runtime_error if unreadable.
 figure_spec load_spec(const std::filesystem::path& path);
 
+/// The most panels of a figure, (a) to (z).
+inline constexpr int max_panels = 26;
+/// The most amplitudes a panel takes (theta0, or --theta0 on the command line).
+inline constexpr std::size_t max_amplitudes_per_panel = 32;
+/// The most methods a panel takes.
+inline constexpr std::size_t max_methods_per_panel = 12;
+/// On an amplitude axis (period, coefficient), the most that the N of its order:N methods add up to.
+inline constexpr int max_iteration_orders_per_panel = 400;
+/// The most periods a trajectory panel's time range holds.
+inline constexpr int max_periods_per_panel = 100;
+
 /// The longest file name a spec may give (paper_file), in bytes.
 inline constexpr std::size_t max_file_name_bytes = 100;
 

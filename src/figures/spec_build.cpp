@@ -79,6 +79,10 @@ plot::label method_label(const pendulum::method_choice& m) { return plot::tex_la
 plot::figure figure_grid(const figure_spec& spec, const build_options& options) {
     const int n = static_cast<int>(panels_with(spec, options).size());
     if (n == 0) throw bad_input("figure '" + spec.id + "' has no panels");
+    if (n > max_panels) {
+        throw bad_input("figure '" + spec.id + "' would have " + std::to_string(n) +
+                        " panels (one per --theta0 amplitude); a figure has at most " + std::to_string(max_panels));
+    }
     plot::figure f;
     f.cols = std::min(spec.columns.value_or(3), n);
     f.rows = (n + f.cols - 1) / f.cols;

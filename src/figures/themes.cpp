@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/themes.hpp"
 
+#include "figures/input_file.hpp"
 #include "figures/toml_reader.hpp"
 
 #include <algorithm>
@@ -115,13 +116,7 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
     }
 }
 
-std::string read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read style file '" + path + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+std::string read_file(const std::string& path) { return read_input_file(path, "style file"); }
 
 toml::table parse(reader& r, std::string_view text) {
     try {

@@ -68,7 +68,9 @@ public:
         for (const auto& [key, value] : table) {
             const std::string name(key.str());
             if (contains(allowed, name)) continue;
-            std::string what = "unknown key '" + name + "' in " + context;
+            // A long key is shown by its ends.
+            const std::string shown = name.size() <= 80 ? name : name.substr(0, 40) + "..." + name.substr(name.size() - 20);
+            std::string what = "unknown key '" + shown + "' in " + context;
             if (contains(elsewhere, name)) {
                 what = "key '" + name + "' " + elsewhere_why;
             } else if (const auto guess = suggest(name, allowed); !guess.empty()) {

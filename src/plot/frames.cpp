@@ -14,11 +14,7 @@ namespace plot {
 
 namespace {
 
-void check(cairo_surface_t* s) {
-    if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
-        throw std::runtime_error(std::string("cannot draw a frame: ") + cairo_status_to_string(cairo_surface_status(s)));
-    }
-}
+void check(cairo_surface_t* s) { check_cairo(cairo_surface_status(s), "draw a frame"); }
 
 cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
     static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
@@ -58,9 +54,7 @@ argb_image render_argb(const figure& fig, const theme& th, double dpi, draw_pass
         context_ptr cr(cairo_create(surface.get()));
         cairo_scale(cr.get(), dpi / 72.0, dpi / 72.0);
         draw_figure(cr.get(), fig, th, figure_size(fig, th), pass);
-        if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
-            throw std::runtime_error(std::string("cannot draw a frame: ") + cairo_status_to_string(cairo_status(cr.get())));
-        }
+        check_cairo(cairo_status(cr.get()), "draw a frame");
     }
     cairo_surface_flush(surface.get());
     return image;

@@ -6,6 +6,10 @@
 #include <pango/pangocairo.h>
 
 #include <memory>
+#include <string_view>
+#include <string>
+#include <stdexcept>
+#include <new>
 
 namespace plot {
 
@@ -41,5 +45,13 @@ struct gobject_ptr {
     /// The raw pointer.
     T* get() const { return reinterpret_cast<T*>(ptr.get()); }
 };
+
+/// Throws for a Cairo status other than success: std::bad_alloc when Cairo ran out of
+/// memory (the program's one message for that), else std::runtime_error naming `what`.
+inline void check_cairo(cairo_status_t status, std::string_view what) {
+    if (status == CAIRO_STATUS_SUCCESS) return;
+    if (status == CAIRO_STATUS_NO_MEMORY) throw std::bad_alloc();
+    throw std::runtime_error("cannot " + std::string(what) + ": " + cairo_status_to_string(status));
+}
 
 }  // namespace plot

@@ -64,10 +64,7 @@ cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned i
 }
 
 void check_surface(cairo_surface_t* s, std::string_view format) {
-    const cairo_status_t status = cairo_surface_status(s);
-    if (status != CAIRO_STATUS_SUCCESS) {
-        throw std::runtime_error("cannot render " + std::string(format) + ": " + cairo_status_to_string(status));
-    }
+    check_cairo(cairo_surface_status(s), "render " + std::string(format));
 }
 
 void draw_on(cairo_surface_t* surface, const figure& fig, const theme& th, page_size size, double scale,
@@ -76,10 +73,7 @@ void draw_on(cairo_surface_t* surface, const figure& fig, const theme& th, page_
     context_ptr cr(cairo_create(surface));
     cairo_scale(cr.get(), scale, scale);
     draw_figure(cr.get(), fig, th, size, draw_pass::all, texts);
-    const cairo_status_t status = cairo_status(cr.get());
-    if (status != CAIRO_STATUS_SUCCESS) {
-        throw std::runtime_error("cannot render " + std::string(format) + ": " + cairo_status_to_string(status));
-    }
+    check_cairo(cairo_status(cr.get()), "render " + std::string(format));
 }
 
 /// Draws the figure on a vector surface made by `create` (which may set it up further)
@@ -147,10 +141,18 @@ std::string fix_eps_date(const std::string& eps) {
 
 struct png_sink {
     std::string bytes;
+    bool out_of_memory = false;
 };
 
 void png_write_bytes(png_structp png, png_bytep data, png_size_t length) {
-    static_cast<png_sink*>(png_get_io_ptr(png))->bytes.append(reinterpret_cast<const char*>(data), length);
+    // No exception may cross libpng's C frames: a failure is libpng's own error (a longjmp).
+    auto* sink = static_cast<png_sink*>(png_get_io_ptr(png));
+    try {
+        sink->bytes.append(reinterpret_cast<const char*>(data), length);
+    } catch (const std::bad_alloc&) {
+        sink->out_of_memory = true;
+        png_error(png, "out of memory");
+    }
 }
 
 void png_flush_nothing(png_structp) {}
@@ -261,6 +263,7 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
     const auto ppm = static_cast<png_uint_32>(std::lround(dpi / 0.0254));
     if (!encode_png(&sink, rows.data(), width, height, color_type, palette.data(),
                     static_cast<int>(palette.size()), ppm)) {
+        if (sink.out_of_memory) throw std::bad_alloc();
         throw std::runtime_error("cannot encode PNG");
     }
     return std::move(sink.bytes);

@@ -232,6 +232,7 @@ private:
         const int h = static_cast<int>(std::ceil((y1 - y0) * scale)) + 1;
         if (w <= 2 || h <= 0) return -INFINITY;
         surface_ptr surface(cairo_image_surface_create(CAIRO_FORMAT_A8, w, h));
+        check_cairo(cairo_surface_status(surface.get()), "measure text");
         context_ptr cr(cairo_create(surface.get()));
         cairo_scale(cr.get(), scale, scale);
         cairo_translate(cr.get(), 0, -top / scale);

@@ -345,15 +345,36 @@ void check_raster_size(const figure& fig, const theme& th, double dpi) {
     const double w = std::round(size.width_pt * dpi / 72.0);
     const double h = std::round(size.height_pt * dpi / 72.0);
     if (w >= 1 && h >= 1 && w <= max_raster_side && h <= max_raster_side && w * h <= max_raster_pixels) return;
+    const auto whole = [](double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.0f", v);
+        return std::string(text);
+    };
+    const std::string raster = "a raster of " + whole(w) + " x " + whole(h) + " pixels";
+    const std::string dpis = "--dpi " + whole(min_dpi) + " to " + whole(max_dpi);
+    const std::string sizes = "figure_width_cm and figure_height_cm, or panel_width_cm";
+    if (!(w >= 1 && h >= 1)) {
+        // The least dpi at which the shorter side is a pixel at least.
+        double least = std::ceil(0.5 * 72.0 / std::min(size.width_pt, size.height_pt));
+        if (std::isfinite(least) && std::round(std::min(size.width_pt, size.height_pt) * least / 72.0) < 1) ++least;
+        if (!(least <= max_dpi)) {
+            throw bad_input(raster + " is too small at any resolution (" + dpis + "): make the figure larger (" +
+                            sizes + ")");
+        }
+        throw bad_input(raster + " is too small (at least 1 a side); --dpi " + whole(std::max(least, min_dpi)) +
+                        " is the least for this figure");
+    }
     // The largest dpi that fits both limits.
     const double by_side = max_raster_side * 72.0 / std::max(size.width_pt, size.height_pt);
     const double by_area = std::sqrt(max_raster_pixels / (size.width_pt * size.height_pt)) * 72.0;
-    char fits[32];
-    std::snprintf(fits, sizeof fits, "%.0f", std::floor(std::min(by_side, by_area)));
-    throw bad_input("a raster of " + std::to_string(static_cast<long long>(w)) + " x " +
-                                std::to_string(static_cast<long long>(h)) + " pixels is too large (at most " +
-                                std::to_string(max_raster_side) + " a side and 100 million in all); --dpi " +
-                                fits + " is the most for this figure");
+    const double most = std::floor(std::min(by_side, by_area));
+    const std::string limits = " (at most " + std::to_string(max_raster_side) + " a side and 100 million in all)";
+    if (!(most >= min_dpi)) {
+        throw bad_input(raster + " is too large" + limits + ", and too large at any resolution (" + dpis +
+                        "): make the figure smaller (" + sizes + "), or give it fewer panels");
+    }
+    throw bad_input(raster + " is too large" + limits + "; --dpi " + whole(std::min(most, max_dpi)) +
+                    " is the most for this figure");
 }
 
 std::string pdf_creation_date() {

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Messages that name what is wrong: bad input is exit 2 before anything is written, and
+// the message names the key or option, its value, and what is allowed.
+#include "plot/output.hpp"
+#include "process.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using test_support::files_in;
+using test_support::run_cli;
+using test_support::temp_dir;
+
+/// True if text holds part.
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(Messages, UnknownFontFamilyIsBadInputBeforeAnyWork) {
+    const auto dir = temp_dir("font");
+    auto r = run_cli("render fig1 -f pdf,png --set font_family=Nonesuch -o '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_TRUE(has(r.err, "font_family")) << r.err;
+    EXPECT_TRUE(has(r.err, "'Nonesuch'")) << r.err;
+    EXPECT_TRUE(has(r.err, "fc-list : family")) << r.err;
+    EXPECT_FALSE(has(r.err, "fonts-cmu")) << r.err;  // not a CMU family
+    EXPECT_TRUE(files_in(dir).empty());
+
+    // In a style file, the first family is the one that must be there.
+    std::ofstream(dir / "style.toml") << "font_family = \"Nonesuch, DejaVu Sans\"\n";
+    r = run_cli("render fig1 -f pdf --theme style.toml -o out", dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_TRUE(has(r.err, "style.toml")) << r.err;
+    EXPECT_TRUE(has(r.err, "'Nonesuch'")) << r.err;
+
+    // The CMU families come from fonts-cmu.
+    r = run_cli("render fig1 -f pdf --set 'font_family=CMU Nonesuch' -o '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_TRUE(has(r.err, "fonts-cmu")) << r.err;
+    EXPECT_EQ(files_in(dir), std::set<std::string>{"style.toml"});
+
+    // Any family fontconfig finds is used.
+    r = run_cli("render fig1 -f pdf --set 'font_family=DejaVu Sans' -o '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 0) << r.err;
+    fs::remove_all(dir);
+}
+
+TEST(Messages, TinyFiguresAreTooSmallNotTooLarge) {
+    const auto dir = temp_dir("tiny");
+    for (const std::string set : {"figure_width_cm=0.001", "figure_height_cm=0.01", "panel_width_cm=0.001"}) {
+        const auto r = run_cli("render fig1 -f png,pdf --theme slides --set " + set + " -o '" + dir.string() + "'");
+        EXPECT_EQ(r.status, 2) << set << ": " << r.err;
+        EXPECT_TRUE(has(r.err, set.substr(0, set.find('=')))) << r.err;
+        EXPECT_FALSE(has(r.err, "too large")) << r.err;
+        EXPECT_FALSE(has(r.err, "--dpi")) << r.err;
+    }
+    const auto r = run_cli("render fig1 -f png --theme slides --set figure_width_cm=0.5 -o '" + dir.string() + "'");
+    EXPECT_TRUE(has(r.err, "too small; the smallest allowed is 1")) << r.err;
+    EXPECT_TRUE(files_in(dir).empty());
+    fs::remove_all(dir);
+}
+
+/// check_raster_size's message for a fixed figure size in cm at dpi.
+std::string raster_problem(double width_cm, double height_cm, double dpi) {
+    plot::theme th;
+    th.fixed_width_cm = width_cm;
+    th.fixed_height_cm = height_cm;
+    try {
+        plot::check_raster_size(plot::figure{}, th, dpi);
+    } catch (const plot::bad_input& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+TEST(Messages, RasterSizesSuggestOnlyDpisInRange) {
+    // Too small: the least dpi that gives a pixel, within 10 to 2400.
+    std::string m = raster_problem(0.01, 5, 100);
+    EXPECT_TRUE(has(m, "too small")) << m;
+    EXPECT_TRUE(has(m, "--dpi 127 is the least")) << m;
+    m = raster_problem(0.0001, 5, 300);
+    EXPECT_TRUE(has(m, "too small at any resolution")) << m;
+    EXPECT_FALSE(has(m, "too large")) << m;
+    // Too large: the most dpi that fits, never above 2400 nor below 10.
+    m = raster_problem(100, 100, 2400);
+    EXPECT_TRUE(has(m, "too large")) << m;
+    EXPECT_TRUE(has(m, "--dpi 254 is the most")) << m;
+    m = raster_problem(10000, 10000, 10);
+    EXPECT_TRUE(has(m, "too large at any resolution")) << m;
+    EXPECT_FALSE(has(m, "--dpi 2 ")) << m;
+    EXPECT_EQ(raster_problem(25.4, 14.2875, 128), "accepted");
+}
+
+}  // namespace

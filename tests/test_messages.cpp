@@ -95,4 +95,41 @@ TEST(Messages, RasterSizesSuggestOnlyDpisInRange) {
     EXPECT_EQ(raster_problem(25.4, 14.2875, 128), "accepted");
 }
 
+TEST(Messages, TimesThatOverflowAreRefused) {
+    const auto dir = temp_dir("at");
+    for (const char* at : {"1e308", "-1e308", "1e7"}) {
+        const auto r = run_cli("render swing --at " + std::string(at) + " -f svg -o '" + dir.string() + "'");
+        EXPECT_EQ(r.status, 2) << at << ": " << r.err;
+        EXPECT_TRUE(has(r.err, "--at")) << r.err;
+        EXPECT_TRUE(has(r.err, "at most 1e6")) << r.err;
+        EXPECT_FALSE(has(r.err, "nan")) << r.err;
+    }
+    EXPECT_TRUE(files_in(dir).empty());
+    for (const char* at : {"1e308", "0,-1e300", "2e6"}) {
+        const auto r = run_cli("trajectory --theta0 1 --method lowest --at '" + std::string(at) + "'");
+        EXPECT_EQ(r.status, 2) << at << ": " << r.out << r.err;
+        EXPECT_TRUE(has(r.err, "--at")) << r.err;
+        EXPECT_TRUE(r.out.empty()) << r.out;
+    }
+    EXPECT_EQ(run_cli("trajectory --theta0 1 --method lowest --at 1e6,-1e6").status, 0);
+    const auto r = run_cli("plot trajectory --theta0 1 --methods exact --range 0,1e308 -f svg -o '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_TRUE(has(r.err, "range")) << r.err;
+    EXPECT_TRUE(files_in(dir).empty());
+    fs::remove_all(dir);
+}
+
+TEST(Messages, NulInAFileLineIsShownEscaped) {
+    const auto dir = temp_dir("nul");
+    std::ofstream(dir / "amplitudes.txt", std::ios::binary) << std::string("1\0x\n", 4);
+    const auto r = run_cli("eval --theta0 @amplitudes.txt", dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    EXPECT_EQ(r.err.find('\0'), std::string::npos);
+    EXPECT_TRUE(has(r.err, "--theta0 '1\\x00x'")) << r.err;
+    // The whole message, to its end, not cut at the NUL.
+    EXPECT_TRUE(has(r.err, "162deg")) << r.err;
+    fs::remove_all(dir);
+}
+
 }  // namespace

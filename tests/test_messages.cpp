@@ -132,4 +132,36 @@ TEST(Messages, NulInAFileLineIsShownEscaped) {
     fs::remove_all(dir);
 }
 
+/// A short animation at `fps` frames per second, as a spec file in dir.
+fs::path animation_at(const fs::path& dir, const std::string& fps) {
+    const auto path = dir / ("moving" + fps + ".toml");
+    std::ofstream(path) << "[pendulum]\nlength_m = 1.0\n\n[animation]\nfps = " << fps
+                        << "\nperiods = 0.1\n\n[[panel]]\nplot = \"pendulum\"\ntheta0 = \"170deg\"\n"
+                           "methods = [\"exact\"]\n";
+    return path;
+}
+
+TEST(Messages, GifFrameRatesItCannotPlayAreRefusedBeforeAnyFile) {
+    const auto dir = temp_dir("fps");
+    const auto out = dir / "out";
+    fs::create_directories(out);
+    for (const std::string fps : {"120", "60", "50.5"}) {
+        const auto spec = animation_at(dir, fps);
+        const auto r = run_cli("render '" + spec.string() + "' -f png,gif --dpi 20 -o '" + out.string() + "'");
+        EXPECT_EQ(r.status, 2) << fps << ": " << r.err;
+        EXPECT_TRUE(has(r.err, "fps = " + fps + ": a GIF plays 100/k frames per second")) << r.err;
+        EXPECT_TRUE(has(r.err, "nearest: 50 or 33.33")) << r.err;
+        EXPECT_TRUE(files_in(out).empty()) << fps;
+    }
+    // PNG frames play at any rate; a GIF at 50 fps, or at 30 with delays of 3, 3 and 4.
+    auto r = run_cli("render '" + animation_at(dir, "120").string() + "' -f png --dpi 20 -o '" + out.string() + "'");
+    EXPECT_EQ(r.status, 0) << r.err;
+    for (const std::string fps : {"50", "30"}) {
+        r = run_cli("render '" + animation_at(dir, fps).string() + "' -f gif --dpi 20 -o '" + out.string() + "'");
+        EXPECT_EQ(r.status, 0) << fps << ": " << r.err;
+    }
+    EXPECT_TRUE(fs::exists(out / "moving30.gif"));
+    fs::remove_all(dir);
+}
+
 }  // namespace

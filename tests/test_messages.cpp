@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Messages that name what is wrong: bad input is exit 2 before anything is written, and
 // the message names the key or option, its value, and what is allowed.
+#include "cli/table.hpp"
 #include "plot/output.hpp"
 #include "process.hpp"
 
@@ -8,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -162,6 +164,33 @@ TEST(Messages, GifFrameRatesItCannotPlayAreRefusedBeforeAnyFile) {
     }
     EXPECT_TRUE(fs::exists(out / "moving30.gif"));
     fs::remove_all(dir);
+}
+
+TEST(Messages, CsvTextThatLooksLikeAFormulaIsNeutralised) {
+    const auto dir = temp_dir("csv");
+    std::ofstream(dir / "labels.toml")
+        << "[[panel]]\nplot = \"trajectory\"\ntheta0 = \"1\"\nmethods = ["
+           "{ method = \"exact\", label = '=HYPERLINK(\"http://example.com\",\"x\")' }, "
+           "{ method = \"lowest\", label = \"-1+2\" }, { method = \"harmonic\", label = \"@SUM(A1)\" }, "
+           "{ method = \"first\", label = \"+x\" }]\n";
+    const auto r = run_cli("data labels.toml", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(has(r.out, "\na,\"'=HYPERLINK(\"\"http://example.com\"\",\"\"x\"\")\",0,")) << r.out.substr(0, 300);
+    EXPECT_TRUE(has(r.out, "\na,'-1+2,0,")) << r.out.substr(0, 300);
+    EXPECT_TRUE(has(r.out, "\na,'@SUM(A1),0,"));
+    EXPECT_TRUE(has(r.out, "\na,'+x,0,"));
+    EXPECT_FALSE(has(r.out, ",=")) << r.out.substr(0, 300);
+    // Numbers stay numbers, negative ones too.
+    EXPECT_TRUE(has(r.out, ",-")) << r.out.substr(0, 300);
+    fs::remove_all(dir);
+
+    std::ostringstream out;
+    pendulum::cli::table_writer w(out, {"name", "value"}, pendulum::cli::table_format::csv);
+    w.record({std::string("=1+1"), -1.5});
+    w.record({std::string("\tx"), 2.0});
+    w.record({std::string("plain -"), 3.0});
+    w.finish();
+    EXPECT_EQ(out.str(), "name,value\n'=1+1,-1.5\n'\tx,2\nplain -,3\n");
 }
 
 }  // namespace

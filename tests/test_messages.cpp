@@ -3,12 +3,14 @@
 // the message names the key or option, its value, and what is allowed.
 #include "cli/table.hpp"
 #include "plot/output.hpp"
+#include "plot/ticks.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -191,6 +193,41 @@ TEST(Messages, CsvTextThatLooksLikeAFormulaIsNeutralised) {
     w.record({std::string("plain -"), 3.0});
     w.finish();
     EXPECT_EQ(out.str(), "name,value\n'=1+1,-1.5\n'\tx,2\nplain -,3\n");
+}
+
+TEST(Messages, YRangesTheTicksCannotLabelAreRefused) {
+    const auto dir = temp_dir("yrange");
+    const auto out = dir / "out";
+    fs::create_directories(out);
+    for (const std::string range : {"[-1.7e308, 1.7e308]", "[0, 5e-324]", "[0, 1e-301]", "[1, 1.0000000000001]",
+                                    "[-2e300, 0]"}) {
+        std::ofstream(dir / "y.toml") << "[[panel]]\nplot = \"trajectory\"\ntheta0 = \"1\"\nmethods = [\"exact\"]\n"
+                                         "y_range = " << range << "\n";
+        const auto r = run_cli("render y.toml -f svg -o out", dir);
+        EXPECT_EQ(r.status, 2) << range << ": " << r.err;
+        EXPECT_TRUE(has(r.err, "'y_range'")) << r.err;
+        EXPECT_TRUE(has(r.err, "1e300")) << r.err;
+        EXPECT_TRUE(files_in(out).empty()) << range;
+    }
+    fs::remove_all(dir);
+}
+
+TEST(Messages, EveryAcceptedYRangeHasTwoDistinctTickLabels) {
+    // The limits of y_range: values within 1e300, a span of 1e-300 at least and of 1e-9 of
+    // the largest magnitude.
+    const std::pair<double, double> ranges[] = {
+        {-1e300, 1e300}, {0, 1e-300}, {-1e-300, 0}, {1, 1 + 1e-9}, {-1 - 1e-9, -1}, {1e300 - 1e291, 1e300},
+        {-1e300, -1e300 + 1e291}, {1e-290, 1e-290 + 1e-299}, {0.1, 0.1 + 1e-10}, {123456.789, 123456.789 + 1.3e-4}};
+    for (const auto& [lo, hi] : ranges) {
+        for (const bool expand : {true, false}) {
+            for (const int n : {3, 6, 10}) {
+                const plot::tick_set t = plot::linear_ticks(lo, hi, n, expand);
+                const std::set<std::string> distinct(t.labels.begin(), t.labels.end());
+                EXPECT_GE(distinct.size(), 2u) << lo << " " << hi << " " << expand << " " << n;
+                EXPECT_EQ(distinct.size(), t.labels.size()) << lo << " " << hi;
+            }
+        }
+    }
 }
 
 }  // namespace

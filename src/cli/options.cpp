@@ -56,7 +56,7 @@ method_choice parse_method_option(const std::string& option, const std::string& 
     try {
         return parse_method(text);
     } catch (const domain_error& e) {
-        throw usage_error(option + " '" + text + "': " + e.what());
+        throw usage_error(option + " '" + shown_text(text) + "': " + e.what());
     }
 }
 

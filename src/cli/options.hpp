@@ -52,7 +52,7 @@ void for_each_item(const std::string& text, const std::string& option, Take take
             throw usage_error(option + " " + text + ": '" + text.substr(1) + "' is a directory, not a list");
         }
         file.open(text.substr(1), std::ios::binary);
-        if (!file) throw usage_error(option + " " + text + ": cannot read '" + text.substr(1) + "'");
+        if (!file) throw usage_error(option + " " + shown_text(text) + ": cannot read '" + shown_text(text.substr(1)) + "'");
     }
     std::istream& in = text == "-" ? std::cin : file;
     bool any = false;
@@ -84,7 +84,8 @@ void for_each_amplitude(const std::string& given, Take take) {
             v = parse_angle(item);
             check_amplitude(v);
         } catch (const std::invalid_argument& e) {
-            const std::string shown = item.size() <= 80 ? item : item.substr(0, 40) + "..." + item.substr(item.size() - 20);
+            const std::string shown =
+                shown_text(item.size() <= 80 ? item : item.substr(0, 40) + "..." + item.substr(item.size() - 20));
             throw usage_error("--theta0 '" + shown + "': " + e.what());
         }
         take(item, v);

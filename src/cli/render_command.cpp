@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <memory>
 #include <utility>
@@ -135,6 +136,10 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
             at = parse_expression(o.at);
         } catch (const std::invalid_argument& e) {
             throw usage_error(std::string("--at: ") + e.what());
+        }
+        // t/T is multiplied by the period: a huge one would be no time at all.
+        if (!(std::fabs(*at) <= 1e6)) {
+            throw usage_error("--at " + o.at + ": a time t/T must be finite and at most 1e6 in size");
         }
     }
     // Rasters too large for Cairo or for memory are refused before any work, and every

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
 
 namespace pendulum::cli {
 
@@ -51,7 +52,9 @@ std::string cell(double v, table_format format) {
 
 std::string cell(const field& v, table_format format) {
     if (const auto* text = std::get_if<std::string>(&v)) {
-        return format == table_format::csv ? csv_quoted(*text) : json_quoted(*text);
+        // A text a spreadsheet would take for a formula gets a single quote before it.
+        const bool formula = !text->empty() && std::string_view("=+-@\t\r").find(text->front()) != std::string_view::npos;
+        return format == table_format::csv ? csv_quoted(formula ? "'" + *text : *text) : json_quoted(*text);
     }
     return cell(std::get<double>(v), format);
 }

@@ -26,7 +26,8 @@ using field = std::variant<std::string, double>;
 
 /// Writes a table row by row as it is computed, so that long tables need no memory. Numbers
 /// use the shortest form that reads back to the same double, NaN an empty field / null;
-/// text is quoted as RFC 4180 asks (CSV) or escaped (JSON).
+/// text is quoted as RFC 4180 asks (CSV) or escaped (JSON). A CSV text field that a
+/// spreadsheet would take for a formula (=, +, -, @, tab or CR first) gets a ' before it.
 class table_writer {
 public:
     /// Writes the header (CSV) or the opening bracket (JSON).

@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -60,6 +61,11 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
                 times.push_back(parse_expression(item));
             } catch (const std::invalid_argument& e) {
                 throw usage_error(std::string("--at '") + item + "': " + e.what());
+            }
+            // t/T is multiplied by the period: a huge one overflows.
+            if (!(std::fabs(times.back()) <= max_periods)) {
+                throw usage_error("--at '" + item + "': a time t/T must be finite and at most " +
+                                  format_double(max_periods) + " in size");
             }
         }
     } else {

@@ -12,6 +12,7 @@
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 
 namespace figures {
@@ -67,10 +68,14 @@ std::string plain_text(const std::string& markup) {
     return out;
 }
 
+/// A text field: quoted as RFC 4180 asks, and one that a spreadsheet would take for a
+/// formula (=, +, -, @, tab or carriage return first) with a single quote before it.
 std::string csv_field(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    const bool formula = !text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos;
+    const std::string field = formula ? "'" + text : text;
+    if (field.find_first_of(",\"\n\r") == std::string::npos) return field;
     std::string out = "\"";
-    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    for (char c : field) out += c == '"' ? std::string("\"\"") : std::string(1, c);
     return out + "\"";
 }
 

@@ -133,11 +133,29 @@ void check_animation_work(const std::vector<animation_job>& animations, const st
     }
 }
 
+/// Throws bad_input if a format cannot play an animation at its frame rate.
+void check_frame_rates(const std::vector<animation_job>& animations, const std::vector<std::string>& formats) {
+    for (const auto& m : animations) {
+        for (const auto& f : formats) {
+            const plot::format_row& row = plot::find_format(f);
+            if (!row.animate || !row.check_frame_rate) continue;
+            try {
+                row.check_frame_rate(m.plan.fps);
+            } catch (const plot::bad_input& err) {
+                throw bad_input(m.figure->id + "." + f + ": " + err.what());
+            }
+        }
+    }
+}
+
 void write_render(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
                   const std::vector<std::string>& formats, const std::filesystem::path& dir,
                   const build_options& build, const render_style& style, std::optional<double> at) {
     check_distinct_outputs(stills, animations, formats, dir, at.has_value());
-    if (!at) check_animation_work(animations, formats, build, style);
+    if (!at) {
+        check_frame_rates(animations, formats);
+        check_animation_work(animations, formats, build, style);
+    }
     if (!stills.empty()) write_figures(stills, build, style.still_theme, style.still);
     for (const auto& m : animations) {
         for (const auto& f : formats) {

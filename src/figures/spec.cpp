@@ -280,8 +280,16 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
             };
             const double lo = value(*a->get(0));
             const double hi = value(*a->get(1));
+            // Ranges the tick labels can tell apart: values within 1e300, a span of 1e-300 at
+            // least and of 1e-9 of the largest magnitude.
+            const double span = hi - lo;
             if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi)) {
                 r.problem(*n, "'y_range' must go from a smaller to a larger finite value");
+            } else if (!(std::fabs(lo) <= 1e300 && std::fabs(hi) <= 1e300 && span >= 1e-300 &&
+                         span >= 1e-9 * std::max(std::fabs(lo), std::fabs(hi)))) {
+                r.problem(*n, "'y_range' = [" + pendulum::format_double(lo) + ", " + pendulum::format_double(hi) +
+                                  "] cannot be labelled: values must be within -1e300 to 1e300, and the span at "
+                                  "least 1e-300 and at least 1e-9 of the largest magnitude");
             } else {
                 p.y_range = std::array<double, 2>{lo, hi};
             }

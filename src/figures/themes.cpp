@@ -29,6 +29,9 @@ struct number_key {
     double hi;
 };
 
+/// The smallest whole figure, as wide or high as the smallest panel.
+constexpr double min_figure_cm = 1;
+
 constexpr number_key number_keys[] = {
     {"tick_font_pt", &plot::theme::tick_font_pt, 1, 200},
     {"label_font_pt", &plot::theme::label_font_pt, 1, 200},
@@ -38,7 +41,7 @@ constexpr number_key number_keys[] = {
     {"marker_radius_pt", &plot::theme::marker_radius_pt, 0.1, 50},
     {"tick_length_pt", &plot::theme::tick_length_pt, 0, 50},
     {"padding_pt", &plot::theme::padding_pt, 0, 50},
-    {"panel_width_cm", &plot::theme::panel_width_cm, 1, 100},
+    {"panel_width_cm", &plot::theme::panel_width_cm, min_figure_cm, 100},
     {"panel_aspect", &plot::theme::panel_aspect, 0.1, 10},
     {"figure_width_cm", &plot::theme::fixed_width_cm, 0, 200},
     {"figure_height_cm", &plot::theme::fixed_height_cm, 0, 200},
@@ -77,7 +80,18 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
         }
     }
     for (const auto& k : number_keys) {
-        if (auto v = r.number(doc, k.name, k.lo, k.hi)) t.*k.field = *v;
+        auto v = r.number(doc, k.name, k.lo, k.hi);
+        // A whole figure's size is 0 (sized by its panels) or as large as a panel at least:
+        // a smaller one would be a raster of no pixels.
+        const bool whole = k.field == &plot::theme::fixed_width_cm || k.field == &plot::theme::fixed_height_cm;
+        if (v && whole && *v > 0 && *v < min_figure_cm) {
+            r.problem(*doc.get(k.name), "'" + std::string(k.name) + "' = " + pendulum::format_double(*v) +
+                                            " is too small; the smallest allowed is " +
+                                            pendulum::format_double(min_figure_cm) +
+                                            " (or 0 to size the figure by its panels)");
+            v.reset();
+        }
+        if (v) t.*k.field = *v;
     }
     for (const auto& k : color_keys) {
         if (const toml::node* n = doc.get(k.name)) {
@@ -136,6 +150,16 @@ void throw_problems(reader& r) {
     problems.front().where.file = std::move(option);
     problems.front().what = std::move(what);
     throw spec_error(std::move(problems));
+}
+
+/// Refuses a font_family whose first family is not installed, before any work: fontconfig
+/// would draw every text in another font. `from` is where the family was given.
+void check_font(const std::string& family, const std::string& from) {
+    if (plot::font_family_installed(family)) return;
+    const std::string first = family.substr(0, family.find(','));
+    const std::string package = first.starts_with("CMU ") ? " (Debian package fonts-cmu)" : "";
+    throw_option_problem(from, "'font_family' = \"" + family + "\": font '" + first + "' is not installed" + package +
+                                   "; fc-list : family lists the installed families");
 }
 
 plot::theme load(std::string_view name_or_file, int depth) {
@@ -211,6 +235,7 @@ std::string_view theme_source(std::string_view name) {
 
 plot::theme load_theme(std::string_view name_or_file, const std::vector<std::string>& sets) {
     plot::theme t = load(name_or_file, 0);
+    std::string font_from = (name_or_file.ends_with(".toml") ? "style file " : "theme ") + std::string(name_or_file);
     for (const auto& set : sets) {
         const auto eq = set.find('=');
         if (eq == std::string::npos || eq == 0) {
@@ -241,7 +266,9 @@ plot::theme load_theme(std::string_view name_or_file, const std::vector<std::str
         // Positions in a one-line --set mean nothing: name the option instead.
         for (auto& p : r.problems()) p.where = {"--set " + set, 0, 0};
         throw_problems(r);
+        if (key == "font_family") font_from = "--set " + set;
     }
+    check_font(t.font_family, font_from);
     return t;
 }
 

@@ -15,6 +15,23 @@ namespace pendulum {
 
 namespace {
 
+/// Control characters and NUL as \xNN: a message is a C string, and NUL would cut it short.
+std::string escaped(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7f) {
+            constexpr char hex[] = "0123456789abcdef";
+            out += "\\x";
+            out += hex[u >> 4];
+            out += hex[u & 15];
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
 const std::string_view allowed =
     "expected a number, pi, or an expression such as 1.2, pi/2, 9pi/10, 0.9pi or 162deg";
 
@@ -49,7 +66,7 @@ private:
         const std::string shown = text_.size() <= 80 ? std::string(text_)
                                                       : std::string(text_.substr(0, 40)) + "..." +
                                                             std::string(text_.substr(text_.size() - 20));
-        throw domain_error("invalid value '" + shown + "': " + why + "; " + std::string(allowed));
+        throw domain_error("invalid value '" + escaped(shown) + "': " + escaped(why) + "; " + std::string(allowed));
     }
 
     /// Records a piece for angle_tokens.

@@ -317,26 +317,47 @@ std::string render_raster(const figure& fig, const theme& th, const output_optio
     return render_png(fig, th, options.dpi);
 }
 
+/// A GIF's frame delays are whole hundredths of a second, and browsers play a delay below
+/// 2/100 s as 1/10 s: above 50 frames per second some frames would crawl. Below it, delays
+/// that alternate (3, 3, 4 at 30 fps) keep the true time.
+void check_gif_frame_rate(double fps) {
+    if (fps <= 50) return;
+    const auto rate = [](int k) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.2f", 100.0 / k);
+        std::string s = text;
+        while (s.back() == '0') s.pop_back();
+        if (s.back() == '.') s.pop_back();
+        return s;
+    };
+    const int k = std::max(2, static_cast<int>(std::floor(100 / fps)));
+    char given[32];
+    std::snprintf(given, sizeof given, "%g", fps);
+    throw bad_input("fps = " + std::string(given) +
+                    ": a GIF plays 100/k frames per second (k whole, at least 2), at most 50; nearest: " + rate(k) +
+                    " or " + rate(k + 1));
+}
+
 // Every output format: one row each, with all that the format means. A format is written
 // by its row's functions, so a format without a writer cannot be listed.
 //  name, description,
 //  still writer, overlay's graphics format, writer under an overlay, raster, animation writer, what it animates as,
-//  the file of an animation's frame
+//  the file of an animation's frame, the check of its frame rate
 constexpr format_row formats[] = {
     {"png", "raster at --dpi",
-     render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)", png_frame_file},
+     render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)", png_frame_file, nullptr},
     {"pdf", "vector, fonts embedded",
-     write_pdf, {}, render_pdf, false, write_pdf_animation, "a PDF of one page per frame", pdf_animation_file},
+     write_pdf, {}, render_pdf, false, write_pdf_animation, "a PDF of one page per frame", pdf_animation_file, nullptr},
     {"svg", "vector, for the web",
-     write_svg, {}, nullptr, false, nullptr, {}, nullptr},
+     write_svg, {}, nullptr, false, nullptr, {}, nullptr, nullptr},
     {"eps", "vector, for latex and dvips",
-     write_eps, {}, render_eps, false, nullptr, {}, nullptr},
+     write_eps, {}, render_eps, false, nullptr, {}, nullptr, nullptr},
     {"gif", "animation that loops; one frame for a still figure",
-     render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF", gif_animation_file},
+     render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF", gif_animation_file, check_gif_frame_rate},
     {"pdf_tex", "ID.pdf without text and ID.pdf_tex setting the text in the document's fonts (pdflatex)",
-     refuse_one_stream, "pdf", nullptr, false, nullptr, {}, nullptr},
+     refuse_one_stream, "pdf", nullptr, false, nullptr, {}, nullptr, nullptr},
     {"eps_tex", "ID.eps without text and ID.eps_tex setting the text in the document's fonts (latex, dvips)",
-     refuse_one_stream, "eps", nullptr, false, nullptr, {}, nullptr},
+     refuse_one_stream, "eps", nullptr, false, nullptr, {}, nullptr, nullptr},
 };
 
 }  // namespace
@@ -348,15 +369,36 @@ void check_raster_size(const figure& fig, const theme& th, double dpi) {
     const double w = std::round(size.width_pt * dpi / 72.0);
     const double h = std::round(size.height_pt * dpi / 72.0);
     if (w >= 1 && h >= 1 && w <= max_raster_side && h <= max_raster_side && w * h <= max_raster_pixels) return;
+    const auto whole = [](double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.0f", v);
+        return std::string(text);
+    };
+    const std::string raster = "a raster of " + whole(w) + " x " + whole(h) + " pixels";
+    const std::string dpis = "--dpi " + whole(min_dpi) + " to " + whole(max_dpi);
+    const std::string sizes = "figure_width_cm and figure_height_cm, or panel_width_cm";
+    if (!(w >= 1 && h >= 1)) {
+        // The least dpi at which the shorter side is a pixel at least.
+        double least = std::ceil(0.5 * 72.0 / std::min(size.width_pt, size.height_pt));
+        if (std::isfinite(least) && std::round(std::min(size.width_pt, size.height_pt) * least / 72.0) < 1) ++least;
+        if (!(least <= max_dpi)) {
+            throw bad_input(raster + " is too small at any resolution (" + dpis + "): make the figure larger (" +
+                            sizes + ")");
+        }
+        throw bad_input(raster + " is too small (at least 1 a side); --dpi " + whole(std::max(least, min_dpi)) +
+                        " is the least for this figure");
+    }
     // The largest dpi that fits both limits.
     const double by_side = max_raster_side * 72.0 / std::max(size.width_pt, size.height_pt);
     const double by_area = std::sqrt(max_raster_pixels / (size.width_pt * size.height_pt)) * 72.0;
-    char fits[32];
-    std::snprintf(fits, sizeof fits, "%.0f", std::floor(std::min(by_side, by_area)));
-    throw bad_input("a raster of " + std::to_string(static_cast<long long>(w)) + " x " +
-                                std::to_string(static_cast<long long>(h)) + " pixels is too large (at most " +
-                                std::to_string(max_raster_side) + " a side and 100 million in all); --dpi " +
-                                fits + " is the most for this figure");
+    const double most = std::floor(std::min(by_side, by_area));
+    const std::string limits = " (at most " + std::to_string(max_raster_side) + " a side and 100 million in all)";
+    if (!(most >= min_dpi)) {
+        throw bad_input(raster + " is too large" + limits + ", and too large at any resolution (" + dpis +
+                        "): make the figure smaller (" + sizes + "), or give it fewer panels");
+    }
+    throw bad_input(raster + " is too large" + limits + "; --dpi " + whole(std::min(most, max_dpi)) +
+                    " is the most for this figure");
 }
 
 std::string pdf_creation_date() {

@@ -91,6 +91,9 @@ struct format_row {
     /// ID.EXT for a format that holds every frame in one file, ID-0001.EXT ... for a
     /// sequence; null where animate is.
     std::string (*frame_file)(const std::string& id, int frame, int count);
+    /// Throws plot::bad_input, naming fps and the rates that play, if an animation at `fps`
+    /// frames per second cannot be played as the format holds it; null: any rate plays.
+    void (*check_frame_rate)(double fps);
 };
 
 /// A LaTeX overlay's two files: the drawing without text, and the picture that sets the text.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/text.hpp"
 
+#include "plot/theme.hpp"
+
 #include <fontconfig/fontconfig.h>
 #include <pango/pangofc-fontmap.h>
 
@@ -40,6 +42,25 @@ PangoFontMap* thread_font_map() {
         return m;
     }();
     return map.get();
+}
+
+bool first_family_resolves(PangoContext* context, const std::string& font_family) {
+    const std::string first = font_family.substr(0, font_family.find(','));
+    if (first.empty()) return false;
+    font_description_ptr font(pango_font_description_new());
+    pango_font_description_set_family(font.get(), first.c_str());
+    gobject_ptr<PangoFont> loaded(pango_context_load_font(context, font.get()));
+    std::string got;
+    if (loaded.get()) {
+        font_description_ptr d(pango_font_describe(loaded.get()));
+        if (const char* f = pango_font_description_get_family(d.get())) got = f;
+    }
+    return got == first;
+}
+
+bool font_family_installed(const std::string& font_family) {
+    const gobject_ptr<PangoContext> context(pango_font_map_create_context(thread_font_map()));
+    return first_family_resolves(context.get(), font_family);
 }
 
 }  // namespace plot

@@ -25,6 +25,10 @@ namespace plot {
 /// every machine. Font maps are not shared between threads.
 PangoFontMap* thread_font_map();
 
+/// True if Pango, in `context`, loads the first family of the comma-separated
+/// `font_family` as that very family (fontconfig substitutes another for a missing one).
+bool first_family_resolves(PangoContext* context, const std::string& font_family);
+
 /// The inked part of a text: a rectangle in points.
 struct text_ink {
     double x = 0;  ///< left
@@ -300,17 +304,9 @@ private:
 
     /// The first family must be installed: without it every figure would change.
     void check_font_installed() const {
-        const std::string first = family_.substr(0, family_.find(','));
-        font_description_ptr font(pango_font_description_new());
-        pango_font_description_set_family(font.get(), first.c_str());
-        gobject_ptr<PangoFont> loaded(pango_context_load_font(context_.get(), font.get()));
-        std::string got;
-        if (loaded.get()) {
-            font_description_ptr d(pango_font_describe(loaded.get()));
-            if (const char* f = pango_font_description_get_family(d.get())) got = f;
-        }
-        if (got != first) {
-            throw std::runtime_error("font '" + first + "' is not installed (Debian package fonts-cmu)");
+        if (!first_family_resolves(context_.get(), family_)) {
+            const std::string first = family_.substr(0, family_.find(','));
+            throw std::runtime_error("font '" + first + "' is not installed (fc-list : family lists the installed ones)");
         }
     }
 

@@ -41,4 +41,8 @@ struct theme {
     double dpi = 300;                 ///< PNG resolution where none is asked for
 };
 
+/// True if the first family of a comma-separated `font_family` is installed where figures
+/// look for fonts: Pango, through fontconfig, resolves it to that very family.
+bool font_family_installed(const std::string& font_family);
+
 }  // namespace plot

@@ -49,6 +49,9 @@ pdflatex -no-shell-escape -recorder -interaction=nonstopmode -halt-on-error doc.
 
 # What pdflatex opened: reads only from the TeX trees (and the sandbox), writes only here.
 sandbox=$(pwd -P)
+texmf_var=$(kpsewhich -var-value=TEXMFVAR 2>/dev/null || echo /nonexistent)
+tex_fonts=$(kpsewhich -var-value=VARTEXFONTS 2>/dev/null || echo /nonexistent)
+texmf_local=$(kpsewhich -var-value=TEXMFLOCAL 2>/dev/null || echo /nonexistent)
 while IFS=' ' read -r kind path; do
     case $kind in
         PWD) continue ;;
@@ -56,7 +59,7 @@ while IFS=' ' read -r kind path; do
             case $path in
                 /usr/share/texlive/* | /usr/share/texmf/* | /usr/share/texmf-dist/* | /var/lib/texmf/* | \
                     /etc/texmf/* | /usr/share/fonts/* | /usr/share/texlive-*/*) ;;
-                "$HOME"/.texlive*/texmf-var/* | "$HOME"/.texmf-var/*) ;;  # fonts TeX made for itself
+                "$texmf_var"/* | "$tex_fonts"/* | "$texmf_local"/*) ;;  # fonts TeX made for itself, local trees
                 /*) [[ $path == "$sandbox"/* ]] || fail "pdflatex read $path" ;;
                 *) [[ $path != */* || $path == ./* ]] || fail "pdflatex read $path" ;;
             esac ;;

@@ -38,6 +38,7 @@ done
 cd "$dir/doc"
 {
     echo '\documentclass{article}'
+    echo '\usepackage{mathptmx}'
     echo '\usepackage{graphicx}'
     echo '\usepackage[margin=1cm]{geometry}'
     echo '\begin{document}'

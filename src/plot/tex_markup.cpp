@@ -4,10 +4,11 @@
 #include "plot/errors.hpp"
 #include "plot/figure.hpp"
 
+#include <glib.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 #include <utility>
@@ -52,42 +53,6 @@ std::string math_character(const std::string& c, const std::string& whole);
 std::string text_character(const std::string& c);
 std::string_view text_escape(char c);
 
-/// True if text is well-formed UTF-8 (no stray continuation byte, no overlong or
-/// truncated sequence, nothing past U+10FFFF, no surrogate).
-bool valid_utf8(std::string_view text) {
-    for (std::size_t i = 0; i < text.size();) {
-        const auto c = static_cast<unsigned char>(text[i]);
-        std::size_t n = 0;
-        std::uint32_t cp = 0;
-        if (c < 0x80) {
-            ++i;
-            continue;
-        } else if (c >= 0xc2 && c <= 0xdf) {
-            n = 1;
-            cp = c & 0x1f;
-        } else if (c >= 0xe0 && c <= 0xef) {
-            n = 2;
-            cp = c & 0x0f;
-        } else if (c >= 0xf0 && c <= 0xf4) {
-            n = 3;
-            cp = c & 0x07;
-        } else {
-            return false;
-        }
-        if (i + n >= text.size()) return false;
-        for (std::size_t k = 1; k <= n; ++k) {
-            const auto d = static_cast<unsigned char>(text[i + k]);
-            if ((d & 0xc0) != 0x80) return false;
-            cp = (cp << 6) | (d & 0x3f);
-        }
-        if ((n == 2 && cp < 0x800) || (n == 3 && (cp < 0x10000 || cp > 0x10ffff)) || (cp >= 0xd800 && cp <= 0xdfff)) {
-            return false;
-        }
-        i += n + 1;
-    }
-    return true;
-}
-
 /// What a label's TeX is turned into.
 enum class target {
     markup,  ///< Pango markup, to draw
@@ -108,7 +73,7 @@ public:
             throw bad_input("label of " + std::to_string(tex_.size()) + " bytes: at most " +
                                         std::to_string(max_label_bytes));
         }
-        if (!valid_utf8(tex_)) fail("not valid UTF-8");
+        if (!g_utf8_validate(tex_.data(), static_cast<gssize>(tex_.size()), nullptr)) fail("not valid UTF-8");
         for (const char c : tex_) {
             const auto u = static_cast<unsigned char>(c);
             if (u < 0x20 || u == 0x7f) {
@@ -407,11 +372,8 @@ private:
             i = end;
             if (in_math) {
                 out += ch == " " ? "\\ " : math_character(ch, std::string(tex_));
-            } else if (ch.size() > 1) {
-                out += text_latex(ch);
             } else {
-                const std::string_view e = text_escape(ch[0]);
-                out += e.empty() ? ch : std::string(e);
+                out += ch.size() > 1 ? text_latex(ch) : text(ch);
             }
         }
         return out;

@@ -125,6 +125,12 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
     }
     if (!o.frames.empty() && !o.at.empty()) throw usage_error("give --frames or --at, not both");
     if (o.paper_files && !animations.empty()) throw usage_error("--paper-files applies to still figures, not to animations");
+    for (const char* key : {"figure_width_cm", "figure_height_cm"}) {
+        if (o.paper_files && theme.given.contains(key)) {
+            throw usage_error(std::string(key) + " sizes a whole figure, and --paper-files writes each panel to a file "
+                              "of its own, sized as in the paper's source: set panel_width_cm instead");
+        }
+    }
 
     const std::vector<figures::figure_file> jobs = figures::files_for(stills, formats, o.dir, o.paper_files, build);
     if (jobs.empty() && animations.empty()) {

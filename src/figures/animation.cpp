@@ -88,10 +88,8 @@ void write_animation(const entry& e, const build_options& options, const plot::t
         throw bad_input("frames " + std::to_string(first + 1) + ".." + std::to_string(last + 1) +
                         " are outside animation '" + e.id + "', which has frames 1.." + std::to_string(plan.frames));
     }
-    build_options still = options;
+    build_options still = sized_by(options, theme);
     still.animated = true;
-    still.panel_width_cm = theme.panel_width_cm;
-    still.panel_aspect = theme.panel_aspect;
     const plot::figure base = build(e, still);
     const auto frame = [&](int i) { return animation_frame(e, still, plan, base, plan.time(i)); };
     format.animate(plot::animation_frames{first, last, plan.frames, plan.fps, frame}, theme, dir, e.id, output);

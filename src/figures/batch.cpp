@@ -159,14 +159,11 @@ void write_figures(const std::vector<figure_file>& files, const build_options& o
             std::exception_ptr error;
             try {
                 if (t.file == build_it) {
-                    build_options themed = options;
-                    themed.panel_width_cm = theme.panel_width_cm;
-                    themed.panel_aspect = theme.panel_aspect;
-                    figure = std::make_shared<const plot::figure>(build(*distinct[t.figure], themed));
+                    figure = std::make_shared<const plot::figure>(build(*distinct[t.figure], sized_by(options, theme)));
                 } else {
                     const figure_file& f = files[t.file];
                     const plot::figure& whole = *built[t.figure];
-                    plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, f.figure->spec.panel_width_cm.value_or(theme.panel_width_cm)), theme,
+                    plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, whole.panel_width_cm), theme,
                                f.path, output);
                 }
             } catch (...) {

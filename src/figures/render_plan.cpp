@@ -51,7 +51,7 @@ void check_raster_sizes(const std::vector<const entry*>& figures, const std::vec
     for (const auto* e : figures) {
         const bool moving = e->spec.animation.has_value();
         const plot::theme& th = moving ? style.moving_theme : style.still_theme;
-        const build_options grid{build.amplitudes, th.panel_width_cm, th.panel_aspect};
+        const build_options grid = sized_by(build, th);
         for (const auto& f : formats) {
             if (!plot::find_format(f).raster) continue;
             try {
@@ -65,9 +65,7 @@ void check_raster_sizes(const std::vector<const entry*>& figures, const std::vec
 
 std::string render_one(const entry& e, const build_options& build, const plot::theme& theme,
                        std::string_view format, const plot::output_options& output) {
-    build_options one = build;
-    one.panel_width_cm = theme.panel_width_cm;
-    one.panel_aspect = theme.panel_aspect;
+    const build_options one = sized_by(build, theme);
     plot::check_raster_size(figure_grid(e.spec, one), theme, output.dpi);
     return plot::render(figures::build(e, one), theme, format, output);
 }
@@ -117,7 +115,7 @@ void check_distinct_outputs(const std::vector<figure_file>& stills, const std::v
 void check_animation_work(const std::vector<animation_job>& animations, const std::vector<std::string>& formats,
                           const build_options& build, const render_style& style) {
     for (const auto& m : animations) {
-        const build_options grid{build.amplitudes, style.moving_theme.panel_width_cm, style.moving_theme.panel_aspect};
+        const build_options grid = sized_by(build, style.moving_theme);
         const auto [w, h] = plot::pixel_size(figure_grid(m.figure->spec, grid), style.moving_theme, style.moving.dpi);
         const double frames = m.last - m.first + 1;
         const double pixels = frames * w * h;
@@ -165,10 +163,8 @@ void write_render(const std::vector<figure_file>& stills, const std::vector<anim
                 continue;
             }
             // A format that holds no animation, or --at: one frame.
-            build_options still = build;
+            build_options still = sized_by(build, style.moving_theme);
             still.animated = true;
-            still.panel_width_cm = style.moving_theme.panel_width_cm;
-            still.panel_aspect = style.moving_theme.panel_aspect;
             const double w0_t = at ? *at * m.plan.reference_period : m.plan.time(m.first);
             const auto frame = animation_frame(*m.figure, still, m.plan, figures::build(*m.figure, still), w0_t);
             plot::save(frame, style.moving_theme, dir / (m.figure->id + "." + f), style.moving);

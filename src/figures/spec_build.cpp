@@ -86,8 +86,9 @@ plot::figure figure_grid(const figure_spec& spec, const build_options& options) 
     plot::figure f;
     f.cols = std::min(spec.columns.value_or(3), n);
     f.rows = (n + f.cols - 1) / f.cols;
-    f.panel_width_cm = spec.panel_width_cm.value_or(options.panel_width_cm);
-    f.panel_aspect = spec.panel_aspect.value_or(options.panel_aspect);
+    f.panel_width_cm = options.panel_width_given ? options.panel_width_cm
+                                                 : spec.panel_width_cm.value_or(options.panel_width_cm);
+    f.panel_aspect = options.panel_aspect_given ? options.panel_aspect : spec.panel_aspect.value_or(options.panel_aspect);
     f.shared_legend = spec.legend == legend_mode::first;
     return f;
 }

@@ -183,6 +183,9 @@ plot::theme load(std::string_view name_or_file, int depth) {
     }
     apply(r, doc, t);
     throw_problems(r);
+    if (is_file) {
+        for (const auto& [key, value] : doc) t.given.emplace(key.str());
+    }
     t.name = is_file ? std::filesystem::path(file).stem().string() : std::string(name_or_file);
     return t;
 }
@@ -267,6 +270,7 @@ plot::theme load_theme(std::string_view name_or_file, const std::vector<std::str
         for (auto& p : r.problems()) p.where = {"--set " + set, 0, 0};
         throw_problems(r);
         if (key == "font_family") font_from = "--set " + set;
+        t.given.insert(key);
     }
     check_font(t.font_family, font_from);
     return t;

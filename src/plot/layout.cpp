@@ -164,6 +164,81 @@ void thin_crowded_ticks(const text_engine& text, const std::vector<panel>& panel
     }
 }
 
+namespace {
+
+/// The extent of one series along an axis (log10 of it on a log axis), and how far inside
+/// the frame its ink must stay, in points.
+struct extent {
+    double lo;
+    double hi;
+    double clear;
+};
+
+double clearance(const series& s, const theme& th) {
+    const double gap = std::max(1.0, th.line_width_pt);
+    const double line = s.line == line_style::none ? 0.0 : 0.5 * th.line_width_pt * s.width_scale;
+    const double marker =
+        s.marker == marker_style::none ? 0.0 : th.marker_radius_pt * s.marker_scale + 0.5 * th.line_width_pt;
+    return std::max(line, marker) + 0.5 * th.frame_width_pt + gap;
+}
+
+std::vector<extent> extents(const panel& p, const theme& th, bool horizontal, bool log) {
+    std::vector<extent> out;
+    for (const auto& s : p.data) {
+        if (!s.autoscale || !s.sets_limits) continue;
+        if (s.line == line_style::none && s.marker == marker_style::none) continue;
+        extent e{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), clearance(s, th)};
+        for (double v : horizontal ? s.x : s.y) {
+            if (!std::isfinite(v) || (log && !(v > 0))) continue;
+            const double u = log ? std::log10(v) : v;
+            e.lo = std::min(e.lo, u);
+            e.hi = std::max(e.hi, u);
+        }
+        if (e.lo <= e.hi) out.push_back(e);
+    }
+    return out;
+}
+
+}  // namespace
+
+void keep_data_off_frame(const std::vector<panel>& panels, std::vector<panel_plan>& plans,
+                         const std::vector<rect>& cells, const theme& th) {
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        const panel& p = panels[i];
+        if (p.frameless) continue;
+        for (const bool horizontal : {true, false}) {
+            const axis& a = horizontal ? p.x : p.y;
+            if (a.min && a.max) continue;
+            const bool log = a.kind == scale::log;
+            const std::vector<extent> data = extents(p, th, horizontal, log);
+            if (data.empty()) continue;
+            // The length in points depends on the limits where the aspect is equal: a few
+            // rounds settle it.
+            for (int round = 0; round < 4; ++round) {
+                tick_set& t = horizontal ? plans[i].xt : plans[i].yt;
+                const rect area = panel_area(p, plans[i], cells[i]);
+                const double length = horizontal ? area.w : area.h;
+                double lo = log ? std::log10(t.lo) : t.lo;
+                double hi = log ? std::log10(t.hi) : t.hi;
+                if (!(length > 0) || !(hi > lo)) break;
+                const double per_pt = (hi - lo) / length;
+                double need_lo = lo;
+                double need_hi = hi;
+                for (const extent& e : data) {
+                    need_lo = std::min(need_lo, e.lo - e.clear * per_pt);
+                    need_hi = std::max(need_hi, e.hi + e.clear * per_pt);
+                }
+                const bool moved = (!a.min && need_lo < lo) || (!a.max && need_hi > hi);
+                if (!moved) break;
+                if (!a.min) lo = need_lo;
+                if (!a.max) hi = need_hi;
+                t.lo = log ? std::pow(10.0, lo) : lo;
+                t.hi = log ? std::pow(10.0, hi) : hi;
+            }
+        }
+    }
+}
+
 void share_margins(std::vector<panel_plan>& plans, const std::vector<panel_plan>& peers, const theme& th, int cols) {
     std::vector<double> column_w(static_cast<std::size_t>(std::max(cols, 1)), 0.0);
     for (std::size_t i = 0; i < plans.size(); ++i) {

@@ -72,6 +72,13 @@ void thin_crowded_ticks(const text_engine& text, const std::vector<panel>& panel
                         const std::vector<panel_plan>& peers, const std::vector<rect>& cells, const theme& th,
                         int cols);
 
+/// Moves free axis limits (those a panel does not fix) out until every point of the data
+/// that sets them stands clear of the frame in `cells`: a marker by its radius, a line by
+/// its half width, each and the frame's half width by a gap of a point more, so that no
+/// curve runs along a frame line and no marker is cut, at any size, dpi or format.
+void keep_data_off_frame(const std::vector<panel>& panels, std::vector<panel_plan>& plans,
+                         const std::vector<rect>& cells, const theme& th);
+
 /// Where a panel's data lands: the axes rectangle, the maps, the series in device points.
 struct panel_geometry {
     rect area;

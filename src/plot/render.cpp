@@ -2,6 +2,7 @@
 #include "plot/render.hpp"
 
 #include "plot/geometry.hpp"
+#include "plot/handles.hpp"
 #include "plot/layout.hpp"
 #include "plot/legend.hpp"
 #include "plot/strokes.hpp"
@@ -34,11 +35,15 @@ std::string escape_markup(const std::string& text) {
 
 page_size figure_size(const figure& fig, const theme& th) {
     constexpr double pt_per_cm = 72.0 / 2.54;
-    if (th.fixed_width_cm > 0 && th.fixed_height_cm > 0) {
-        return {th.fixed_width_cm * pt_per_cm, th.fixed_height_cm * pt_per_cm};
-    }
-    const double w = fig.panel_width_cm * pt_per_cm;
-    return {w * fig.cols, w * fig.panel_aspect * fig.rows};
+    const double w = fig.panel_width_cm * pt_per_cm * fig.cols;
+    const double h = fig.panel_width_cm * pt_per_cm * fig.panel_aspect * fig.rows;
+    const double fixed_w = th.fixed_width_cm * pt_per_cm;
+    const double fixed_h = th.fixed_height_cm * pt_per_cm;
+    // A width or a height alone scales the panels' size to it.
+    if (fixed_w > 0 && fixed_h > 0) return {fixed_w, fixed_h};
+    if (fixed_w > 0) return {fixed_w, fixed_w * h / w};
+    if (fixed_h > 0) return {fixed_h * w / h, fixed_h};
+    return {w, h};
 }
 
 namespace {
@@ -207,7 +212,7 @@ figure with_theme_styles(const figure& fig, const theme& th) {
 }  // namespace
 
 void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
-                 std::vector<placed_text>* texts) {
+                 std::vector<placed_text>* texts, std::vector<panel_frame>* frames) {
     const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), [](const panel& p) {
         return std::any_of(p.data.begin(), p.data.end(), [](const series& s) { return !s.style_key.empty(); });
     });
@@ -243,6 +248,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     };
     std::vector<rect> cells = make_cells(0);
     thin_crowded_ticks(text, fig.panels, plans, peers, cells, th, fig.cols);
+    keep_data_off_frame(fig.panels, plans, cells, th);
     // Axes too small to read are an error, not a figure.
     const auto check_room = [&] {
         const double least = 3 * th.tick_font_pt;
@@ -266,8 +272,18 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
             throw layout_error(what);
         }
     };
+    const auto record_frames = [&] {
+        if (!frames) return;
+        frames->clear();
+        for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+            const rect a = panel_area(fig.panels[i], plans[i], cells[i]);
+            frames->push_back(panel_frame{a.x, a.y, a.w, a.h, plans[i].xt.lo, plans[i].xt.hi, plans[i].yt.lo,
+                                          plans[i].yt.hi, fig.panels[i].frameless});
+        }
+    };
     if (!fig.shared_legend || fig.panels.empty()) {
         check_room();
+        record_frames();
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {
             draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], true, pass);
         }
@@ -289,12 +305,25 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
                              rect{th.padding_pt, 0.3 * th.padding_pt, size.width_pt - 2 * th.padding_pt, band});
         }
         cells = make_cells(band + 0.3 * th.padding_pt);
+        keep_data_off_frame(fig.panels, plans, cells, th);
     }
     check_room();
+    record_frames();
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
         if (legend_panel && i == *legend_panel) plans[i].legend = lg;
         draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], legend_panel && i == *legend_panel, pass);
     }
+}
+
+std::vector<panel_frame> panel_frames(const figure& fig, const theme& th) {
+    const page_size size = figure_size(fig, th);
+    const surface_ptr surface(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, nullptr));
+    check_cairo(cairo_surface_status(surface.get()), "a recording surface");
+    const context_ptr cr(cairo_create(surface.get()));
+    check_cairo(cairo_status(cr.get()), "a drawing context");
+    std::vector<panel_frame> frames;
+    draw_figure(cr.get(), fig, th, size, draw_pass::all, nullptr, &frames);
+    return frames;
 }
 
 }  // namespace plot

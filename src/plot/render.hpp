@@ -27,6 +27,19 @@ enum class draw_pass { all, still, overlay };
 
 struct placed_text;
 
+/// Where a panel's axes landed on the page, in points from the top left, and their limits.
+struct panel_frame {
+    double x = 0;          ///< left edge of the axes
+    double y = 0;          ///< top edge of the axes
+    double w = 0;          ///< width
+    double h = 0;          ///< height
+    double x_lo = 0;       ///< x at the left edge
+    double x_hi = 1;       ///< x at the right edge
+    double y_lo = 0;       ///< y at the bottom edge
+    double y_hi = 1;       ///< y at the top edge
+    bool frameless = false;  ///< a drawing without axes
+};
+
 /// A figure that cannot be laid out as asked: its size leaves axes too small to read.
 class layout_error : public bad_input {
 public:
@@ -37,7 +50,11 @@ public:
 /// `texts`, every text is recorded there (for a LaTeX overlay) instead of drawn.
 /// Throws std::runtime_error if the theme's font is not installed, layout_error if a panel's
 /// axes would be smaller than three times the tick font size either way.
+/// With `frames`, each panel's frame is recorded there.
 void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size, draw_pass pass = draw_pass::all,
-                 std::vector<placed_text>* texts = nullptr);
+                 std::vector<placed_text>* texts = nullptr, std::vector<panel_frame>* frames = nullptr);
+
+/// The frames of the figure's panels as draw_figure lays them out at the figure's size.
+std::vector<panel_frame> panel_frames(const figure& fig, const theme& th);
 
 }  // namespace plot

@@ -4,6 +4,7 @@
 #include "plot/figure.hpp"
 
 #include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,7 @@ struct theme {
     double fixed_width_cm = 0;        ///< whole-figure width, or 0 to size by panels
     double fixed_height_cm = 0;       ///< whole-figure height, or 0 to size by panels
     double dpi = 300;                 ///< PNG resolution where none is asked for
+    std::set<std::string> given;      ///< keys a user's style file or the command line set: they win over a figure's own
 };
 
 /// True if the first family of a comma-separated `font_family` is installed where figures

@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Rules every figure keeps, built-in or a user's, in every theme and at every size: data
+// stand clear of the frame.
+#include "figures/build_options.hpp"
+#include "figures/catalog.hpp"
+#include "figures/spec.hpp"
+#include "figures/spec_build.hpp"
+#include "figures/themes.hpp"
+#include "plot/render.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct case_figure {
+    std::string name;
+    plot::figure figure;
+};
+
+/// Every built-in still figure and a few user specs of every plot kind, built for `theme`.
+std::vector<case_figure> figures_for(const plot::theme& theme) {
+    std::vector<case_figure> out;
+    figures::build_options o;
+    o.panel_width_cm = theme.panel_width_cm;
+    o.panel_aspect = theme.panel_aspect;
+    for (const auto& e : figures::catalog()) {
+        if (e.spec.animation) continue;
+        out.push_back({e.id, figures::build(e, o)});
+    }
+    const char* specs[] = {
+        "[[panel]]\nplot = \"trajectory\"\ntheta0 = \"170deg\"\nmethods = [\"exact\", \"harmonic\"]\n",
+        "[[panel]]\nplot = \"trajectory\"\ntheta0 = \"pi/2\"\nmethods = [{ method = \"exact\", style = \"solid\" }]\n",
+        "[[panel]]\nplot = \"phase\"\ntheta0 = [\"pi/3\", \"0.9pi\"]\nmethods = [\"exact\"]\n",
+        "[[panel]]\nplot = \"period\"\nmethods = [\"exact\", \"lowest\"]\n",
+        "[[panel]]\nplot = \"spectrum\"\ntheta0 = [\"pi/2\", \"0.99pi\"]\nmethods = [\"exact\"]\nharmonics = 9\n",
+        "[[panel]]\nplot = \"coefficient\"\nmethods = [\"exact\", \"lowest\"]\n",
+    };
+    int i = 0;
+    for (const char* text : specs) {
+        const auto spec = figures::parse_spec(text, "user" + std::to_string(++i) + ".toml");
+        out.push_back({"user spec " + std::to_string(i), figures::build_figure(spec, o)});
+    }
+    return out;
+}
+
+/// How far inside the frame a series' ink must stay, in points: its marker or half its
+/// line, the frame's half width, and half a point of daylight.
+double least_distance(const plot::series& s, const plot::theme& th) {
+    const double line = s.line == plot::line_style::none ? 0.0 : 0.5 * th.line_width_pt * s.width_scale;
+    const double marker =
+        s.marker == plot::marker_style::none ? 0.0 : th.marker_radius_pt * s.marker_scale + 0.5 * th.line_width_pt;
+    return std::max(line, marker) + 0.5 * th.frame_width_pt + 0.5;
+}
+
+double to_unit(double v, bool log) { return log ? std::log10(v) : v; }
+
+}  // namespace
+
+TEST(FigureRules, DataStandClearOfTheFrameInEveryThemeAndSize) {
+    int checked = 0;
+    for (const auto& builtin : figures::builtin_themes()) {
+        for (const char* size : {"", "figure_width_cm=8.6", "panel_width_cm=4.2", "figure_width_cm=17"}) {
+            std::vector<std::string> sets;
+            if (*size) sets.emplace_back(size);
+            const plot::theme theme = figures::load_theme(std::string(builtin.name), sets);
+            for (const auto& [name, fig] : figures_for(theme)) {
+                std::vector<plot::panel_frame> frames;
+                try {
+                    frames = plot::panel_frames(fig, theme);
+                } catch (const plot::layout_error&) {
+                    continue;  // a size too small for the theme's text is refused, not drawn
+                }
+                ASSERT_EQ(frames.size(), fig.panels.size()) << name;
+                for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+                    const auto& p = fig.panels[i];
+                    const auto& f = frames[i];
+                    if (f.frameless) continue;
+                    const bool xlog = p.x.kind == plot::scale::log;
+                    const bool ylog = p.y.kind == plot::scale::log;
+                    const double x_per_pt = (to_unit(f.x_hi, xlog) - to_unit(f.x_lo, xlog)) / f.w;
+                    const double y_per_pt = (to_unit(f.y_hi, ylog) - to_unit(f.y_lo, ylog)) / f.h;
+                    for (const auto& s : p.data) {
+                        if (!s.autoscale || !s.sets_limits) continue;
+                        if (s.line == plot::line_style::none && s.marker == plot::marker_style::none) continue;
+                        const double d = least_distance(s, theme);
+                        const std::string where = builtin.name.data() + std::string(" ") + size + " " + name +
+                                                  " panel " + std::to_string(i + 1) + " '" + s.label.markup + "'";
+                        for (std::size_t k = 0; k < s.x.size(); ++k) {
+                            const double x = s.x[k];
+                            const double y = s.y[k];
+                            if (!std::isfinite(x) || !std::isfinite(y)) continue;
+                            if ((xlog && !(x > 0)) || (ylog && !(y > 0))) continue;
+                            if (!p.y.max) {
+                                EXPECT_GE((to_unit(f.y_hi, ylog) - to_unit(y, ylog)) / y_per_pt, d) << where;
+                            }
+                            if (!p.y.min) {
+                                EXPECT_GE((to_unit(y, ylog) - to_unit(f.y_lo, ylog)) / y_per_pt, d) << where;
+                            }
+                            if (!p.x.max) {
+                                EXPECT_GE((to_unit(f.x_hi, xlog) - to_unit(x, xlog)) / x_per_pt, d) << where;
+                            }
+                            if (!p.x.min) {
+                                EXPECT_GE((to_unit(x, xlog) - to_unit(f.x_lo, xlog)) / x_per_pt, d) << where;
+                            }
+                            ++checked;
+                        }
+                    }
+                    if (HasFailure()) return;
+                }
+            }
+        }
+    }
+    EXPECT_GT(checked, 10000);
+}
+
+TEST(FigureRules, SizeSettingsApplyToEveryFigureInOrder) {
+    // The command line over a style file over a spec over a theme, for every figure.
+    constexpr double pt_per_cm = 72.0 / 2.54;
+    const auto dir = std::filesystem::temp_directory_path() / "pendulum-figures-size-order";
+    std::filesystem::create_directories(dir);
+    const auto style = (dir / "narrow.toml").string();
+    {
+        std::ofstream(style) << "panel_width_cm = 4.5\npanel_aspect = 0.5\n";
+    }
+    for (const auto& builtin : figures::builtin_themes()) {
+        const std::string name(builtin.name);
+        const plot::theme plain = figures::load_theme(name);
+        const plot::theme wide = figures::load_theme(name, {"figure_width_cm=17.8"});
+        const plot::theme narrow = figures::load_theme(name, {"panel_width_cm=4.3"});
+        const plot::theme file = figures::load_theme(style);
+        const plot::theme file_and_set = figures::load_theme(style, {"panel_width_cm=5.1"});
+        for (const auto& e : figures::catalog()) {
+            const auto size = [&](const plot::theme& th) {
+                return plot::figure_size(figures::build(e, figures::sized_by({}, th)), th);
+            };
+            const int cols = figures::build(e, figures::sized_by({}, plain)).cols;
+            if (plain.fixed_height_cm == 0) {
+                EXPECT_NEAR(size(wide).width_pt, 17.8 * pt_per_cm, 1e-9) << name << " " << e.id;
+            }
+            if (plain.fixed_width_cm == 0) {
+                EXPECT_NEAR(size(narrow).width_pt, cols * 4.3 * pt_per_cm, 1e-9) << name << " " << e.id;
+                EXPECT_NEAR(size(file_and_set).width_pt, cols * 5.1 * pt_per_cm, 1e-9) << name << " " << e.id;
+            }
+            if (name == "paper") {
+                EXPECT_NEAR(size(file).width_pt, cols * 4.5 * pt_per_cm, 1e-9) << e.id;
+                const auto f = figures::build(e, figures::sized_by({}, file));
+                EXPECT_NEAR(size(file).height_pt, f.rows * 4.5 * 0.5 * pt_per_cm, 1e-9) << e.id;
+            }
+        }
+    }
+    std::filesystem::remove_all(dir);
+}

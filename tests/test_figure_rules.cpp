@@ -3,6 +3,7 @@
 // stand clear of the frame.
 #include "figures/build_options.hpp"
 #include "figures/catalog.hpp"
+#include "figures/errors.hpp"
 #include "figures/spec.hpp"
 #include "figures/spec_build.hpp"
 #include "figures/themes.hpp"
@@ -156,4 +157,44 @@ TEST(FigureRules, SizeSettingsApplyToEveryFigureInOrder) {
         }
     }
     std::filesystem::remove_all(dir);
+}
+
+TEST(FigureRules, AmplitudeRangesInsideZeroToPiAreDrawnAsAsked) {
+    const std::pair<const char*, const char*> ranges[] = {
+        {"pi-1e-6", "pi-1e-9"}, {"1e-6", "1e-3"}, {"0", "pi"}, {"3", "pi"}, {"0", "1e-4"}};
+    for (const char* plot : {"period", "coefficient"}) {
+        for (const auto& [lo, hi] : ranges) {
+            const std::string text = std::string("[[panel]]\nplot = \"") + plot + "\"\nmethods = [\"exact\", \"second\"]\n" +
+                                     "range = [\"" + lo + "\", \"" + hi + "\"]\n";
+            const auto spec = figures::parse_spec(text, "range.toml");
+            const auto fig = figures::build_figure(spec);
+            const double a = spec.panels.front().range->at(0);
+            const double b = spec.panels.front().range->at(1);
+            for (const auto& s : fig.panels.front().data) {
+                ASSERT_GE(s.x.size(), 3u) << plot << " " << lo << ".." << hi << " " << s.label.markup;
+                EXPECT_TRUE(std::is_sorted(s.x.begin(), s.x.end())) << plot << " " << lo << ".." << hi;
+                EXPECT_GE(s.x.front(), a) << plot << " " << lo << ".." << hi;
+                EXPECT_LE(s.x.back(), b) << plot << " " << lo << ".." << hi;
+                // Spread over the range, not squeezed into a corner of it.
+                EXPECT_GE(s.x.back() - s.x.front(), 0.9 * (b - a)) << plot << " " << lo << ".." << hi;
+            }
+        }
+    }
+}
+
+TEST(FigureRules, AMethodWithoutValueIsRefusedInEveryPlotKind) {
+    const char* specs[] = {
+        "[[panel]]\nplot = \"trajectory\"\ntheta0 = \"pi-1e-6\"\nmethods = [\"exact\", \"order:6\"]\n",
+        "[[panel]]\nplot = \"phase\"\ntheta0 = [\"pi-1e-6\"]\nmethods = [\"exact\", \"order:6\"]\n",
+        "[[panel]]\nplot = \"period\"\nrange = [\"pi-1e-6\", \"pi-1e-7\"]\nmethods = [\"exact\", \"order:6\"]\n",
+    };
+    for (const char* text : specs) {
+        const auto spec = figures::parse_spec(text, "nan.toml");
+        try {
+            (void)figures::build_figure(spec);
+            ADD_FAILURE() << "no error for\n" << text;
+        } catch (const figures::bad_input& e) {
+            EXPECT_NE(std::string(e.what()).find("'order 6' has no value"), std::string::npos) << e.what();
+        }
+    }
 }

@@ -11,7 +11,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <map>
 #include <memory>
+#include <stdexcept>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,15 +23,45 @@ namespace pendulum::cli {
 
 namespace {
 
+/// How an option's text becomes a TOML value of its key.
+enum class value_kind { text, list, number, integer, pair, integer_pair, boolean, range };
+
+/// One option of plot: the spec key it sets, in [[panel]] or [figure].
+struct key_option {
+    std::string_view key;        ///< the spec key
+    bool figure;                 ///< a [figure] key, not a [[panel]] one
+    std::string_view option;     ///< the option, --name
+    std::string_view type_name;  ///< its value in --help
+    value_kind kind;             ///< how its value is written in the spec
+    std::string_view help;       ///< --help text
+};
+
+/// Every spec key that means something for a one-panel figure has its option here; the
+/// keys a spec file alone sets (paper_file, line, columns, panel sizes: see --set) do not.
+constexpr key_option key_options[] = {
+    {"theta0", false, "--theta0", "LIST", value_kind::list, "Amplitudes, a comma-separated LIST (one for trajectory)"},
+    {"methods", false, "--methods", "LIST", value_kind::list, "Methods, a comma-separated LIST (see 'list')"},
+    {"range", false, "--range", "A,B", value_kind::range, "x range a,b: times, or amplitudes as angles"},
+    {"time", false, "--time", "UNIT", value_kind::text, "Time axis of a trajectory: t/T (default), t/T0 or t/s"},
+    {"harmonic", false, "--harmonic", "N", value_kind::integer, "Coefficient plots: the harmonic 2k+1 (default 1)"},
+    {"harmonics", false, "--harmonics", "N", value_kind::integer, "Spectrum plots: how many odd harmonics"},
+    {"orders", false, "--orders", "A,B", value_kind::integer_pair, "Convergence plots: the orders N from A to B"},
+    {"y", false, "--y", "AXIS", value_kind::text, "Period plots: value (default), error-percent or error-log"},
+    {"angle_unit", false, "--angle-unit", "UNIT", value_kind::text, "Angles on the axes in rad (default) or deg"},
+    {"separatrix", false, "--separatrix", "BOOL", value_kind::boolean, "Phase plots: draw the separatrix, true or false"},
+    {"trail", false, "--trail", "T", value_kind::number, "Pendulum drawings: a fading trail of T periods"},
+    {"y_range", false, "--y-range", "A,B", value_kind::pair, "y axis limits a,b (default: from the data)"},
+    {"x_label", false, "--x-label", "TEXT", value_kind::text, "x axis label, text with TeX math in $...$"},
+    {"y_label", false, "--y-label", "TEXT", value_kind::text, "y axis label, text with TeX math in $...$"},
+    {"title", false, "--panel-title", "TEXT", value_kind::text, "The panel's title above its frame (default: the amplitude)"},
+    {"title", true, "--title", "TEXT", value_kind::text, "The figure's title, drawn above it and kept in PDF and SVG metadata"},
+    {"legend", true, "--legend", "WHERE", value_kind::text, "Legend: each (default), first or none"},
+};
+
 /// The options of plot.
 struct plot_options {
     std::string kind;
-    std::string theta0;
-    std::string methods;
-    std::string range;
-    std::string time;
-    int harmonic = 0;
-    std::string y;
+    std::map<std::string_view, std::string> values;  // by option name, as given
     std::string name;
     std::string dir = ".";
     std::string formats = "pdf,png";
@@ -55,31 +88,71 @@ std::string toml_list(const std::string& text) {
     return out + "]";
 }
 
-/// The plot command: a one-panel spec made from the options, checked like a spec file.
-int run_plot(const plot_options& o) {
-    std::string toml = "[[panel]]\nplot = " + toml_string(o.kind) + "\n";
-    if (!o.theta0.empty()) toml += "theta0 = " + toml_list(o.theta0) + "\n";
-    if (!o.methods.empty()) toml += "methods = " + toml_list(o.methods) + "\n";
-    if (!o.range.empty()) {
-        const auto parts = split_list(o.range);
-        if (parts.size() != 2) throw usage_error("--range '" + o.range + "': give two values, A,B");
-        if (o.kind == "trajectory") {
-            double v[2];
-            for (int i = 0; i < 2; ++i) {
-                try {
-                    v[i] = parse_expression(parts[static_cast<std::size_t>(i)]);
-                } catch (const std::invalid_argument& e) {
-                    throw usage_error(std::string("--range: ") + e.what());
-                }
-            }
-            toml += "range = [" + format_double(v[0]) + ", " + format_double(v[1]) + "]\n";
+/// A number as the option gave it, checked: TOML reads it as written.
+std::string number_text(const key_option& k, const std::string& text, bool integer) {
+    std::size_t used = 0;
+    bool ok = false;
+    try {
+        if (integer) {
+            (void)std::stoll(text, &used);
         } else {
-            toml += "range = " + toml_list(o.range) + "\n";
+            ok = std::isfinite(std::stod(text, &used));
+        }
+        ok = used == text.size() && (integer || ok);
+    } catch (const std::exception&) {
+        ok = false;
+    }
+    if (!ok) throw usage_error(std::string(k.option) + " '" + text + "': not " + (integer ? "a whole number" : "a number"));
+    return integer ? std::to_string(std::stoll(text)) : format_double(std::stod(text));
+}
+
+/// The option's value as TOML.
+std::string toml_value(const key_option& k, const std::string& text, const std::string& kind) {
+    switch (k.kind) {
+        case value_kind::text: return toml_string(text);
+        case value_kind::list: return toml_list(text);
+        case value_kind::number: return number_text(k, text, false);
+        case value_kind::integer: return number_text(k, text, true);
+        case value_kind::boolean:
+            if (text != "true" && text != "false") throw usage_error(std::string(k.option) + " '" + text + "': true or false");
+            return text;
+        case value_kind::pair:
+        case value_kind::integer_pair:
+        case value_kind::range: {
+            const auto parts = split_list(text);
+            if (parts.size() != 2) throw usage_error(std::string(k.option) + " '" + text + "': give two values, A,B");
+            if (k.kind == value_kind::range && kind != "trajectory") return toml_list(text);
+            std::string out = "[";
+            for (const auto& part : parts) {
+                std::string v;
+                if (k.kind == value_kind::range) {
+                    // Times may be expressions too: 3*T is not a time, but 1/3 is.
+                    try {
+                        v = format_double(parse_expression(part));
+                    } catch (const std::invalid_argument& e) {
+                        throw usage_error(std::string(k.option) + ": " + e.what());
+                    }
+                } else {
+                    v = number_text(k, part, k.kind == value_kind::integer_pair);
+                }
+                out += (out.size() > 1 ? ", " : "") + v;
+            }
+            return out + "]";
         }
     }
-    if (!o.time.empty()) toml += "time = " + toml_string(o.time) + "\n";
-    if (o.harmonic != 0) toml += "harmonic = " + std::to_string(o.harmonic) + "\n";
-    if (!o.y.empty()) toml += "y = " + toml_string(o.y) + "\n";
+    throw std::logic_error("unknown option kind");
+}
+
+/// The plot command: a one-panel spec made from the options, checked like a spec file.
+int run_plot(const plot_options& o) {
+    std::string figure;
+    std::string toml = "[[panel]]\nplot = " + toml_string(o.kind) + "\n";
+    for (const auto& k : key_options) {
+        const auto it = o.values.find(k.option);
+        if (it == o.values.end()) continue;
+        (k.figure ? figure : toml) += std::string(k.key) + " = " + toml_value(k, it->second, o.kind) + "\n";
+    }
+    if (!figure.empty()) toml = "[figure]\n" + figure + toml;
     figures::entry e;
     try {
         e.source = toml;
@@ -113,14 +186,13 @@ command add_plot_command(CLI::App& app) {
     cmd->add_option("kind", po->kind, figures::plot_names(false, "or"))
         ->required()
         ->type_name("KIND");
-    cmd->add_option("--theta0", po->theta0, "Amplitudes, a comma-separated LIST (one for trajectory)")
-        ->type_name("LIST")->check(non_empty);
-    cmd->add_option("--methods", po->methods, "Methods, a comma-separated LIST (see 'list')")->type_name("LIST");
-    cmd->add_option("--range", po->range, "x range a,b: times, or amplitudes as angles")->type_name("A,B");
-    cmd->add_option("--time", po->time, "Time axis of a trajectory: t/T (default) or t/T0")->type_name("UNIT");
-    cmd->add_option("--harmonic", po->harmonic, "Coefficient plots: the harmonic 2k+1 (default 1)")
-        ->type_name("N");
-    cmd->add_option("--y", po->y, "Period plots: value (default), error-percent or error-log")->type_name("AXIS");
+    for (const auto& k : key_options) {
+        cmd->add_option_function<std::string>(
+               std::string(k.option), [po, option = k.option](const std::string& v) { po->values[option] = v; },
+               std::string(k.help))
+            ->type_name(std::string(k.type_name))
+            ->check(non_empty);
+    }
     cmd->add_option("--name", po->name, "File name without extension (default: the kind)")->type_name("NAME")->check(non_empty);
     cmd->add_option("-o,--output-dir", po->dir, "Existing directory for the files (default: .)")->type_name("DIR")->check(non_empty);
     cmd->add_option("-f,--formats", po->formats, "Comma-separated formats: " + format_list() + " (default: pdf,png)")

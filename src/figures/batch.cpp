@@ -45,29 +45,6 @@ std::vector<figure_file> files_for(const std::vector<const entry*>& figures, con
 
 namespace {
 
-/// Legend text is Pango markup; CSV wants plain text.
-std::string plain_text(const std::string& markup) {
-    std::string out;
-    bool in_tag = false;
-    for (char c : markup) {
-        if (c == '<') {
-            in_tag = true;
-        } else if (c == '>') {
-            in_tag = false;
-        } else if (!in_tag) {
-            out += c;
-        }
-    }
-    const std::pair<std::string, std::string> entities[] = {
-        {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}};
-    for (const auto& [from, to] : entities) {
-        for (std::size_t pos = 0; (pos = out.find(from, pos)) != std::string::npos; pos += to.size()) {
-            out.replace(pos, from.size(), to);
-        }
-    }
-    return out;
-}
-
 /// A text field: quoted as RFC 4180 asks, and one that a spreadsheet would take for a
 /// formula (=, +, -, @, tab or carriage return first) with a single quote before it.
 std::string csv_field(const std::string& text) {

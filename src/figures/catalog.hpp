@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "plot/tex_markup.hpp"
 #include "figures/build_options.hpp"
 #include "figures/spec.hpp"
 #include "plot/figure.hpp"
@@ -19,8 +20,8 @@ struct entry {
     std::string source;        ///< the spec's TOML text
     figure_spec spec;          ///< the spec, read
 
-    /// One line: the spec's [figure] title.
-    const std::string& description() const { return spec.title; }
+    /// One line: the spec's [figure] description, or its title as plain text.
+    std::string description() const { return spec.description.empty() ? plot::tex_to_plain(spec.title) : spec.description; }
     /// True if --theta0 can replace amplitudes of this figure.
     bool takes_amplitudes() const;
 };

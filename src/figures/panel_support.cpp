@@ -77,20 +77,34 @@ plot::axis amplitude_axis(const panel_spec& p, double lo, double hi) {
 double to_axis_angle(const panel_spec& p, double theta) { return p.degrees ? theta * 180 / pi : theta; }
 
 
-/// Amplitudes where the exact values are marked (multiples of pi/24) and the fine grid for
+namespace {
 
-/// curves, inside the panel's range; the approximants are defined on (0, pi).
+/// The panel's amplitude range as drawn: an end at 0 or pi, where the approximants have no
+/// value, moves in by a thousandth of the range; any range inside (0, pi) stays as asked.
+std::pair<double, double> open_range(double lo, double hi) {
+    const double inset = 1e-3 * (hi - lo);
+    return {lo > 0 ? lo : lo + inset, hi < pi ? hi : hi - inset};
+}
+
+}  // namespace
+
+/// Amplitudes where the exact values are marked: the multiples of pi/24 in the panel's
+/// range, as in the paper, or nine even steps across a range that holds fewer than three.
 std::vector<double> circle_amplitudes(double lo, double hi) {
     std::vector<double> a;
     for (int k = 1; k <= 23; ++k) {
         const double t = k * pi / 24;
         if (t >= lo && t <= hi) a.push_back(t);
     }
-    return a;
+    if (a.size() >= 3) return a;
+    const auto [from, to] = open_range(lo, hi);
+    return grid(from, to, 8);
 }
 
+/// The fine grid for curves, inside the panel's range.
 std::vector<double> curve_amplitudes(double lo, double hi) {
-    return grid(std::max(lo, 1e-3), std::min(hi, pi - 1e-3), 400);
+    const auto [from, to] = open_range(lo, hi);
+    return grid(from, to, 400);
 }
 
 /// Seconds per unit of w0 t, for a spec with a [pendulum].
@@ -170,6 +184,28 @@ std::pair<double, double> state_at(const method_spec& m, const pendulum::exact_s
     }
     const auto sol = pendulum::method_solution(m.method, exact.amplitude());
     return {sol.theta(w0_t), pendulum::velocity(sol, w0_t)};
+}
+
+std::string plain_text(const std::string& markup) {
+    std::string out;
+    bool in_tag = false;
+    for (char c : markup) {
+        if (c == '<') {
+            in_tag = true;
+        } else if (c == '>') {
+            in_tag = false;
+        } else if (!in_tag) {
+            out += c;
+        }
+    }
+    const std::pair<std::string, std::string> entities[] = {
+        {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}};
+    for (const auto& [from, to] : entities) {
+        for (std::size_t pos = 0; (pos = out.find(from, pos)) != std::string::npos; pos += to.size()) {
+            out.replace(pos, from.size(), to);
+        }
+    }
+    return out;
 }
 
 }  // namespace figures

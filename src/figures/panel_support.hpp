@@ -84,4 +84,7 @@ plot::label method_label(const pendulum::method_choice& m);
 /// for the exact solution, solid for laws of motion, dashed for period formulas.
 plot::line_style method_line(const pendulum::method_choice& m);
 
+/// Pango markup (a legend entry) as plain text, for CSV and messages.
+std::string plain_text(const std::string& markup);
+
 }  // namespace figures

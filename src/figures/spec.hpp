@@ -126,7 +126,8 @@ struct figure_spec {
     std::optional<double> panel_width_cm;       ///< default: the theme's
     std::optional<double> panel_aspect;         ///< height / width; default: the theme's
     legend_mode legend = legend_mode::first;    ///< which panels carry a legend
-    std::string title;                          ///< document metadata, not drawn
+    std::string title;                          ///< TeX label drawn above the panels, and the documents' title
+    std::string description;                    ///< one line of plain text for lists and alt text
     std::optional<pendulum_spec> pendulum;      ///< physical units
     std::optional<animation_spec> animation;    ///< present: the figure is an animation
     std::vector<panel_spec> panels;             ///< at least one

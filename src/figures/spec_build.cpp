@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/spec_build.hpp"
 
+#include "figures/errors.hpp"
+#include "figures/panel_support.hpp"
 #include "plot/tex_markup.hpp"
 
 #include <algorithm>
@@ -90,8 +92,28 @@ plot::figure figure_grid(const figure_spec& spec, const build_options& options) 
                                                  : spec.panel_width_cm.value_or(options.panel_width_cm);
     f.panel_aspect = options.panel_aspect_given ? options.panel_aspect : spec.panel_aspect.value_or(options.panel_aspect);
     f.shared_legend = spec.legend == legend_mode::first;
+    if (!spec.title.empty()) f.title = plot::tex_label(spec.title);
     return f;
 }
+
+namespace {
+
+/// A series of the panel's methods with no value at all (a scheme without a period there)
+/// would be a legend entry over nothing: refused, naming the series and the amplitudes.
+void require_values(const plot::panel& panel, const panel_spec& p, std::size_t index) {
+    for (const auto& s : panel.data) {
+        if (s.label.empty() || s.overlay) continue;
+        if (std::any_of(s.y.begin(), s.y.end(), [](double v) { return std::isfinite(v); })) continue;
+        std::string at;
+        for (const auto& a : p.theta0) at += (at.empty() ? "" : ", ") + a.text;
+        throw bad_input("panel " + std::to_string(index + 1) + " (" + std::string(p.plot->name) +
+                        (at.empty() ? "" : ", theta0 = " + at) + "): '" + plain_text(s.label.markup) +
+                        "' has no value there (a scheme without a period at that amplitude); choose another "
+                        "method or order, or amplitudes further from pi");
+    }
+}
+
+}  // namespace
 
 plot::figure build_figure(const figure_spec& spec, const build_options& options) {
     const auto panels = panels_with(spec, options);
@@ -100,6 +122,7 @@ plot::figure build_figure(const figure_spec& spec, const build_options& options)
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const auto& p = panels[i];
         plot::panel panel = p.plot->build(c, p);
+        require_values(panel, p, i);
         if (p.y_range) {
             panel.y.min = (*p.y_range)[0];
             panel.y.max = (*p.y_range)[1];

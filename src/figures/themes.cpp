@@ -36,6 +36,7 @@ constexpr number_key number_keys[] = {
     {"tick_font_pt", &plot::theme::tick_font_pt, 1, 200},
     {"label_font_pt", &plot::theme::label_font_pt, 1, 200},
     {"legend_font_pt", &plot::theme::legend_font_pt, 1, 200},
+    {"title_font_pt", &plot::theme::title_font_pt, 0, 200},
     {"line_width_pt", &plot::theme::line_width_pt, 0.05, 50},
     {"frame_width_pt", &plot::theme::frame_width_pt, 0.05, 50},
     {"marker_radius_pt", &plot::theme::marker_radius_pt, 0.1, 50},

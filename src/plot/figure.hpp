@@ -106,6 +106,7 @@ struct figure {
     std::vector<panel> panels;     ///< row-major, rows * cols at most
     bool shared_legend = false;    ///< one legend, in the first panel with room inside the axes
     std::vector<panel> peers;      ///< panels drawn in other files whose frames these must match
+    plot::label title;             ///< drawn centred above the panels (theme's title_font_pt; 0 hides it)
 };
 
 /// Escapes text for use inside Pango markup (&, <, >, quotes).

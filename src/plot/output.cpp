@@ -92,11 +92,13 @@ std::string render_vector(const figure& fig, const theme& th, std::string_view f
 }
 
 std::string render_pdf(const figure& fig, const theme& th, const output_options&, std::vector<placed_text>* texts) {
+    const std::string title = fig.title.empty() ? std::string() : markup_text(fig.title.markup);
     return render_vector(
         fig, th, "pdf",
-        [](std::string* bytes, page_size size) {
+        [&title](std::string* bytes, page_size size) {
             cairo_surface_t* s = cairo_pdf_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
             cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
+            if (!title.empty()) cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_TITLE, title.c_str());
             return s;
         },
         texts);
@@ -269,12 +271,33 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
     return std::move(sink.bytes);
 }
 
+/// The SVG with a <title> first in its root element, as SVG's accessibility rules ask.
+std::string with_svg_title(std::string svg, const std::string& title) {
+    if (title.empty()) return svg;
+    const auto root = svg.find("<svg");
+    const auto end = root == std::string::npos ? root : svg.find('>', root);
+    if (end == std::string::npos) throw std::runtime_error("Cairo wrote an SVG without a root element");
+    std::string escaped;
+    for (char c : title) {
+        switch (c) {
+            case '&': escaped += "&amp;"; break;
+            case '<': escaped += "&lt;"; break;
+            case '>': escaped += "&gt;"; break;
+            default: escaped += c;
+        }
+    }
+    svg.insert(end + 1, "\n<title>" + escaped + "</title>");
+    return svg;
+}
+
 std::string write_svg(const figure& fig, const theme& th, const output_options&) {
-    return renumber_svg_ids(render_vector(fig, th, "svg", [](std::string* bytes, page_size size) {
-        cairo_surface_t* s = cairo_svg_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
-        cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
-        return s;
-    }));
+    return with_svg_title(renumber_svg_ids(render_vector(fig, th, "svg", [](std::string* bytes, page_size size) {
+                              cairo_surface_t* s =
+                                  cairo_svg_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
+                              cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
+                              return s;
+                          })),
+                          fig.title.empty() ? std::string() : markup_text(fig.title.markup));
 }
 
 std::string render_eps(const figure& fig, const theme& th, const output_options&, std::vector<placed_text>* texts) {

@@ -246,7 +246,18 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         }
         return cells;
     };
-    std::vector<rect> cells = make_cells(0);
+    // The title, centred above everything, at padding from the top.
+    double title_h = 0;
+    if (!fig.title.empty() && th.title_font_pt > 0) {
+        const text_ink ink = text.ink(fig.title.markup, th.title_font_pt);
+        title_h = th.padding_pt + ink.h + 0.5 * th.padding_pt;
+        if (pass != draw_pass::overlay) {
+            set_foreground(cr, th);
+            text.draw_on_baseline(fig.title, th.title_font_pt, 0.5 * size.width_pt - ink.x - 0.5 * ink.w,
+                                  th.padding_pt - ink.y, false, 0.5);
+        }
+    }
+    std::vector<rect> cells = make_cells(title_h);
     thin_crowded_ticks(text, fig.panels, plans, peers, cells, th, fig.cols);
     keep_data_off_frame(fig.panels, plans, cells, th);
     // Axes too small to read are an error, not a figure.
@@ -302,9 +313,9 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         const double band = legend_band_height(lg, th, size.width_pt - 2 * th.padding_pt);
         if (pass != draw_pass::overlay) {
             draw_legend_band(cr, text, th, fig.panels[0], lg,
-                             rect{th.padding_pt, 0.3 * th.padding_pt, size.width_pt - 2 * th.padding_pt, band});
+                             rect{th.padding_pt, title_h + 0.3 * th.padding_pt, size.width_pt - 2 * th.padding_pt, band});
         }
-        cells = make_cells(band + 0.3 * th.padding_pt);
+        cells = make_cells(title_h + band + 0.3 * th.padding_pt);
         keep_data_off_frame(fig.panels, plans, cells, th);
     }
     check_room();

@@ -63,4 +63,12 @@ bool font_family_installed(const std::string& font_family) {
     return first_family_resolves(context.get(), font_family);
 }
 
+std::string markup_text(const std::string& markup) {
+    char* text = nullptr;
+    if (!pango_parse_markup(markup.c_str(), -1, 0, nullptr, &text, nullptr, nullptr) || !text) return markup;
+    std::string out(text);
+    g_free(text);
+    return out;
+}
+
 }  // namespace plot

@@ -29,6 +29,9 @@ PangoFontMap* thread_font_map();
 /// `font_family` as that very family (fontconfig substitutes another for a missing one).
 bool first_family_resolves(PangoContext* context, const std::string& font_family);
 
+/// The text of Pango markup without its tags and entities, parsed by Pango (for metadata).
+std::string markup_text(const std::string& markup);
+
 /// The inked part of a text: a rectangle in points.
 struct text_ink {
     double x = 0;  ///< left

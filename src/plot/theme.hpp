@@ -26,6 +26,7 @@ struct theme {
     double tick_font_pt = 7.5;        ///< tick labels
     double label_font_pt = 8.5;       ///< axis labels and panel labels
     double legend_font_pt = 7.0;      ///< legend entries
+    double title_font_pt = 9.5;       ///< a figure's title; 0 draws none
     double line_width_pt = 0.8;       ///< series lines
     double frame_width_pt = 0.5;      ///< axes frame and ticks
     double marker_radius_pt = 1.6;    ///< open circles

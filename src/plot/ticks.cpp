@@ -128,10 +128,14 @@ tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
             break;
         }
     }
-    // Too long a range for multiples of pi to read well: plain numbers.
+    // Too long a range for multiples of pi to read well, or too short for two of them
+    // (amplitudes within a hair of pi): plain numbers.
     if (num == 0) return linear_ticks(lo, hi, max_ticks, expand);
     const double step = pi * num / den;
     const auto [a, b] = index_range(lo, hi, step, expand);
+    if (const auto [ia, ib] = index_range(lo, hi, step, false); ib - ia + 1 < 2) {
+        return linear_ticks(lo, hi, max_ticks, expand);
+    }
     tick_set t;
     t.lo = expand ? std::min(lo, a * step) : lo;
     t.hi = expand ? std::max(hi, b * step) : hi;

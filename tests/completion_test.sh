@@ -80,7 +80,7 @@ expect "dpi=" -- plot --set dp
 expect "$("$exe" show --theme paper | sed -n '/^\[/q; s/^\([a-z_]*\) =.*/\1=/p')" -- render --set ''
 # plot --help names every plot kind.
 for p in $(column plot); do
-    "$exe" plot --help | grep -q "\b$p\b" || fail "plot --help does not name plot kind $p"
+    "$exe" plot --help | grep "\b$p\b" >/dev/null || fail "plot --help does not name plot kind $p"
 done
 # The zsh completion reads the same tables.
 for what in ids formats themes methods motion-methods plots tex-sizes set-keys; do

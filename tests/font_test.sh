@@ -17,7 +17,7 @@ mkdir -p "$HOME" "$work/out"
 known=$(fc-list : family)
 font="" family=""
 while read -r f; do
-    fam=$(fc-scan --format '%{family[0]}\n' "$f" 2>/dev/null | head -n 1) || continue
+    fam=$(fc-scan --format '%{family[0]}\n' "$f" 2>/dev/null | sed -n 1p) || continue
     if [ -n "$fam" ] && ! grep -qxF "$fam" <<<"$known" && ! grep -q "[,\"]" <<<"$fam"; then
         font=$f family=$fam
         break

@@ -26,13 +26,13 @@ contents() { dpkg-deb --contents "$1" | awk '{ print $6 }'; }
 for f in ./usr/bin/pendulum-figures ./usr/share/man/man1/pendulum-figures.1.gz ./usr/share/man/man5/pendulum-figures-spec.5.gz \
          ./usr/share/bash-completion/completions/pendulum-figures ./usr/share/pendulum-figures/specs/period.toml \
          ./usr/share/doc/pendulum-figures/copyright; do
-    contents "$tool" | grep -qxF "$f" || { echo "FAIL: pendulum-figures lacks $f"; failures=$((failures + 1)); }
+    contents "$tool" | grep -xF "$f" >/dev/null || { echo "FAIL: pendulum-figures lacks $f"; failures=$((failures + 1)); }
 done
 for f in ./usr/include/pendulum/exact.hpp ./usr/share/doc/libpendulum-dev/copyright; do
-    contents "$dev" | grep -qxF "$f" || { echo "FAIL: libpendulum-dev lacks $f"; failures=$((failures + 1)); }
+    contents "$dev" | grep -xF "$f" >/dev/null || { echo "FAIL: libpendulum-dev lacks $f"; failures=$((failures + 1)); }
 done
 for pattern in '/pkgconfig/pendulum.pc$' '/libpendulum.a$' '/cmake/pendulum/pendulumConfig.cmake$'; do
-    contents "$dev" | grep -qE "^\./usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH)$pattern" ||
+    contents "$dev" | grep -E "^\./usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH)$pattern" >/dev/null ||
         { echo "FAIL: libpendulum-dev lacks $pattern in the multiarch directory"; failures=$((failures + 1)); }
 done
 if contents "$tool" | grep -E '/include/|\.a$' >/dev/null; then

@@ -21,13 +21,21 @@ for page in "$page1" "$page5"; do
     [ -z "$warnings" ] || fail "$(basename "$page"): man warns: $warnings"
 done
 
+# The pages' headers carry the program's version.
+version=$("$exe" --version | sed -n '1s/^pendulum-figures //p')
+for page in "$page1" "$page5"; do
+    grep "^\.TH .* \"pendulum-figures $version\"" "$page" >/dev/null ||
+        fail "$(basename "$page"): .TH does not say pendulum-figures $version"
+done
+
 # The page as text, wide enough that no option is hyphenated at a line end.
 # (Pipelines end in a reader that reads everything, grep >/dev/null, not grep -q: with
 # pipefail, a writer cut off early would fail the test by chance.)
 text=$(LC_ALL=C.UTF-8 MANWIDTH=250 man -l "$page1" 2>/dev/null | col -b | sed -E 's/([^ ])  +/\1 /g')
 # Lines of section NAME (a heading at the margin) or subsection NAME (three spaces in).
-section() { echo "$text" | awk -v h="$1" '$0 == h { on = 1; next } on && /^[A-Z]/ { exit } on { print }'; }
-subsection() { echo "$text" | awk -v h="   $1" '$0 == h { on = 1; next } on && /^ {0,3}[^ ]/ { exit } on { print }'; }
+# (awk reads to the end: one that exits early cuts off the echo, which pipefail reports.)
+section() { echo "$text" | awk -v h="$1" '$0 == h && !done { on = 1; next } on && /^[A-Z]/ { on = 0; done = 1 } on { print }'; }
+subsection() { echo "$text" | awk -v h="   $1" '$0 == h && !done { on = 1; next } on && /^ {0,3}[^ ]/ { on = 0; done = 1 } on { print }'; }
 for s in NAME SYNOPSIS DESCRIPTION COMMANDS OPTIONS "EXIT STATUS" ENVIRONMENT FILES EXAMPLES "SEE ALSO"; do
     [ -n "$(section "$s")" ] || fail "pendulum-figures.1: no section $s"
 done
@@ -44,7 +52,7 @@ for c in $commands; do
     # Each option as its names, "-o,--output-dir" or "--theme".
     options=$("$exe" "$c" --help | grep -oE '^ +(-[a-z],)?--[a-z0-9-]+')
     part=$(subsection "$c")
-    synopsis=$(echo "$(section SYNOPSIS)" | awk -v c="pendulum-figures $c" 'index($0, c) { on = 1 } on && /^$/ { exit } on { print }')
+    synopsis=$(section SYNOPSIS | awk -v c="pendulum-figures $c" 'index($0, c) && !done { on = 1 } on && /^$/ { on = 0; done = 1 } on { print }')
     for names in $options; do
         case $names in *--help|*--help-all) continue ;; esac
         in_synopsis=no
@@ -63,7 +71,7 @@ keys_of() {  # FILE COMMAND...: the keys the program lists for FILE's unknown ke
     shift
     local message
     message=$("$@" 2>&1 >/dev/null || true)
-    if ! echo "$message" | grep -q "unknown key 'zzzzzzzzzzzzzzzzzzzz'"; then
+    if ! echo "$message" | grep "unknown key 'zzzzzzzzzzzzzzzzzzzz'" >/dev/null; then
         echo "FAIL: no list of keys for $file: $message" >&2
         touch "$work/failed"
         return

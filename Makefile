@@ -45,6 +45,8 @@ DEB_PACKAGES += man-db dpkg-dev lintian bash-completion
 # clang and its sanitizer runtimes: the sanitizer run of make test, and make fuzz.
 DEB_PACKAGES += clang libclang-rt-14-dev
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
+# fc-list and fc-scan, for the test of fonts installed for the user.
+DEB_PACKAGES += fontconfig
 
 .PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz clean
 

@@ -7,7 +7,7 @@
 #   make figures    build and write every figure into figures/
 #   make bench      run the benchmarks
 #   make install    install under PREFIX (default /usr/local), DESTDIR honoured
-#   make deb        build a Debian package
+#   make deb        build the Debian packages pendulum-figures and libpendulum-dev
 #   make fuzz       run the fuzzers (FUZZ_SECONDS each)
 #   make clean      remove the build directory
 
@@ -17,6 +17,16 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 # Continuous integration (CI=true in the environment of .ci/run) builds with -Werror.
 ifneq ($(CI),)
 CMAKE_FLAGS += -DPENDULUM_WERROR=ON
+endif
+# On Debian, the flags Debian builds its packages with (dpkg-buildflags): fortified functions,
+# stack protector, format checks, full RELRO with immediate binding (hardening=+all). -g is
+# left out: the packages are stripped and the tests build faster without it. The core
+# library goes into the multiarch directory (lib/x86_64-linux-gnu), as Debian's libraries do.
+ifneq ($(shell command -v dpkg-buildflags 2>/dev/null),)
+DEB_BUILDFLAGS := DEB_BUILD_MAINT_OPTIONS=hardening=+all DEB_CXXFLAGS_MAINT_STRIP=-g dpkg-buildflags --get
+CMAKE_FLAGS += "-DCMAKE_CXX_FLAGS=$(shell $(DEB_BUILDFLAGS) CPPFLAGS) $(shell $(DEB_BUILDFLAGS) CXXFLAGS)"
+CMAKE_FLAGS += "-DCMAKE_EXE_LINKER_FLAGS=$(shell $(DEB_BUILDFLAGS) LDFLAGS)"
+CMAKE_FLAGS += -DCMAKE_INSTALL_LIBDIR=lib/$(shell dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null)
 endif
 
 # Debian packages needed to build and test. GoogleTest and Google Benchmark are listed too,
@@ -29,11 +39,14 @@ DEB_PACKAGES += libtomlplusplus-dev libgif-dev
 # (and LaTeX overlays: pdflatex, latex, dvips, Times through mathptmx, ps2pdf)
 DEB_PACKAGES += texlive-latex-base texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended
 DEB_PACKAGES += ghostscript
-# The man page (help2man, checked with man), the Debian package (dpkg-dev), completion.
-DEB_PACKAGES += help2man man-db dpkg-dev bash-completion
+# The man pages (checked with man), the Debian packages (dpkg-dev, checked with lintian),
+# completion.
+DEB_PACKAGES += man-db dpkg-dev lintian bash-completion
 # clang and its sanitizer runtimes: the sanitizer run of make test, and make fuzz.
 DEB_PACKAGES += clang libclang-rt-14-dev
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
+# fc-list and fc-scan, for the test of fonts installed for the user.
+DEB_PACKAGES += fontconfig
 
 .PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz clean
 
@@ -95,10 +108,14 @@ update-baselines: build
 	$(BUILD)/pendulum-figures render --all -o tests/baselines/paper -f png --dpi 100
 	$(BUILD)/pendulum-figures render --all -o tests/baselines/slides -f png --dpi 50 --theme slides
 
-# make install PREFIX=/usr/local DESTDIR=/tmp/stage: the tool, man page, completions,
-# examples and the core library (headers, CMake package, pkg-config file).
+# make install PREFIX=/usr/local DESTDIR=/tmp/stage: the tool, man pages, completions,
+# examples and the core library (headers, CMake package, pkg-config file). Builds only what
+# it installs (not the tests), and after make nothing at all.
 PREFIX ?= /usr/local
-install: build
+INSTALLED_TARGETS := pendulum-figures pendulum_core
+install: deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j $(JOBS) --target $(INSTALLED_TARGETS)
 	DESTDIR=$(DESTDIR) cmake --install $(BUILD) --prefix $(PREFIX)
 
 # make fuzz: the libFuzzer harnesses of fuzz/ (fuzz/CMakeLists.txt: clang, ASan, UBSan, the
@@ -117,9 +134,12 @@ fuzz: deps
 	    $(FUZZ_BUILD)/corpus-$$name || exit 1; \
 	done
 
-# make deb: build/pendulum-figures_VERSION_ARCH.deb
-deb: build
-	cd $(BUILD) && cpack -G DEB
+# make deb: build/pendulum-figures_VERSION_ARCH.deb (the program) and
+# build/libpendulum-dev_VERSION_ARCH.deb (the core library), from packaging/debian/.
+deb: deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j $(JOBS) --target $(INSTALLED_TARGETS)
+	packaging/build-deb.sh $(BUILD) $(BUILD)
 
 clean:
 	rm -rf $(BUILD)

@@ -1,26 +1,59 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-# bash completion for pendulum-figures
+# bash completion for pendulum-figures. The names of figures, methods, plot kinds, formats,
+# themes, text sizes and --set keys come from the program's own tables
+# (pendulum-figures complete WHAT); the commands and options are checked against --help by
+# tests/completion_test.sh.
+
+# Offers the words of `pendulum-figures complete WHAT` for the current word; in a
+# comma-separated list (-f png,s), for the part after the last comma.
+_pendulum_figures_words() {
+    local words prefix="" last=$cur
+    words=$("$1" complete "$2" 2>/dev/null) || return
+    if [[ $3 == list && $cur == *,* ]]; then
+        prefix=${cur%,*},
+        last=${cur##*,}
+    fi
+    local IFS=$'\n'
+    COMPREPLY=($(compgen -P "$prefix" -W "$words" -- "$last"))
+    __ltrim_colon_completions "$cur"
+    # order: and set-key= are not words yet.
+    if [[ ${#COMPREPLY[@]} -eq 1 && ${COMPREPLY[0]} == *[:=] ]]; then
+        compopt -o nospace
+    fi
+}
+
 _pendulum_figures() {
     local cur prev words cword
-    _init_completion || return
+    _init_completion -n := || return
+    local exe=${words[0]}
     local commands="eval trajectory claims list show render plot data"
     if [[ $cword -eq 1 ]]; then
-        COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
+        COMPREPLY=($(compgen -W "$commands --help --help-all --version" -- "$cur"))
         return
     fi
     local command=${words[1]}
     case $prev in
-        -f|--formats) COMPREPLY=($(compgen -W "png pdf svg eps gif pdf_tex eps_tex" -- "$cur")); return ;;
-        --theme) COMPREPLY=($(compgen -W "paper slides slides-dark" -- "$cur") $(compgen -f -X '!*.toml' -- "$cur")); return ;;
-        -o|--output-dir) [[ $command == data ]] && _filedir || _filedir -d; return ;;
+        -f|--formats) _pendulum_figures_words "$exe" formats list; return ;;
+        --theme)
+            _pendulum_figures_words "$exe" themes
+            COMPREPLY+=($(compgen -f -X '!*.toml' -- "$cur"))
+            return ;;
+        -o|--output-dir) _filedir -d; return ;;
         --output) _filedir; return ;;
         --format) COMPREPLY=($(compgen -W "csv json" -- "$cur")); return ;;
-        --tex-sizes) COMPREPLY=($(compgen -W "relative absolute" -- "$cur")); return ;;
-        --method|--methods)
-            COMPREPLY=($(compgen -W "exact harmonic lowest first second polynomial order: kidd-fogg lima-arun ganley agm: denman series: log-asymptote" -- "$cur"))
-            compopt -o nospace
+        --tex-sizes) _pendulum_figures_words "$exe" tex-sizes; return ;;
+        --set) _pendulum_figures_words "$exe" set-keys; return ;;
+        --method)
+            if [[ $command == trajectory ]]; then
+                _pendulum_figures_words "$exe" motion-methods
+            else
+                _pendulum_figures_words "$exe" methods list
+            fi
             return ;;
-        --theta0|--at|--order|--dpi|--samples|--periods|--range|--frames|--set|--name|--harmonic|--length|--g|--tex-font-size) return ;;
+        --methods) _pendulum_figures_words "$exe" methods list; return ;;
+        --time) COMPREPLY=($(compgen -W "t/T t/T0" -- "$cur")); return ;;
+        --y) COMPREPLY=($(compgen -W "value error-percent error-log" -- "$cur")); return ;;
+        --theta0|--at|--order|--dpi|--samples|--periods|--range|--frames|--name|--harmonic|--length|--g|--tex-font-size) return ;;
     esac
     local options=""
     case $command in
@@ -35,12 +68,19 @@ _pendulum_figures() {
     esac
     if [[ $cur == -* ]]; then
         COMPREPLY=($(compgen -W "$options" -- "$cur"))
-    elif [[ $command == render || $command == data || $command == show ]]; then
-        local ids
-        ids=$("${words[0]}" list 2>/dev/null | awk '/^  [a-z]/ { print $1 }')
-        COMPREPLY=($(compgen -W "$ids fig1 fig2 fig3 fig4 fig5 fig6 fig7" -- "$cur") $(compgen -f -X '!*.toml' -- "$cur"))
-    elif [[ $command == plot && $cword -eq 2 ]]; then
-        COMPREPLY=($(compgen -W "trajectory phase period coefficient convergence spectrum pendulum" -- "$cur"))
+        return
     fi
+    # The positional arguments: figures (ids, aliases, spec files) and plot kinds.
+    case $command in
+        render)
+            _pendulum_figures_words "$exe" ids
+            COMPREPLY+=($(compgen -f -X '!*.toml' -- "$cur")) ;;
+        data|show)
+            if [[ $cword -eq 2 ]]; then
+                _pendulum_figures_words "$exe" ids
+                COMPREPLY+=($(compgen -f -X '!*.toml' -- "$cur"))
+            fi ;;
+        plot) [[ $cword -eq 2 ]] && _pendulum_figures_words "$exe" plots ;;
+    esac
 } &&
     complete -F _pendulum_figures pendulum-figures

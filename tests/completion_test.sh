@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# The bash and zsh completions know every command, every option of each command's --help,
-# and every value of the tables they complete (formats, themes, methods, plot kinds).
+# The bash and zsh completions know every command and every option of each command's --help,
+# and bash offers what the tables hold (figures, formats, themes, methods, plot kinds, --set
+# keys), after a comma too, and nothing else.
 # Usage: completion_test.sh PENDULUM_FIGURES SOURCE_DIR
 set -euo pipefail
 exe=$1
 bash_file=$2/completion/pendulum-figures.bash
 zsh_file=$2/completion/_pendulum-figures
+# In an empty directory: spec files (*.toml) in the current directory are offered too.
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+cd "$scratch"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
@@ -26,29 +31,62 @@ for c in $commands; do
     done
 done
 
-# The values of each table the completions offer.
+# What bash offers, from the tables of list --markdown (the README's): the completion function
+# runs as bash-completion runs it, on the words typed so far ("" for a word not begun).
+complete_bash() {
+    bash -c 'source /usr/share/bash-completion/bash_completion
+             source "$1"; shift
+             compopt() { :; }  # outside readline; what it sets is not looked at here
+             COMP_WORDS=("$@"); COMP_CWORD=$((${#COMP_WORDS[@]} - 1))
+             COMP_LINE="$*"; COMP_POINT=${#COMP_LINE}
+             _pendulum_figures
+             printf "%s\n" "${COMPREPLY[@]}"' _ "$bash_file" "$exe" "$@" | sort -u
+}
 markdown=$("$exe" list --markdown)
 column() { echo "$markdown" | awk -v h="| $1 |" 'index($0, h) == 1 { on = 1; next } on && /^\| `/ { print } on && /^$/ { on = 0 }' |
            sed -n 's/^| `\([^`:]*\).*/\1/p'; }
-bash_line() { grep -E -- "$1" "$bash_file"; }
-for f in $(column format); do
-    [[ $(bash_line '-f\|--formats\)') == *[\"\ ]"$f"[\ \"]* ]] || fail "bash: format $f"
-    [[ $(grep "local formats=" "$zsh_file") == *[\(\ ]"$f"[\ \)]* ]] || fail "zsh: format $f"
-done
-for t in $(column theme); do
-    [[ $(bash_line '--theme\)') == *[\"\ ]"$t"[\ \"]* ]] || fail "bash: theme $t"
-    [[ $(grep "themes=" "$zsh_file") == *[\(\ ]"$t"[\ \)]* ]] || fail "zsh: theme $t"
-done
-for m in $(column method); do
-    [[ $(grep -A1 -E -- '--method\|--methods\)' "$bash_file" | tail -1) == *[\"\ ]"$m"[:\ \"]* ]] || fail "bash: method $m"
-done
+expect() {  # EXPECTED_WORDS -- WORDS...: bash offers exactly EXPECTED_WORDS (sorted, one a line)
+    local expected=$1
+    shift 2
+    local got
+    got=$(complete_bash "$@")
+    [ "$got" = "$(printf '%s\n' $expected | sort -u)" ] ||
+        fail "bash: pendulum-figures $* <TAB> offers [$(echo $got)], not [$(echo $expected)]"
+}
+figures=$(echo "$markdown" | awk '/^\| figure/ { on = 1; next } on && /^\| `/ { print } on && /^$/ { on = 0 }' |
+          grep -oE '`[^`]+`' | tr -d '`')
+methods=$(echo "$markdown" | awk '/^\| method/ { on = 1; next } on && /^\| `/ { print } on && /^$/ { on = 0 }' |
+          sed -n 's/^| `\([^`]*\)`.*/\1/p' | sed 's/:N$/:/')
+motion=$(echo "$markdown" | awk '/^\| method/ { on = 1; next } on && /^\| `.*\| motion \|/ { print } on && /^$/ { on = 0 }' |
+         sed -n 's/^| `\([^`]*\)`.*/\1/p' | sed 's/:N$/:/')
+[ "$(echo "$figures" | wc -w)" -ge 14 ] || fail "too few figures in list --markdown: $figures"
+expect "$figures" -- render ''
+expect "$figures" -- data ''
+expect "$(column plot)" -- plot ''
+expect "$(column format)" -- render -f ''
+expect "$(column format)" -- plot --formats ''
+expect "png,svg" -- render -f png,s
+expect "pdf,png,eps pdf,png,eps_tex" -- render -f pdf,png,eps
+expect "$(column theme)" -- render --theme ''
+expect "$(column 'text sizes')" -- render --tex-sizes ''
+expect "$methods" -- eval --method ''
+expect "exact,harmonic" -- plot --methods exact,h
+expect "exact,order:" -- plot --methods exact,ord
+expect "$motion" -- trajectory --method ''
+expect "" -- trajectory --method kidd
+expect "tick_font_pt= tick_length_pt=" -- render --set tick_
+expect "dpi=" -- plot --set dp
+# Every key of a style file, as show --theme paper prints them.
+expect "$("$exe" show --theme paper | sed -n '/^\[/q; s/^\([a-z_]*\) =.*/\1=/p')" -- render --set ''
+# plot --help names every plot kind.
 for p in $(column plot); do
-    [[ $(grep -A2 'command == plot' "$bash_file") == *[\"\ ]"$p"[\ \"]* ]] || fail "bash: plot kind $p"
-    [[ $(grep "1:kind:" "$zsh_file") == *[\(\ ]"$p"[\ \)]* ]] || fail "zsh: plot kind $p"
+    "$exe" plot --help | grep "\b$p\b" >/dev/null || fail "plot --help does not name plot kind $p"
 done
-for s in $(column 'text sizes'); do
-    [[ $(bash_line '--tex-sizes\)') == *[\"\ ]"$s"[\ \"]* ]] || fail "bash: --tex-sizes $s"
-    [[ $(grep -- "--tex-sizes" "$zsh_file") == *[\(\ ]"$s"[\ \)]* ]] || fail "zsh: --tex-sizes $s"
+# The zsh completion reads the same tables.
+for what in ids formats themes methods motion-methods plots tex-sizes set-keys; do
+    grep -q "complete $what\|_pendulum_figures_words $what\|_pendulum_figures_list $what" "$zsh_file" ||
+        fail "zsh: does not complete $what from the program"
 done
+zsh -n "$zsh_file" 2>/dev/null || ! command -v zsh >/dev/null || fail "zsh: syntax"
 [ "$failures" -eq 0 ] || exit 1
 echo "ok: completions know $(echo "$commands" | wc -w) commands, their options and the tables' values"

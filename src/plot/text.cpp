@@ -7,22 +7,51 @@
 #include <pango/pangofc-fontmap.h>
 
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 namespace plot {
 
 namespace {
 
-/// The fonts figures may use: the system's font directories with their caches, and none
-/// of the machine's or the user's font configuration (substitutions, hinting, subpixel
-/// order), which would otherwise change the pictures from one machine to the next.
+/// Writes `text` as XML character data.
+std::string xml_escaped(const char* text) {
+    std::string out;
+    for (const char* c = text; *c; ++c) {
+        switch (*c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            default: out += *c;
+        }
+    }
+    return out;
+}
+
+/// The fonts figures may use: the system's font directories first, then every other font
+/// directory of fontconfig's own configuration (the user's fonts, /usr/local/share/fonts),
+/// with their caches; none of the machine's or the user's font settings (substitutions,
+/// hinting, subpixel order), which would otherwise change the pictures from one machine to
+/// the next.
 FcConfig* private_font_config() {
     static FcConfig* const config = [] {
-        FcConfig* c = FcConfigCreate();
-        static const char* const xml =
+        std::string xml =
             "<?xml version=\"1.0\"?><!DOCTYPE fontconfig SYSTEM \"urn:fontconfig:fonts.dtd\">"
             "<fontconfig><dir>/usr/share/fonts</dir><cachedir>/var/cache/fontconfig</cachedir>"
-            "<cachedir prefix=\"xdg\">fontconfig</cachedir></fontconfig>";
-        if (!c || !FcConfigParseAndLoadFromMemory(c, reinterpret_cast<const FcChar8*>(xml), FcTrue) ||
+            "<cachedir prefix=\"xdg\">fontconfig</cachedir>";
+        if (FcConfig* system = FcInitLoadConfig()) {
+            if (FcStrList* dirs = FcConfigGetFontDirs(system)) {
+                while (const FcChar8* dir = FcStrListNext(dirs)) {
+                    const char* d = reinterpret_cast<const char*>(dir);
+                    if (std::string_view(d) != "/usr/share/fonts") xml += "<dir>" + xml_escaped(d) + "</dir>";
+                }
+                FcStrListDone(dirs);
+            }
+            FcConfigDestroy(system);
+        }
+        xml += "</fontconfig>";
+        FcConfig* c = FcConfigCreate();
+        if (!c || !FcConfigParseAndLoadFromMemory(c, reinterpret_cast<const FcChar8*>(xml.c_str()), FcTrue) ||
             !FcConfigBuildFonts(c)) {
             throw std::runtime_error("cannot set up the font configuration");
         }
@@ -30,7 +59,6 @@ FcConfig* private_font_config() {
     }();
     return config;
 }
-
 
 }  // namespace
 

@@ -225,12 +225,18 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     }
 
     // Shared margins keep the axes of neighbouring panels aligned, and those of panels drawn
-    // alone in files of their own (the peers).
+    // alone in files of their own (the peers, each in a cell the size of this figure's):
+    // a peer is planned as its own file plans it, crowded ticks thinned and all, so that
+    // every file of the set reaches the same margins. Plans past the panels are the peers'.
+    std::vector<panel> with_peers;
+    if (!fig.peers.empty()) {
+        with_peers = fig.panels;
+        with_peers.insert(with_peers.end(), fig.peers.begin(), fig.peers.end());
+    }
+    const std::vector<panel>& planned = fig.peers.empty() ? fig.panels : with_peers;
     std::vector<panel_plan> plans;
-    std::vector<panel_plan> peers;
-    for (const auto& p : fig.peers) peers.push_back(plan_panel(text, p, th));
-    for (const auto& p : fig.panels) plans.push_back(plan_panel(text, p, th));
-    share_margins(plans, peers, th, fig.cols);
+    for (const auto& p : planned) plans.push_back(plan_panel(text, p, th));
+    share_margins(plans, th, fig.cols);
     auto make_cells = [&](double top) {
         const double cw = size.width_pt / fig.cols;
         const double ch = (size.height_pt - top) / fig.rows;
@@ -242,7 +248,10 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         return cells;
     };
     std::vector<rect> cells = make_cells(0);
-    thin_crowded_ticks(text, fig.panels, plans, peers, cells, th, fig.cols);
+    std::vector<rect> planned_cells = cells;
+    if (!cells.empty()) planned_cells.resize(planned.size(), cells.front());
+    thin_crowded_ticks(text, planned, plans, planned_cells, th, fig.cols);
+    plans.resize(fig.panels.size());
     // Axes too small to read are an error, not a figure.
     const auto check_room = [&] {
         const double least = 3 * th.tick_font_pt;

@@ -207,7 +207,7 @@ figure with_theme_styles(const figure& fig, const theme& th) {
 }  // namespace
 
 void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
-                 std::vector<placed_text>* texts) {
+                 std::vector<placed_text>* texts, bool vector) {
     const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), [](const panel& p) {
         return std::any_of(p.data.begin(), p.data.end(), [](const series& s) { return !s.style_key.empty(); });
     });
@@ -219,7 +219,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     if (th.palette.empty()) throw bad_input("theme has no colours");
     text_engine text(cr, th.font_family);
     text.record_into(texts);
-    if (pass != draw_pass::overlay) {
+    if (pass != draw_pass::overlay && (!vector || th.opaque_vector_background)) {
         cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
         cairo_paint(cr);
     }

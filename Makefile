@@ -34,6 +34,9 @@ DEB_PACKAGES += help2man man-db dpkg-dev bash-completion
 # clang and its sanitizer runtimes: the sanitizer run of make test, and make fuzz.
 DEB_PACKAGES += clang libclang-rt-14-dev
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
+# The paper's class (revtex4), and librsvg's SVG reader: the figures as the paper and other
+# readers show them.
+DEB_PACKAGES += texlive-publishers librsvg2-bin
 
 .PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz clean
 

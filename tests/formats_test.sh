@@ -14,7 +14,7 @@ set -euo pipefail
 exe=$1
 check=$2
 tolerance=${3:-7}
-png_tolerance=${4:-7}
+png_tolerance=${4:-9}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 cd "$dir"
@@ -50,10 +50,10 @@ compare() {
 }
 for theme in $themes; do
     mkdir -p "$theme/100" "$theme/hi" "$theme/vector"
-    # Readers compare at a resolution where their font hinting no longer shows, about 60
-    # pixels to the em: twice the theme's own PNG resolution, in hundreds (the 100 dpi PNG
-    # is compared with it averaged down), averaged over 6 x 6 pixels.
-    dpi=$(( (2 * $(theme_dpi "$theme") + 50) / 100 * 100 ))
+    # Readers compare at a resolution where their font hinting no longer shows, 40 to 60
+    # pixels to the em: twice the theme's own PNG resolution, rounded down to hundreds (the
+    # 100 dpi PNG is compared with it averaged down), averaged over 6 x 6 pixels.
+    dpi=$(( 2 * $(theme_dpi "$theme") / 100 * 100 ))
     "$exe" render --all --theme "$theme" -f png --dpi 100 -o "$theme/100"
     "$exe" render --all --theme "$theme" -f png --dpi "$dpi" -o "$theme/hi"
     "$exe" render --all --theme "$theme" -f pdf,svg,eps --set opaque_vector_background=true -o "$theme/vector"

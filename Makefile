@@ -47,6 +47,9 @@ DEB_PACKAGES += clang libclang-rt-14-dev
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
 # fc-list and fc-scan, for the test of fonts installed for the user.
 DEB_PACKAGES += fontconfig
+# The paper's class (revtex4), and librsvg's SVG reader: the figures as the paper and other
+# readers show them.
+DEB_PACKAGES += texlive-publishers librsvg2-bin
 
 .PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz clean
 

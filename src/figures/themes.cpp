@@ -56,10 +56,19 @@ struct color_key {
 
 constexpr color_key color_keys[] = {{"foreground", &plot::theme::foreground}, {"background", &plot::theme::background}};
 
+/// A yes-or-no key of a style file.
+struct flag_key {
+    std::string_view name;
+    bool plot::theme::*field;
+};
+
+constexpr flag_key flag_keys[] = {{"opaque_vector_background", &plot::theme::opaque_vector_background}};
+
 std::vector<std::string> all_keys() {
     std::vector<std::string> keys = {"base", "description", "font_family", "palette", "styles"};
     for (const auto& k : number_keys) keys.emplace_back(k.name);
     for (const auto& k : color_keys) keys.emplace_back(k.name);
+    for (const auto& k : flag_keys) keys.emplace_back(k.name);
     return keys;
 }
 
@@ -98,6 +107,9 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
         if (const toml::node* n = doc.get(k.name)) {
             if (auto c = color(r, *n, k.name)) t.*k.field = *c;
         }
+    }
+    for (const auto& k : flag_keys) {
+        if (auto v = r.boolean(doc, k.name)) t.*k.field = *v;
     }
     if (const toml::node* n = doc.get("palette")) {
         const auto* a = n->as_array();

@@ -105,7 +105,7 @@ struct figure {
     double panel_aspect = 0.75;    ///< panel height / width (paper theme)
     std::vector<panel> panels;     ///< row-major, rows * cols at most
     bool shared_legend = false;    ///< one legend, in the first panel with room inside the axes
-    std::vector<panel> peers;      ///< panels drawn in other files whose frames these must match
+    std::vector<panel> peers;      ///< panels drawn alone in other files of this size (one panel each) whose frames these must match
     plot::label title;             ///< drawn centred above the panels (theme's title_font_pt; 0 hides it)
 };
 

@@ -70,7 +70,7 @@ std::string render_pdf_pages(int count, const std::function<figure(int)>& frame,
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
     context_ptr cr(cairo_create(surface.get()));
     for (int i = 0; i < count; ++i) {
-        draw_figure(cr.get(), i == 0 ? first : frame(i), th, size);
+        draw_figure(cr.get(), i == 0 ? first : frame(i), th, size, draw_pass::all, nullptr, true);
         cairo_show_page(cr.get());
     }
     cr.reset();

@@ -132,6 +132,25 @@ std::string latex_picture(const std::vector<placed_text>& texts, page_size size,
     out += "  \\setlength{\\unitlength}{\\figurewidth}%\n";
     out += "\\fi%\n";
     out += "\\global\\let\\figurewidth\\undefined%\n";
+    if (options.tex_sizes == tex_sizing::relative) {
+        // The layout made room for the size commands as they are in a document of
+        // tex_font_pt. In a document of another size they would be larger or smaller than
+        // that room (text over text): there they keep the sizes the layout had, and say so.
+        const size_list sizes = document_sizes(options.tex_font_pt);
+        const std::string normal = points(sizes[4]);
+        out += "\\normalsize\\edef\\PFnormal{\\f@size}\\def\\PFother{0}%\n";
+        out += "\\ifdim\\PFnormal pt<" + points(sizes[4] - 0.1) + "pt \\def\\PFother{1}\\fi%\n";
+        out += "\\ifdim\\PFnormal pt>" + points(sizes[4] + 0.1) + "pt \\def\\PFother{1}\\fi%\n";
+        out += "\\if1\\PFother%\n";
+        out += "  \\typeout{pendulum-figures: " + graphics_name + " was laid out for a " + normal +
+               " pt document, not \\PFnormal\\space pt; its text keeps those sizes (render with "
+               "--tex-font-size \\PFnormal)}%\n";
+        for (std::size_t i = 0; i < commands.size(); ++i) {
+            out += "  \\def" + std::string(commands[i]) + "{\\fontsize{" + points(sizes[i]) + "}{" +
+                   points(1.2 * sizes[i]) + "}\\selectfont}%\n";
+        }
+        out += "\\fi%\n";
+    }
     out += "\\makeatother%\n";
     out += "\\begin{picture}(1," + fixed(h / w) + ")%\n";
     out += "  \\put(0,0){\\includegraphics[width=\\unitlength]{" + graphics_name + "}}%\n";

@@ -142,8 +142,7 @@ std::optional<panel_plan> thinner(const text_engine& text, const panel& p, const
 }  // namespace
 
 void thin_crowded_ticks(const text_engine& text, const std::vector<panel>& panels, std::vector<panel_plan>& plans,
-                        const std::vector<panel_plan>& peers, const std::vector<rect>& cells, const theme& th,
-                        int cols) {
+                        const std::vector<rect>& cells, const theme& th, int cols) {
     for (bool thinned = true; thinned;) {
         thinned = false;
         for (std::size_t i = 0; i < panels.size(); ++i) {
@@ -156,7 +155,7 @@ void thin_crowded_ticks(const text_engine& text, const std::vector<panel>& panel
                 if (fit) continue;
                 if (auto fewer = thinner(text, p, th, plans[i], horizontal)) {
                     plans[i] = std::move(*fewer);
-                    share_margins(plans, peers, th, cols);  // before the next axis is measured
+                    share_margins(plans, th, cols);  // before the next axis is measured
                     thinned = true;
                 }
             }
@@ -239,7 +238,7 @@ void keep_data_off_frame(const std::vector<panel>& panels, std::vector<panel_pla
     }
 }
 
-void share_margins(std::vector<panel_plan>& plans, const std::vector<panel_plan>& peers, const theme& th, int cols) {
+void share_margins(std::vector<panel_plan>& plans, const theme& th, int cols) {
     std::vector<double> column_w(static_cast<std::size_t>(std::max(cols, 1)), 0.0);
     for (std::size_t i = 0; i < plans.size(); ++i) {
         double& w = column_w[i % column_w.size()];
@@ -247,19 +246,16 @@ void share_margins(std::vector<panel_plan>& plans, const std::vector<panel_plan>
     }
     for (std::size_t i = 0; i < plans.size(); ++i) plans[i].column_ytick_w = column_w[i % column_w.size()];
     panel_plan m;
-    const std::vector<panel_plan>* lists[] = {&plans, &peers};
-    for (const auto* list : lists) {
-        for (const auto& p : *list) {
-            m.ytick_w = std::max(m.ytick_w, p.ytick_w);
-            m.ylabel_h = std::max(m.ylabel_h, p.ylabel_h);
-            m.xtick_up = std::max(m.xtick_up, p.xtick_up);
-            m.xtick_down = std::max(m.xtick_down, p.xtick_down);
-            m.xlabel_h = std::max(m.xlabel_h, p.xlabel_h);
-            m.top = std::max(m.top, p.top);
-            m.right = std::max(m.right, p.right);
-            m.tick_gap = std::max(m.tick_gap, p.tick_gap);
-            m.label_gap = std::max(m.label_gap, p.label_gap);
-        }
+    for (const auto& p : plans) {
+        m.ytick_w = std::max(m.ytick_w, p.ytick_w);
+        m.ylabel_h = std::max(m.ylabel_h, p.ylabel_h);
+        m.xtick_up = std::max(m.xtick_up, p.xtick_up);
+        m.xtick_down = std::max(m.xtick_down, p.xtick_down);
+        m.xlabel_h = std::max(m.xlabel_h, p.xlabel_h);
+        m.top = std::max(m.top, p.top);
+        m.right = std::max(m.right, p.right);
+        m.tick_gap = std::max(m.tick_gap, p.tick_gap);
+        m.label_gap = std::max(m.label_gap, p.label_gap);
     }
     const double pad = th.padding_pt;
     for (auto& p : plans) {

@@ -63,14 +63,13 @@ bool tick_labels_fit(const tick_set& t, const std::vector<double>& extents, cons
 /// drawn beside each other, or alone in files of their own, have the same frame and their
 /// y labels line up (matplotlib's align_ylabels).
 /// Plans are of a grid with `cols` columns, row-major.
-void share_margins(std::vector<panel_plan>& plans, const std::vector<panel_plan>& peers, const theme& th, int cols);
+void share_margins(std::vector<panel_plan>& plans, const theme& th, int cols);
 
 /// Fewer ticks where an axis's labels would touch in the cell its panel gets (a figure of a
 /// fixed size, small panels, large text): each crowded axis is allowed one tick less, down
 /// to two, and the margins are shared again, until every axis fits.
 void thin_crowded_ticks(const text_engine& text, const std::vector<panel>& panels, std::vector<panel_plan>& plans,
-                        const std::vector<panel_plan>& peers, const std::vector<rect>& cells, const theme& th,
-                        int cols);
+                        const std::vector<rect>& cells, const theme& th, int cols);
 
 /// Moves free axis limits (those a panel does not fix) out until every point of the data
 /// that sets them stands clear of the frame in `cells`: a marker by its radius, a line by

@@ -68,11 +68,11 @@ void check_surface(cairo_surface_t* s, std::string_view format) {
 }
 
 void draw_on(cairo_surface_t* surface, const figure& fig, const theme& th, page_size size, double scale,
-             std::string_view format, std::vector<placed_text>* texts = nullptr) {
+             std::string_view format, std::vector<placed_text>* texts = nullptr, bool vector = false) {
     check_surface(surface, format);
     context_ptr cr(cairo_create(surface));
     cairo_scale(cr.get(), scale, scale);
-    draw_figure(cr.get(), fig, th, size, draw_pass::all, texts);
+    draw_figure(cr.get(), fig, th, size, draw_pass::all, texts, vector);
     check_cairo(cairo_status(cr.get()), "render " + std::string(format));
 }
 
@@ -85,7 +85,7 @@ std::string render_vector(const figure& fig, const theme& th, std::string_view f
     std::string bytes;
     surface_ptr surface(create(&bytes, size));
     check_surface(surface.get(), format);
-    draw_on(surface.get(), fig, th, size, 1.0, format, texts);
+    draw_on(surface.get(), fig, th, size, 1.0, format, texts, true);
     cairo_surface_finish(surface.get());
     check_surface(surface.get(), format);
     return bytes;
@@ -300,15 +300,42 @@ std::string write_svg(const figure& fig, const theme& th, const output_options&)
                           fig.title.empty() ? std::string() : markup_text(fig.title.markup));
 }
 
+/// Cairo gives an EPS the bounding box of its ink; a page without a background would shrink
+/// to its drawing, and be placed and scaled otherwise than the PDF and SVG of the figure.
+/// The box is the page, as it is with a background, in whole points rounded up; cairo puts
+/// the page's top at the rounded height, so the exact box (%%HiResBoundingBox, which
+/// ghostscript's EPSCrop and graphicx's hiresbb read) is the page's size below that.
+std::string eps_page_box(const std::string& eps, page_size size) {
+    const double w = std::ceil(size.width_pt - 1e-6);
+    const double h = std::ceil(size.height_pt - 1e-6);
+    char box[64];
+    std::snprintf(box, sizeof box, " 0 0 %.0f %.0f", w, h);
+    char exact[96];
+    std::snprintf(exact, sizeof exact, "%%%%HiResBoundingBox: 0 %.3f %.3f %.0f\n", h - size.height_pt, size.width_pt, h);
+    std::string out = eps;
+    for (const std::string key : {"%%BoundingBox:", "%%PageBoundingBox:"}) {
+        const auto start = out.find("\n" + key);
+        if (start == std::string::npos) continue;
+        const auto from = start + 1 + key.size();
+        const auto end = out.find('\n', from);
+        out.replace(from, end == std::string::npos ? std::string::npos : end - from, box);
+        if (key == "%%BoundingBox:" && out.find("\n%%HiResBoundingBox:") == std::string::npos) {
+            const auto line_end = out.find('\n', from);
+            if (line_end != std::string::npos) out.insert(line_end + 1, exact);
+        }
+    }
+    return out;
+}
+
 std::string render_eps(const figure& fig, const theme& th, const output_options&, std::vector<placed_text>* texts) {
-    return fix_eps_date(render_vector(
+    return eps_page_box(fix_eps_date(render_vector(
         fig, th, "eps",
         [](std::string* bytes, page_size size) {
             cairo_surface_t* s = cairo_ps_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
             cairo_ps_surface_set_eps(s, 1);
             return s;
         },
-        texts));
+        texts)), figure_size(fig, th));
 }
 
 std::string write_eps(const figure& fig, const theme& th, const output_options& options) {

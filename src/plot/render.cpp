@@ -212,7 +212,7 @@ figure with_theme_styles(const figure& fig, const theme& th) {
 }  // namespace
 
 void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
-                 std::vector<placed_text>* texts, std::vector<panel_frame>* frames) {
+                 std::vector<placed_text>* texts, bool vector, std::vector<panel_frame>* frames) {
     const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), [](const panel& p) {
         return std::any_of(p.data.begin(), p.data.end(), [](const series& s) { return !s.style_key.empty(); });
     });
@@ -224,18 +224,24 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     if (th.palette.empty()) throw bad_input("theme has no colours");
     text_engine text(cr, th.font_family);
     text.record_into(texts);
-    if (pass != draw_pass::overlay) {
+    if (pass != draw_pass::overlay && (!vector || th.opaque_vector_background)) {
         cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
         cairo_paint(cr);
     }
 
     // Shared margins keep the axes of neighbouring panels aligned, and those of panels drawn
-    // alone in files of their own (the peers).
+    // alone in files of their own (the peers, each in a cell the size of this figure's):
+    // a peer is planned as its own file plans it, crowded ticks thinned and all, so that
+    // every file of the set reaches the same margins. Plans past the panels are the peers'.
+    std::vector<panel> with_peers;
+    if (!fig.peers.empty()) {
+        with_peers = fig.panels;
+        with_peers.insert(with_peers.end(), fig.peers.begin(), fig.peers.end());
+    }
+    const std::vector<panel>& planned = fig.peers.empty() ? fig.panels : with_peers;
     std::vector<panel_plan> plans;
-    std::vector<panel_plan> peers;
-    for (const auto& p : fig.peers) peers.push_back(plan_panel(text, p, th));
-    for (const auto& p : fig.panels) plans.push_back(plan_panel(text, p, th));
-    share_margins(plans, peers, th, fig.cols);
+    for (const auto& p : planned) plans.push_back(plan_panel(text, p, th));
+    share_margins(plans, th, fig.cols);
     auto make_cells = [&](double top) {
         const double cw = size.width_pt / fig.cols;
         const double ch = (size.height_pt - top) / fig.rows;
@@ -258,7 +264,10 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         }
     }
     std::vector<rect> cells = make_cells(title_h);
-    thin_crowded_ticks(text, fig.panels, plans, peers, cells, th, fig.cols);
+    std::vector<rect> planned_cells = cells;
+    if (!cells.empty()) planned_cells.resize(planned.size(), cells.front());
+    thin_crowded_ticks(text, planned, plans, planned_cells, th, fig.cols);
+    plans.resize(fig.panels.size());
     keep_data_off_frame(fig.panels, plans, cells, th);
     // Axes too small to read are an error, not a figure.
     const auto check_room = [&] {
@@ -333,7 +342,7 @@ std::vector<panel_frame> panel_frames(const figure& fig, const theme& th) {
     const context_ptr cr(cairo_create(surface.get()));
     check_cairo(cairo_status(cr.get()), "a drawing context");
     std::vector<panel_frame> frames;
-    draw_figure(cr.get(), fig, th, size, draw_pass::all, nullptr, &frames);
+    draw_figure(cr.get(), fig, th, size, draw_pass::all, nullptr, false, &frames);
     return frames;
 }
 

@@ -47,12 +47,15 @@ public:
 };
 
 /// Draws the figure on cr, whose user units are points, filling [0, w] x [0, h]; with
-/// `texts`, every text is recorded there (for a LaTeX overlay) instead of drawn.
+/// `texts`, every text is recorded there (for a LaTeX overlay) instead of drawn. A vector
+/// page (`vector`) is painted with the background only if the theme asks for it: a
+/// transparent page covers nothing it is placed over (a neighbouring panel's text).
 /// Throws std::runtime_error if the theme's font is not installed, layout_error if a panel's
 /// axes would be smaller than three times the tick font size either way.
 /// With `frames`, each panel's frame is recorded there.
 void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size, draw_pass pass = draw_pass::all,
-                 std::vector<placed_text>* texts = nullptr, std::vector<panel_frame>* frames = nullptr);
+                 std::vector<placed_text>* texts = nullptr, bool vector = false,
+                 std::vector<panel_frame>* frames = nullptr);
 
 /// The frames of the figure's panels as draw_figure lays them out at the figure's size.
 std::vector<panel_frame> panel_frames(const figure& fig, const theme& th);

@@ -56,8 +56,12 @@ class text_engine {
 public:
     text_engine(cairo_t* cr, const std::string& family)
         : cr_(cr), family_(family), context_(pango_font_map_create_context(thread_font_map())) {
-        pango_cairo_update_context(cr, context_.get());
-        // Points as user units, and no hinting: the layout is the same in every format.
+        // Text is measured and shaped in points alone, never in the target's pixels: the
+        // context keeps the identity matrix whatever cr's scale (a PNG at any dpi, a PDF),
+        // glyph positions are not rounded to device units, and there is no hinting, so that
+        // every format and every resolution get the same layout.
+        pango_context_set_matrix(context_.get(), nullptr);
+        pango_context_set_round_glyph_positions(context_.get(), FALSE);
         pango_cairo_context_set_resolution(context_.get(), 72.0);
         font_options_ptr options(cairo_font_options_create());
         cairo_font_options_set_hint_style(options.get(), CAIRO_HINT_STYLE_NONE);

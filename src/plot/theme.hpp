@@ -34,6 +34,7 @@ struct theme {
     double padding_pt = 3.0;          ///< space around text
     rgb foreground{0, 0, 0};          ///< frame, ticks and text
     rgb background{1, 1, 1};          ///< the page
+    bool opaque_vector_background = false;  ///< PDF, SVG and EPS paint the background too (PNG and GIF always do)
     std::vector<rgb> palette;         ///< series colours by index
     std::map<std::string, named_style> styles;  ///< styles of named series (style_key)
     double panel_width_cm = 6.0;      ///< width of one panel, where the figure sets none

@@ -56,14 +56,18 @@ struct curve {
     std::function<std::pair<double, double>(double)> at{};  ///< (x, y) at a parameter
     int pieces = 32;  ///< the first, even subdivision: fine enough to see every wiggle
 
-    /// The plot layer's memo of its last sampling: an animation draws the same curve in
-    /// every frame, and figures are written to several files at once.
+    /// The plot layer's memo of its last few samplings: an animation draws the same curve
+    /// in every frame (on axes that may be tried with and without a legend above them),
+    /// and figures are written to several files at once.
     struct memo {
+        struct sampling {
+            std::vector<double> key;
+            std::vector<double> x;
+            std::vector<double> y;
+            std::vector<double> u;
+        };
         std::mutex lock;
-        std::vector<double> key;
-        std::vector<double> x;
-        std::vector<double> y;
-        std::vector<double> u;
+        std::vector<sampling> last;  ///< the most recent last
     };
     std::shared_ptr<memo> last = std::make_shared<memo>();  ///< see memo
 };

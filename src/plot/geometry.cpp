@@ -155,14 +155,15 @@ private:
             // a period at pi), where a sharp tip can hide between the quarter points: it is
             // cut until its quarters are alike or short.
             const double bound = 0.8 * tolerance_;
-            double longest = 0;
+            double longest = 0;  // squared lengths of the quarters
             double shortest = HUGE_VAL;
             for (std::size_t i = 1; i < all.size(); ++i) {
-                const double d = std::hypot(all[i]->x - all[i - 1]->x, all[i]->y - all[i - 1]->y);
-                longest = std::max(longest, d);
-                shortest = std::min(shortest, d);
+                const double dx = all[i]->x - all[i - 1]->x;
+                const double dy = all[i]->y - all[i - 1]->y;
+                longest = std::max(longest, dx * dx + dy * dy);
+                shortest = std::min(shortest, dx * dx + dy * dy);
             }
-            const bool uneven = longest > 0.25 && longest > 2 * shortest;
+            const bool uneven = longest > 0.25 * 0.25 && longest > 4 * shortest;
             if (side != 0 || (!uneven && off_chord(q1, a, b) <= bound && off_chord(m, a, b) <= bound &&
                               off_chord(q3, a, b) <= bound)) {
                 emit(b);
@@ -201,21 +202,23 @@ void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const 
     bool known = false;
     if (c.last) {
         const std::lock_guard<std::mutex> hold(c.last->lock);
-        if (c.last->key == key) {
-            x = c.last->x;
-            y = c.last->y;
-            u = c.last->u;
+        for (const auto& m : c.last->last) {
+            if (m.key != key) continue;
+            x = m.x;
+            y = m.y;
+            u = m.u;
             known = true;
+            break;
         }
     }
     if (!known) {
         curve_sampler(c, mx, my, clip, tolerance, x, y, u).run();
         if (c.last) {
+            constexpr std::size_t kept = 4;
             const std::lock_guard<std::mutex> hold(c.last->lock);
-            c.last->key = key;
-            c.last->x = x;
-            c.last->y = y;
-            c.last->u = u;
+            auto& last = c.last->last;
+            if (last.size() >= kept) last.erase(last.begin());
+            last.push_back({key, x, y, u});
         }
     }
     if (observer()) observer()(sampled_curve{&c, mx, my, clip, tolerance, x, y, u});

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -97,6 +98,82 @@ TEST(Geometry, ToDeviceMarksNonFinitePoints) {
     EXPECT_EQ(d.y[1], 20);
     EXPECT_TRUE(std::isnan(d.x[2]));
     EXPECT_TRUE(std::isnan(d.y[3]));
+}
+
+/// The largest distance from the curve, sampled finely, to the polyline (x, y).
+double largest_gap(const curve& c, const axis_map& mx, const axis_map& my, const std::vector<double>& x,
+                   const std::vector<double>& y) {
+    double worst = 0;
+    for (int i = 0; i <= 20000; ++i) {
+        const auto [cx, cy] = c.at(c.u0 + (c.u1 - c.u0) * i / 20000);
+        if (!std::isfinite(cx) || !std::isfinite(cy)) continue;
+        double best = HUGE_VAL;
+        for (std::size_t k = 1; k < x.size(); ++k) {
+            if (std::isnan(x[k - 1] + x[k])) continue;
+            best = std::min(best, distance_to_segment(mx(cx), my(cy), x[k - 1], y[k - 1], x[k], y[k]));
+        }
+        worst = std::max(worst, best);
+    }
+    return worst;
+}
+
+TEST(Geometry, SampledCurveStaysWithinTheTolerance) {
+    const axis_map mx{0, 10, false, 0, 200};
+    const axis_map my{-1.2, 1.2, false, 150, 0};
+    const rect clip{0, 0, 200, 150};
+    const auto c = function_curve(0, 10, [](double x) { return std::sin(3 * x) * std::exp(-0.1 * x); });
+    for (double tolerance : {0.05, 0.005}) {
+        std::vector<double> x;
+        std::vector<double> y;
+        sample_curve(*c, mx, my, clip, tolerance, x, y);
+        EXPECT_LE(largest_gap(*c, mx, my, x, y), tolerance);
+        // Few points for it: not a fixed fine grid.
+        EXPECT_LT(x.size(), tolerance > 0.01 ? 400u : 1200u);
+    }
+    // On a log axis too.
+    const axis_map log_y{1e-6, 1, true, 150, 0};
+    const auto e = function_curve(0, 10, [](double x) { return std::exp(-x); });
+    std::vector<double> x;
+    std::vector<double> y;
+    sample_curve(*e, mx, log_y, clip, 0.01, x, y);
+    EXPECT_LE(largest_gap(*e, mx, log_y, x, y), 0.01);
+}
+
+TEST(Geometry, SampledCurveBreaksWhereItIsNotFinite) {
+    const axis_map mx{0, 1, false, 0, 100};
+    const axis_map my{0, 1, false, 100, 0};
+    const auto c = function_curve(0, 1, [](double x) { return x < 0.3 || x > 0.6 ? x : std::nan(""); });
+    std::vector<double> x;
+    std::vector<double> y;
+    sample_curve(*c, mx, my, rect{0, 0, 100, 100}, 0.01, x, y);
+    const auto breaks = std::count_if(x.begin(), x.end(), [](double v) { return std::isnan(v); });
+    EXPECT_EQ(breaks, 1);
+    // The line goes up to where the curve stops, within the tolerance.
+    double last_before = 0;
+    for (std::size_t i = 0; i < x.size() && !std::isnan(x[i]); ++i) last_before = x[i];
+    EXPECT_NEAR(last_before, 30, 0.01);
+}
+
+TEST(Geometry, SampledNoiseCostsABoundedNumberOfPoints) {
+    // Values that are noise at every scale, and flicker between finite and not.
+    const auto c = function_curve(0, 1, [](double x) {
+        const double h = std::fmod(std::sin(x * 1e7) * 43758.5453, 1.0);
+        return h > 0.5 ? std::nan("") : h;
+    });
+    std::vector<double> x;
+    std::vector<double> y;
+    sample_curve(*c, axis_map{0, 1, false, 0, 100}, axis_map{-1, 1, false, 100, 0}, rect{0, 0, 100, 100}, 0.01, x,
+                 y);
+    EXPECT_LE(x.size(), 70000u);
+}
+
+TEST(Geometry, SampledCurveOutsideTheClipIsCoarse) {
+    // A curve far above the axes costs its first grid and no more.
+    const auto c = function_curve(0, 1, [](double x) { return 10 + std::sin(40 * x); });
+    std::vector<double> x;
+    std::vector<double> y;
+    sample_curve(*c, axis_map{0, 1, false, 0, 100}, axis_map{0, 1, false, 100, 0}, rect{0, 0, 100, 100}, 0.001, x, y);
+    EXPECT_EQ(x.size(), 33u);
 }
 
 }  // namespace

@@ -47,7 +47,9 @@ command add_data_command(CLI::App& app) {
     cmd->add_option("-o,--output", o->file, "Write to FILE instead of standard output (- is standard output)")->type_name("FILE")->check(non_empty);
     cmd->add_option("--theta0", o->theta0, "Amplitudes of a trajectory figure, a comma-separated LIST")
         ->type_name("LIST")->check(non_empty);
-    cmd->footer("\nOne row per plotted point; panels are a, b, c, ... as in the paper's captions.\n\n"
+    cmd->footer("\nOne row per point of each series: its markers, or the samples of a curve that set the axis\n"
+                "limits (a curve's line is drawn from its function, within 0.05 pt, with as many points as\n"
+                "it needs); panels are a, b, c, ... as in the paper's captions.\n\n"
                  "Example:\n  pendulum-figures data period -o period.csv");
 
     return {cmd, [o] {

@@ -101,6 +101,12 @@ std::vector<double> circle_amplitudes(double lo, double hi) {
     return grid(from, to, 8);
 }
 
+std::shared_ptr<const plot::curve> amplitude_curve(const panel_spec& p, double lo, double hi,
+                                                   std::function<double(double)> f) {
+    const double unit = to_axis_angle(p, 1.0);
+    return plot::parametric_curve(lo, hi, [f = std::move(f), unit](double t) { return std::pair{unit * t, f(t)}; });
+}
+
 /// The fine grid for curves, inside the panel's range.
 std::vector<double> curve_amplitudes(double lo, double hi) {
     const auto [from, to] = open_range(lo, hi);

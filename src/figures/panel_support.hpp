@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -53,6 +54,11 @@ plot::axis amplitude_axis(const panel_spec& p, double lo, double hi);
 
 /// An angle in the panel's unit (radians or degrees).
 double to_axis_angle(const panel_spec& p, double theta);
+
+/// The curve (theta0, f(theta0)) for amplitudes from lo to hi (radians), on the panel's
+/// amplitude axis (radians or degrees).
+std::shared_ptr<const plot::curve> amplitude_curve(const panel_spec& p, double lo, double hi,
+                                                   std::function<double(double)> f);
 
 /// Amplitudes where the exact values are marked: multiples of pi/24 inside [lo, hi].
 std::vector<double> circle_amplitudes(double lo, double hi);

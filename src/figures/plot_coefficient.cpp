@@ -34,14 +34,20 @@ plot::panel coefficient_panel(const panel_context& c, const panel_spec& p) {
             // The exact values from the closed form through the nome. The paper's Eq. (Lamb.12.1),
             // by quadrature in doubles, is right only to about 1e-16 theta0 in absolute terms:
             // c5 at pi/24 (1.9e-9) would be off by 8e-9 of itself.
-            s = make_series(st, circle_amplitudes(lo, hi),
-                            [n](double t) { return pendulum::exact_solution(t).coefficient(n); });
+            const std::function<double(double)> c = [n](double t) {
+                return pendulum::exact_solution(t).coefficient(n);
+            };
+            s = make_series(st, circle_amplitudes(lo, hi), c);
+            const auto line = curve_amplitudes(lo, hi);
+            s.curve = amplitude_curve(p, line.front(), line.back(), c);
         } else {
-            s = make_series(st, curve_amplitudes(lo, hi), [&](double t) {
-                const auto sol = pendulum::method_solution(m.method, t);
+            const std::function<double(double)> c = [method = m.method, n](double t) {
+                const auto sol = pendulum::method_solution(method, t);
                 return n < static_cast<int>(sol.coefficients.size()) ? sol.coefficients[static_cast<std::size_t>(n)]
                                                                       : 0.0;
-            });
+            };
+            s = make_series(st, curve_amplitudes(lo, hi), c);
+            s.curve = amplitude_curve(p, s.x.front(), s.x.back(), c);
         }
         for (double& v : s.x) v = to_axis_angle(p, v);
         panel.data.push_back(std::move(s));

@@ -33,6 +33,7 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
         path.x.push_back(std::sin(a));
         path.y.push_back(-std::cos(a));
     }
+    path.curve = plot::parametric_curve(0, 2 * pi, [](double a) { return std::pair{std::sin(a), -std::cos(a)}; }, 8);
     path.alpha = 0.2;
     path.width_scale = 0.6;
     panel.data.push_back(std::move(path));
@@ -70,11 +71,18 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t) {
                 trail.line = line_style::solid;
                 trail.marker = marker_style::none;
                 trail.alpha = 0.08 + 0.06 * k;
-                for (double t : grid(w0_t - span * (8 - k) / 8, w0_t - span * (7 - k) / 8, 12)) {
-                    const double a = theta(t);
-                    trail.x.push_back(std::sin(a));
-                    trail.y.push_back(-std::cos(a));
+                const double t0 = w0_t - span * (8 - k) / 8;
+                const double t1 = w0_t - span * (7 - k) / 8;
+                // Drawn after this function returns: holds its own copies.
+                const auto bob_at = [exact, solution, period, exact_m = is_exact(m)](double t) {
+                    const double a = exact_m ? exact.theta_at_fraction(t / period) : solution.theta(t);
+                    return std::pair{std::sin(a), -std::cos(a)};
+                };
+                for (double t : {t0, t1}) {
+                    trail.x.push_back(bob_at(t).first);
+                    trail.y.push_back(bob_at(t).second);
                 }
+                trail.curve = plot::parametric_curve(t0, t1, bob_at, 1);
                 panel.data.push_back(std::move(trail));
             }
         }

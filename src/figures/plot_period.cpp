@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -45,24 +46,29 @@ plot::panel period_panel(const panel_context& c, const panel_spec& p) {
         const auto& m = p.methods[i];
         const series_style st = style_of(m, static_cast<int>(i));
         if (p.y == period_axis::value) {
-            auto s = make_series(st, is_exact(m) ? circle_amplitudes(lo, hi) : curve,
-                                 [&](double t) { return seconds * pendulum::method_period(m.method, t); });
+            const std::function<double(double)> period = [method = m.method, seconds](double t) {
+                return seconds * pendulum::method_period(method, t);
+            };
+            auto s = make_series(st, is_exact(m) ? circle_amplitudes(lo, hi) : curve, period);
             for (double& v : s.x) v = to_axis_angle(p, v);
+            s.curve = amplitude_curve(p, curve.front(), curve.back(), period);
             panel.data.push_back(std::move(s));
             continue;
         }
         if (is_exact(m)) continue;  // its error is zero
+        const auto error = [method = m.method, percent = p.y == period_axis::error_percent](double t, double ratio) {
+            const double err = pendulum::method_period(method, t) / ratio - 1;
+            if (percent) return 100 * err;
+            // Below the rounding of T itself an error means nothing on a log axis.
+            return std::fabs(err) > 1e-16 ? std::fabs(err) : std::nan("");
+        };
         plot::series s = series_of(st);
         for (std::size_t k = 0; k < curve.size(); ++k) {
-            const double err = pendulum::method_period(m.method, curve[k]) / exact[k] - 1;
             s.x.push_back(to_axis_angle(p, curve[k]));
-            if (p.y == period_axis::error_percent) {
-                s.y.push_back(100 * err);
-            } else {
-                // Below the rounding of T itself an error means nothing on a log axis.
-                s.y.push_back(std::fabs(err) > 1e-16 ? std::fabs(err) : std::nan(""));
-            }
+            s.y.push_back(error(curve[k], exact[k]));
         }
+        s.curve = amplitude_curve(p, curve.front(), curve.back(),
+                                  [error](double t) { return error(t, pendulum::period_ratio(t)); });
         panel.data.push_back(std::move(s));
     }
     return panel;

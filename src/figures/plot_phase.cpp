@@ -43,16 +43,20 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
                     s.marker = marker_style::none;
                     s.style_key.clear();
                 }
-                for (double t : s_grid) {
-                    s.x.push_back(angle * exact.theta_at_fraction(t));
-                    s.y.push_back(pendulum::velocity_at_fraction(exact, t));
-                }
+                s.curve = plot::parametric_curve(0, 1, [exact, angle](double t) {
+                    return std::pair{angle * exact.theta_at_fraction(t), pendulum::velocity_at_fraction(exact, t)};
+                }, 8);
             } else {
-                const auto sol = pendulum::method_solution(m.method, a.value);
-                for (double t : s_grid) {
-                    s.x.push_back(angle * sol.theta(t * period));
-                    s.y.push_back(pendulum::velocity(sol, t * period));
-                }
+                s.curve = plot::parametric_curve(
+                    0, 1, [sol = pendulum::method_solution(m.method, a.value), period, angle](double t) {
+                        return std::pair{angle * sol.theta(t * period), pendulum::velocity(sol, t * period)};
+                    }, 8);
+            }
+            // The orbit is drawn from its curve; these samples set the limits and place the legend.
+            for (double t : s_grid) {
+                const auto [x, y] = s.curve->at(t);
+                s.x.push_back(x);
+                s.y.push_back(y);
             }
             panel.data.push_back(std::move(s));
         }
@@ -63,9 +67,12 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
             plot::series s;
             if (sign > 0) s.label = "separatrix";
             s.line = line_style::dashed;
+            s.curve = plot::function_curve(-pi * angle, pi * angle, [sign, angle](double x) {
+                return sign * pendulum::separatrix_velocity(x / angle);
+            });
             for (double t : theta) {
                 s.x.push_back(angle * t);
-                s.y.push_back(sign * pendulum::separatrix_velocity(t));
+                s.y.push_back(s.curve->at(angle * t).second);
             }
             panel.data.push_back(std::move(s));
         }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -52,18 +53,23 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
     panel.y.round_limits = true;
     panel.y.margin = 0.002;  // just enough to keep the curve off the frame at a tick
     const double angle = p.degrees ? 180 / pi : 1.0;
+    // The lines are drawn from theta(s), first cut into eight pieces a period.
+    const int pieces = std::max(8, static_cast<int>(std::lround(8 * span)));
     for (std::size_t i = 0; i < p.methods.size(); ++i) {
         const auto& m = p.methods[i];
         const series_style st = style_of(m, static_cast<int>(i));
+        std::function<double(double)> theta;  // of s = t/T
         if (is_exact(m)) {
-            panel.data.push_back(make_series(st, grid(lo, hi, circles),
-                                             [&](double s) { return angle * exact.theta_at_fraction(s); }));
+            theta = [exact, angle](double s) { return angle * exact.theta_at_fraction(s); };
         } else {
-            const auto solution = pendulum::method_solution(m.method, a.value);
-            panel.data.push_back(make_series(st, grid(lo, hi, points),
-                                             [&](double s) { return angle * solution.theta(s * period); }));
+            theta = [solution = pendulum::method_solution(m.method, a.value), period, angle](double s) {
+                return angle * solution.theta(s * period);
+            };
         }
+        panel.data.push_back(make_series(st, grid(lo, hi, is_exact(m) ? circles : points), theta));
         panel.data.back().x = scaled(std::move(panel.data.back().x));
+        panel.data.back().curve = plot::parametric_curve(
+            lo, hi, [theta, unit = unit](double s) { return std::pair{s * unit, theta(s)}; }, pieces);
     }
     // The exact motion sets the angle axis; an approximation that overshoots it near the
     // separatrix is clipped rather than stretching the axis.

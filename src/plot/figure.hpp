@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <functional>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <utility>
 #include <string>
@@ -43,6 +46,39 @@ enum class line_style { none, solid, dashed, dotted, dash_dot };
 /// How a series' points are marked.
 enum class marker_style { none, open_circle, filled_circle };
 
+/// A curve given by a function: the points (x(u), y(u)) for u from u0 to u1, a line
+/// wherever both are finite (a non-finite value breaks it). The plot layer samples it when
+/// it draws, as finely as the device needs for the line to stay within a twentieth of a
+/// point of the curve (a 160th on vector surfaces, which viewers zoom).
+struct curve {
+    double u0 = 0;  ///< first parameter
+    double u1 = 1;  ///< last parameter
+    std::function<std::pair<double, double>(double)> at{};  ///< (x, y) at a parameter
+    int pieces = 32;  ///< the first, even subdivision: fine enough to see every wiggle
+
+    /// The plot layer's memo of its last few samplings: an animation draws the same curve
+    /// in every frame (on axes that may be tried with and without a legend above them),
+    /// and figures are written to several files at once.
+    struct memo {
+        struct sampling {
+            std::vector<double> key;
+            std::vector<double> x;
+            std::vector<double> y;
+            std::vector<double> u;
+        };
+        std::mutex lock;
+        std::vector<sampling> last;  ///< the most recent last
+    };
+    std::shared_ptr<memo> last = std::make_shared<memo>();  ///< see memo
+};
+
+/// The curve y = f(x) for x from x0 to x1.
+std::shared_ptr<const curve> function_curve(double x0, double x1, std::function<double(double)> f);
+
+/// The curve (x(u), y(u)) for u from u0 to u1, first cut into `pieces`.
+std::shared_ptr<const curve> parametric_curve(double u0, double u1, std::function<std::pair<double, double>(double)> at,
+                                              int pieces = 32);
+
 /// One curve or set of points, with its legend entry.
 struct series {
     // Every member has an initializer, so that an aggregate initialization may name only
@@ -50,6 +86,10 @@ struct series {
     plot::label label{};                    ///< legend text; empty: no entry
     std::vector<double> x{};                ///< abscissae
     std::vector<double> y{};                ///< ordinates; non-finite values break the line
+    /// When set, the line is drawn from this function rather than through the points,
+    /// which are then its markers and the samples that set the axis limits and place the
+    /// legend (they should lie on the curve).
+    std::shared_ptr<const plot::curve> curve{};
     line_style line = line_style::solid;    ///< line style
     marker_style marker = marker_style::none;  ///< marker
     int color = 0;                          ///< index into the theme's palette

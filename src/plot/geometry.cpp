@@ -2,6 +2,8 @@
 #include "plot/geometry.hpp"
 
 #include <algorithm>
+#include <array>
+#include <mutex>
 
 namespace plot {
 
@@ -44,6 +46,192 @@ device_series to_device(const series& s, const axis_map& mx, const axis_map& my)
         const bool ok = std::isfinite(s.x[i]) && std::isfinite(s.y[i]);
         d.x.push_back(ok ? mx(s.x[i]) : std::numeric_limits<double>::quiet_NaN());
         d.y.push_back(ok ? my(s.y[i]) : std::numeric_limits<double>::quiet_NaN());
+    }
+    return d;
+}
+
+std::shared_ptr<const curve> parametric_curve(double u0, double u1, std::function<std::pair<double, double>(double)> at,
+                                              int pieces) {
+    auto c = std::make_shared<curve>();
+    c->u0 = u0;
+    c->u1 = u1;
+    c->at = std::move(at);
+    c->pieces = pieces;
+    return c;
+}
+
+std::shared_ptr<const curve> function_curve(double x0, double x1, std::function<double(double)> f) {
+    return parametric_curve(x0, x1, [f = std::move(f)](double x) { return std::pair{x, f(x)}; });
+}
+
+namespace {
+
+/// Recursive subdivision of a curve's parameter in device space.
+class curve_sampler {
+public:
+    curve_sampler(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
+                  std::vector<double>& x, std::vector<double>& y, std::vector<double>& u)
+        : c_(c), mx_(mx), my_(my), clip_(clip), tolerance_(tolerance), x_(x), y_(y), u_(u) {}
+
+    void run() {
+        x_.clear();
+        y_.clear();
+        u_.clear();
+        if (!c_.at || !(c_.u1 > c_.u0)) return;
+        const int pieces = std::clamp(c_.pieces, 1, 1 << 16);
+        point a = eval(c_.u0);
+        emit(a);
+        for (int i = 1; i <= pieces; ++i) {
+            const double u = i == pieces ? c_.u1 : c_.u0 + (c_.u1 - c_.u0) * i / pieces;
+            const point b = eval(u);
+            piece_end_ = std::min(x_.size() + max_piece_points, max_points);
+            refine(a, eval(0.5 * (a.u + u)), b, 0);
+            a = b;
+        }
+    }
+
+private:
+    struct point {
+        double u;
+        double x;
+        double y;
+        bool ok;
+    };
+
+    // Halvings of a first piece at most: 2^-30 of it is below what a double resolves
+    // in the parameter of a plotted curve.
+    static constexpr int max_depth = 30;
+    // Vertices at most, of a first piece and of the curve: more are spent only on a curve
+    // that is not smooth at any scale (rounding noise, values that flicker between finite
+    // and not), and what is left of it is drawn through the points at hand.
+    static constexpr std::size_t max_piece_points = 4096;
+    static constexpr std::size_t max_points = std::size_t{1} << 16;
+    std::size_t piece_end_ = 0;  // the vertex count at which the current piece is spent
+
+    point eval(double u) const {
+        const auto [dx, dy] = c_.at(u);
+        const bool finite = std::isfinite(dx) && std::isfinite(dy);
+        const double px = finite ? mx_(dx) : 0.0;
+        const double py = finite ? my_(dy) : 0.0;
+        return {u, px, py, finite && std::isfinite(px) && std::isfinite(py)};
+    }
+
+    void emit(const point& p) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        if (!p.ok && !x_.empty() && std::isnan(x_.back())) return;  // one break is enough
+        x_.push_back(p.ok ? p.x : nan);
+        y_.push_back(p.ok ? p.y : nan);
+        u_.push_back(p.u);
+    }
+
+    /// Which sides of the clip rectangle the point is beyond, as bits.
+    int beyond(const point& p) const {
+        return (p.x < clip_.x ? 1 : 0) | (p.x > clip_.x + clip_.w ? 2 : 0) | (p.y < clip_.y ? 4 : 0) |
+               (p.y > clip_.y + clip_.h ? 8 : 0);
+    }
+
+    double off_chord(const point& p, const point& a, const point& b) const {
+        return distance_to_segment(p.x, p.y, a.x, a.y, b.x, b.y);
+    }
+
+    /// Emits the vertices after a up to b, m being the curve at the middle of [a.u, b.u].
+    void refine(const point& a, const point& m, const point& b, int depth) {
+        if (depth >= max_depth || x_.size() >= piece_end_) {
+            emit(m);
+            emit(b);
+            return;
+        }
+        const point q1 = eval(0.5 * (a.u + m.u));
+        const point q3 = eval(0.5 * (m.u + b.u));
+        const std::array<const point*, 5> all{&a, &q1, &m, &q3, &b};
+        const bool finite = std::all_of(all.begin(), all.end(), [](const point* p) { return p->ok; });
+        if (finite) {
+            // Beyond one side of the clip rectangle all along: the chord is clipped away.
+            int side = 15;
+            for (const point* p : all) side &= beyond(*p);
+            // The chord stands for the curve when the quarter points are on it. The bound
+            // has a margin for the deviation between them. A curve that runs much faster
+            // through one half than the other is near a singularity (a log error at a zero,
+            // a period at pi), where a sharp tip can hide between the quarter points: it is
+            // cut until its quarters are alike or short.
+            const double bound = 0.8 * tolerance_;
+            double longest = 0;  // squared lengths of the quarters
+            double shortest = HUGE_VAL;
+            for (std::size_t i = 1; i < all.size(); ++i) {
+                const double dx = all[i]->x - all[i - 1]->x;
+                const double dy = all[i]->y - all[i - 1]->y;
+                longest = std::max(longest, dx * dx + dy * dy);
+                shortest = std::min(shortest, dx * dx + dy * dy);
+            }
+            const bool uneven = longest > 0.25 * 0.25 && longest > 4 * shortest;
+            if (side != 0 || (!uneven && off_chord(q1, a, b) <= bound && off_chord(m, a, b) <= bound &&
+                              off_chord(q3, a, b) <= bound)) {
+                emit(b);
+                return;
+            }
+        } else if (std::none_of(all.begin(), all.end(), [](const point* p) { return p->ok; })) {
+            emit(b);  // a gap
+            return;
+        }
+        refine(a, q1, m, depth + 1);
+        refine(m, q3, b, depth + 1);
+    }
+
+    const curve& c_;
+    const axis_map& mx_;
+    const axis_map& my_;
+    rect clip_;
+    double tolerance_;
+    std::vector<double>& x_;
+    std::vector<double>& y_;
+    std::vector<double>& u_;
+};
+
+std::function<void(const sampled_curve&)>& observer() {
+    static std::function<void(const sampled_curve&)> f;
+    return f;
+}
+
+}  // namespace
+
+void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
+                  std::vector<double>& x, std::vector<double>& y) {
+    const std::vector<double> key{mx.lo, mx.hi, mx.log ? 1.0 : 0.0, mx.d0, mx.d1, my.lo, my.hi, my.log ? 1.0 : 0.0,
+                                  my.d0, my.d1, clip.x, clip.y, clip.w, clip.h, tolerance};
+    std::vector<double> u;
+    bool known = false;
+    if (c.last) {
+        const std::lock_guard<std::mutex> hold(c.last->lock);
+        for (const auto& m : c.last->last) {
+            if (m.key != key) continue;
+            x = m.x;
+            y = m.y;
+            u = m.u;
+            known = true;
+            break;
+        }
+    }
+    if (!known) {
+        curve_sampler(c, mx, my, clip, tolerance, x, y, u).run();
+        if (c.last) {
+            constexpr std::size_t kept = 4;
+            const std::lock_guard<std::mutex> hold(c.last->lock);
+            auto& last = c.last->last;
+            if (last.size() >= kept) last.erase(last.begin());
+            last.push_back({key, x, y, u});
+        }
+    }
+    if (observer()) observer()(sampled_curve{&c, mx, my, clip, tolerance, x, y, u});
+}
+
+void observe_sampled_curves(std::function<void(const sampled_curve&)> f) { observer() = std::move(f); }
+
+device_series to_device(const series& s, const axis_map& mx, const axis_map& my, const rect& clip,
+                        double tolerance) {
+    device_series d = to_device(s, mx, my);
+    if (s.curve && s.line != line_style::none) {
+        d.sampled = true;
+        sample_curve(*s.curve, mx, my, clip, tolerance, d.lx, d.ly);
     }
     return d;
 }

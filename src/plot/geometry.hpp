@@ -5,6 +5,7 @@
 #include "plot/figure.hpp"
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -38,8 +39,15 @@ struct axis_map {
 
 /// Device coordinates of one series; non-finite points are NaN.
 struct device_series {
-    std::vector<double> x;
-    std::vector<double> y;
+    std::vector<double> x{};  // the points: markers, and the line of a series without a curve
+    std::vector<double> y{};
+    bool sampled = false;      // the line is the series' curve, sampled into lx, ly
+    std::vector<double> lx{};
+    std::vector<double> ly{};
+
+    /// The vertices of the drawn line.
+    const std::vector<double>& line_x() const { return sampled ? lx : x; }
+    const std::vector<double>& line_y() const { return sampled ? ly : y; }
 };
 
 /// Liang-Barsky: clips the segment to r; returns false if nothing is left.
@@ -47,6 +55,34 @@ bool clip_segment(double& x0, double& y0, double& x1, double& y1, const rect& r)
 
 /// The series in device coordinates; points with a non-finite coordinate are NaN.
 device_series to_device(const series& s, const axis_map& mx, const axis_map& my);
+
+/// The curve in device coordinates: a polyline whose segments stay within `tolerance` of
+/// the curve wherever it passes through `clip` (elsewhere it is sampled coarsely), by
+/// recursive subdivision of the parameter; NaN where the curve is not finite. The last
+/// sampling of a curve is remembered, so that drawing it again with the same maps costs
+/// nothing (the frames of an animation).
+void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
+                  std::vector<double>& x, std::vector<double>& y);
+
+/// A curve as sample_curve sampled it: the parameter of each vertex too.
+struct sampled_curve {
+    const curve* c;
+    axis_map mx;
+    axis_map my;
+    rect clip;
+    double tolerance;
+    const std::vector<double>& x;
+    const std::vector<double>& y;
+    const std::vector<double>& u;
+};
+
+/// For tests: f sees every curve sample_curve samples (or none, with an empty f). Not
+/// for use while other threads draw.
+void observe_sampled_curves(std::function<void(const sampled_curve&)> f);
+
+/// The series in device coordinates, its curve (if any) sampled as sample_curve does.
+device_series to_device(const series& s, const axis_map& mx, const axis_map& my, const rect& clip,
+                        double tolerance);
 
 /// Distance from the point (px, py) to the segment from (ax, ay) to (bx, by).
 double distance_to_segment(double px, double py, double ax, double ay, double bx, double by);

@@ -288,11 +288,13 @@ std::pair<axis_map, axis_map> axis_maps(const panel& p, const panel_plan& plan, 
             axis_map{plan.yt.lo, plan.yt.hi, p.y.kind == scale::log, area.y + area.h, area.y}};
 }
 
-panel_geometry place_panel(const panel& p, const panel_plan& plan, const rect& area) {
+panel_geometry place_panel(const panel& p, const panel_plan& plan, const rect& area, double tolerance,
+                           double reach) {
     panel_geometry g;
     g.area = area;
     std::tie(g.mx, g.my) = axis_maps(p, plan, area);
-    for (const auto& s : p.data) g.dev.push_back(to_device(s, g.mx, g.my));
+    const rect clip{area.x - reach, area.y - reach, area.w + 2 * reach, area.h + 2 * reach};
+    for (const auto& s : p.data) g.dev.push_back(to_device(s, g.mx, g.my, clip, tolerance));
     return g;
 }
 

@@ -89,8 +89,10 @@ struct panel_geometry {
 /// The maps from the panel's data to device points on the axes rectangle `area` (x, y).
 std::pair<axis_map, axis_map> axis_maps(const panel& p, const panel_plan& plan, const rect& area);
 
-/// Maps the panel's data into the axes rectangle `area`.
-panel_geometry place_panel(const panel& p, const panel_plan& plan, const rect& area);
+/// Maps the panel's data into the axes rectangle `area`; curves are sampled to within
+/// `tolerance` points where they pass within `reach` of the rectangle (sample_curve).
+panel_geometry place_panel(const panel& p, const panel_plan& plan, const rect& area, double tolerance = 0.05,
+                           double reach = 0);
 
 /// The largest rectangle centred in `area` on which one data unit is as long on both axes.
 rect equal_aspect_area(const rect& area, const panel_plan& plan);

@@ -15,8 +15,10 @@ int overlap(const rect& box, const std::vector<series>& data, const std::vector<
         // What moves in an animation must not move the legend from frame to frame.
         if (data[k].overlay) continue;
         if (data[k].line != line_style::none) {
-            for (std::size_t i = 1; i < d.x.size(); ++i) {
-                double x0 = d.x[i - 1], y0 = d.y[i - 1], x1 = d.x[i], y1 = d.y[i];
+            const auto& lx = d.line_x();
+            const auto& ly = d.line_y();
+            for (std::size_t i = 1; i < lx.size(); ++i) {
+                double x0 = lx[i - 1], y0 = ly[i - 1], x1 = lx[i], y1 = ly[i];
                 if (std::isnan(x0 + y0 + x1 + y1)) continue;
                 if (clip_segment(x0, y0, x1, y1, box)) ++count;
             }

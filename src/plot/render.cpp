@@ -48,6 +48,22 @@ page_size figure_size(const figure& fig, const theme& th) {
 
 namespace {
 
+/// How closely a sampled curve follows its function on the surface of cr, in points: the
+/// line drawn stays within a twentieth of a point of the curve, or half a pixel of a raster
+/// surface where that is finer; on a vector surface, which a viewer zooms, within an eighth
+/// of a twentieth. Cairo rounds path coordinates to 1/256 of a device unit (a point on a
+/// vector surface), which takes up part of that.
+double curve_tolerance(cairo_t* cr) {
+    constexpr double at_size = 0.05;
+    double dx = 1.0;
+    double dy = 0.0;
+    cairo_user_to_device_distance(cr, &dx, &dy);
+    const double units_per_point = std::hypot(dx, dy) > 0 ? std::hypot(dx, dy) : 1.0;
+    const double rounding = std::sqrt(0.5) / 256 / units_per_point;
+    if (cairo_surface_get_type(cairo_get_target(cr)) != CAIRO_SURFACE_TYPE_IMAGE) return at_size / 8 - rounding;
+    return std::min(at_size, 0.5 / units_per_point) - rounding;
+}
+
 void draw_ticks(cairo_t* cr, const theme& th, const tick_set& t, const axis_map& m, const rect& area,
                 bool horizontal) {
     auto tick = [&](double v, double len) {
@@ -81,7 +97,10 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         return pass == draw_pass::all || (pass == draw_pass::overlay) == s.overlay;
     };
     const double pad = th.padding_pt;
-    panel_geometry g = place_panel(p, plan, panel_area(p, plan, cell));
+    const double tolerance = curve_tolerance(cr);
+    // Curves are followed closely where their lines show: within a line width of the axes.
+    const double reach = th.line_width_pt;
+    panel_geometry g = place_panel(p, plan, panel_area(p, plan, cell), tolerance, reach);
     const legend_layout& lg = plan.legend;
     std::optional<rect> legend_box;
     std::optional<rect> legend_band;
@@ -93,7 +112,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
             rect area = g.area;
             area.y += band;
             area.h -= band;
-            g = place_panel(p, plan, area);
+            g = place_panel(p, plan, area, tolerance, reach);
             legend_band = rect{cell.x + pad, cell.y + 0.3 * pad, cell.w - 2 * pad, band};
         }
     }
@@ -107,8 +126,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     cairo_save(cr);
     cairo_rectangle(cr, area.x, area.y, area.w, area.h);
     cairo_clip(cr);
-    const rect clip{area.x - th.line_width_pt, area.y - th.line_width_pt, area.w + 2 * th.line_width_pt,
-                    area.h + 2 * th.line_width_pt};
+    const rect clip{area.x - reach, area.y - reach, area.w + 2 * reach, area.h + 2 * reach};
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         const auto& s = p.data[k];
         if (s.line == line_style::none || !drawn(s)) continue;
@@ -315,7 +333,8 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     const legend_layout& lg = plans[0].legend;
     std::optional<std::size_t> legend_panel;
     for (std::size_t i = 0; i < fig.panels.size() && !legend_panel; ++i) {
-        const auto g = place_panel(fig.panels[i], plans[i], axes_area(plans[i], cells[i]));
+        const auto g = place_panel(fig.panels[i], plans[i], axes_area(plans[i], cells[i]), curve_tolerance(cr),
+                                   th.line_width_pt);
         if (legend_inside(fig.panels[i], lg, g, th)) legend_panel = i;
     }
     if (!legend_panel && !lg.entries.empty()) {

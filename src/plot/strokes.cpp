@@ -49,8 +49,10 @@ void stroke_polyline(cairo_t* cr, const device_series& d, const rect& clip) {
     // Visible runs of the clipped polyline, each simplified, then stroked as one path.
     std::vector<std::vector<std::pair<double, double>>> runs;
     bool open = false;
-    for (std::size_t i = 1; i < d.x.size(); ++i) {
-        double x0 = d.x[i - 1], y0 = d.y[i - 1], x1 = d.x[i], y1 = d.y[i];
+    const auto& lx = d.line_x();
+    const auto& ly = d.line_y();
+    for (std::size_t i = 1; i < lx.size(); ++i) {
+        double x0 = lx[i - 1], y0 = ly[i - 1], x1 = lx[i], y1 = ly[i];
         if (std::isnan(x0 + y0 + x1 + y1) || !clip_segment(x0, y0, x1, y1, clip)) {
             open = false;
             continue;
@@ -60,7 +62,9 @@ void stroke_polyline(cairo_t* cr, const device_series& d, const rect& clip) {
         open = true;
     }
     for (auto& run : runs) {
-        simplify(run, 0.05);
+        // A sampled curve has the vertices it needs and no more; simplifying it would take
+        // it further from the curve.
+        if (!d.sampled) simplify(run, 0.05);
         cairo_move_to(cr, run.front().first, run.front().second);
         for (std::size_t i = 1; i < run.size(); ++i) cairo_line_to(cr, run[i].first, run[i].second);
     }

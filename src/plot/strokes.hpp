@@ -18,7 +18,8 @@ void set_color(cairo_t* cr, const theme& th, const series& s);
 /// Sets width, dash pattern and caps of a line style.
 void set_line_style(cairo_t* cr, const theme& th, line_style style, double width_scale = 1.0);
 
-/// Strokes the polyline clipped to `clip`, each visible run simplified.
+/// Strokes the series' line clipped to `clip`: a sampled curve as it is, a polyline through
+/// points with each visible run simplified.
 void stroke_polyline(cairo_t* cr, const device_series& d, const rect& clip);
 
 /// Draws open circles at the points within `area` (grown by the marker radius).

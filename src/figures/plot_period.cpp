@@ -35,12 +35,7 @@ plot::panel period_panel(const panel_context& c, const panel_spec& p) {
             panel.y.max_ticks = 9;
             break;
     }
-    // Each period is computed once per amplitude: the exact one for the errors.
     const auto curve = curve_amplitudes(lo, hi);
-    std::vector<double> exact;
-    if (p.y != period_axis::value) {
-        for (double t : curve) exact.push_back(pendulum::period_ratio(t));
-    }
     for (std::size_t i = 0; i < p.methods.size(); ++i) {
         const auto& m = p.methods[i];
         const series_style st = style_of(m, static_cast<int>(i));
@@ -54,13 +49,17 @@ plot::panel period_panel(const panel_context& c, const panel_spec& p) {
         if (is_exact(m)) continue;  // its error is zero
         plot::series s = series_of(st);
         for (std::size_t k = 0; k < curve.size(); ++k) {
-            const double err = pendulum::method_period(m.method, curve[k]) / exact[k] - 1;
+            // Without cancellation (MPFR where the periods agree closely): right to 1e-12.
+            const auto err = pendulum::method_period_error(m.method, curve[k]);
             s.x.push_back(to_axis_angle(p, curve[k]));
-            if (p.y == period_axis::error_percent) {
-                s.y.push_back(100 * err);
+            using kind = pendulum::period_error::kind;
+            if (err.what == kind::no_period || err.what == kind::not_computed) {
+                s.y.push_back(std::nan(""));
+            } else if (p.y == period_axis::error_percent) {
+                s.y.push_back(100 * err.value);  // 0 below 1e-300
             } else {
-                // Below the rounding of T itself an error means nothing on a log axis.
-                s.y.push_back(std::fabs(err) > 1e-16 ? std::fabs(err) : std::nan(""));
+                // Below 1e-300 an error has no place on a log axis of doubles.
+                s.y.push_back(err.what == kind::value && err.value != 0 ? std::fabs(err.value) : std::nan(""));
             }
         }
         panel.data.push_back(std::move(s));

@@ -81,10 +81,10 @@ jacobi_values jacobi(double u, double kp) {
     return {sn, cn, dn};
 }
 
-exact_solution::exact_solution(double theta0) : theta0_(theta0) {
-    check_amplitude(theta0);
-    k_ = std::sin(0.5 * theta0);
-    kp_ = std::cos(0.5 * theta0);
+exact_solution::exact_solution(const pendulum::amplitude& a) : theta0_(a.radians()) {
+    const double theta0 = theta0_;
+    k_ = a.k();
+    kp_ = a.kp();
     quarter_ = 0.5 * pi / agm(1.0, kp_);
     if (theta0 < small_amplitude) {
         // q = (k/4)^2 (1 + k^2/2 + ...) with k = theta0/2 (1 - theta0^2/24): ln q to double,
@@ -209,9 +209,9 @@ double exact_solution::coefficient_by_quadrature(int n) const {
     return 4.0 / pi * result;
 }
 
-double period_ratio(double theta0) { return exact_solution(theta0).period_ratio(); }
+double period_ratio(const amplitude& theta0) { return exact_solution(theta0).period_ratio(); }
 
-std::vector<double> fourier_coefficients(double theta0, int count) {
+std::vector<double> fourier_coefficients(const amplitude& theta0, int count) {
     const exact_solution solution(theta0);
     std::vector<double> c;
     c.reserve(count > 0 ? count : 0);

@@ -3,9 +3,11 @@
 // references (tests/data/make_near_pi.py).
 #include "pendulum/amplitude.hpp"
 #include "pendulum/angle.hpp"
+#include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/period_error.hpp"
+#include "process.hpp"
 #include "reference.hpp"
 
 #include <gtest/gtest.h>
@@ -240,6 +242,76 @@ TEST(Scan, ThousandAmplitudesEveryMethodAgainstMpmath) {
     for (const auto& [name, w] : worst) {
         std::cout << name << ": period worst " << w.ulps << " ulps (" << w.ulps_at << "); error worst " << w.error
                   << " relative (" << w.error_at << ")\n";
+    }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Coefficients, ExactC1C3C5InUlps) {
+    // coefficients_dense.csv: theta0, c1, c3, c5 (mpmath). The nome's series below pi/2 keeps
+    // c5 within 10 ulps where exp((n + 1/2) ln q) lost 350 near theta0 = 1e-8.
+    const auto rows = test_support::read_reference("coefficients_dense.csv");
+    ASSERT_EQ(rows.size(), 400u);
+    const double limit[] = {3, 6, 12};
+    double worst[] = {0, 0, 0};
+    for (const auto& r : rows) {
+        const exact_solution e(r[0]);
+        for (int n = 0; n < 3; ++n) {
+            const double u = ulps(e.coefficient(n), r[static_cast<std::size_t>(n + 1)]);
+            EXPECT_LE(u, limit[n]) << "c" << 2 * n + 1 << " at " << format_double(r[0]);
+            worst[n] = std::max(worst[n], u);
+        }
+    }
+    std::cout << "worst ulps: c1 " << worst[0] << ", c3 " << worst[1] << ", c5 " << worst[2] << "\n";
+}
+
+}  // namespace
+
+namespace {
+
+TEST(NearPiCli, EvalKeepsTheDistanceAndRejectsWhatNoDoubleCarries) {
+    const auto r = test_support::run_cli("eval --theta0 'pi - 1e-300,pi - 1e-17' --method kidd-fogg");
+    ASSERT_EQ(r.status, 0) << r.err;
+    // period_exact 1/AGM(1, k') = 441.08517292857255 and 26.243623962816454 (near_pi.csv, to
+    // 15 digits here); Kidd-Fogg 1/sqrt(5e-301) = 1.4142135623730950e+150 (50-digit mpmath).
+    EXPECT_NE(r.out.find("3.141592653589793,441.085172928572"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(",1.41421356237309"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("3.141592653589793,26.2436239628164"), std::string::npos) << r.out;
+    for (const char* bad : {"pi - 1e-400", "pi - 1e-310", "pi + 1e-300", "1e300 - (1e300 - 1e-300)"}) {
+        const auto b = test_support::run_cli(std::string("eval --theta0 '") + bad + "'");
+        EXPECT_EQ(b.status, 2) << bad << ": " << b.out;
+        EXPECT_TRUE(b.out.empty()) << bad;
+        EXPECT_NE(b.err.find("--theta0"), std::string::npos) << b.err;
+    }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PeriodErrors, IterationNearPiRightTo1e14) {
+    // iteration.csv's exact-arithmetic T_N/T0 next to pi, where the double iteration drifts
+    // (at pi - 1e-12 by 27 % at N = 92): iterated_sequence() works with MPFR there.
+    const auto rows = test_support::read_reference_text("iteration.csv");
+    for (const char* text : {"pi-1e-6", "pi-1e-9"}) {
+        const auto levels = iterated_sequence(parse_amplitude(text), 24);
+        int checked = 0;
+        for (std::size_t i = 1; i < rows.size(); ++i) {
+            auto f = rows[i];
+            f.resize(6);
+            const int n = std::stoi(f[2]);
+            if (f[0] != text || n > 24) continue;
+            const auto& level = levels[static_cast<std::size_t>(n)];
+            if (f[4].empty()) {
+                EXPECT_FALSE(level.exists()) << text << " order " << n;
+            } else {
+                EXPECT_LE(std::fabs(level.period_ratio() / number(f[4]) - 1), 1e-14) << text << " order " << n;
+            }
+            ++checked;
+        }
+        EXPECT_GE(checked, 20) << text;
     }
 }
 

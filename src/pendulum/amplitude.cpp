@@ -38,15 +38,13 @@ amplitude::amplitude(double theta0) {
     theta0_ = theta0;
     // pi_hi - theta0 is exact for theta0 >= pi/2 (Sterbenz) and the one rounding is the last.
     d_ = (pi_hi - theta0) + pi_lo;
-    set_moduli();
 }
 
-void amplitude::set_moduli() {
+double amplitude::modulus(bool complementary) const {
     // Half of the smaller of theta0 and d: the sine and cosine of it are exact to rounding.
     const bool small = theta0_ <= 0.5 * pi_hi;
     const double half = 0.5 * (small ? theta0_ : d_);
-    k_ = small ? std::sin(half) : std::cos(half);
-    kp_ = small ? std::cos(half) : std::sin(half);
+    return small == complementary ? std::cos(half) : std::sin(half);
 }
 
 amplitude amplitude::from_pi(double d) {
@@ -57,7 +55,6 @@ amplitude amplitude::from_pi(double d) {
     amplitude a;
     a.d_ = d;
     a.theta0_ = (pi_hi - d) + pi_lo;
-    a.set_moduli();
     return a;
 }
 

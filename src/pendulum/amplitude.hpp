@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -38,19 +40,20 @@ public:
     /// d = pi - theta0, rounded to a double from the exact amplitude.
     double from_pi() const { return d_; }
     /// The modulus k = sin(theta0/2).
-    double k() const { return k_; }
+    double k() const { return std::isnan(k_) ? modulus(false) : k_; }
     /// The complementary modulus k' = cos(theta0/2) = sin(d/2).
-    double kp() const { return kp_; }
+    double kp() const { return std::isnan(kp_) ? modulus(true) : kp_; }
     /// True where the amplitude is closer to pi than to 0, and pi - d is the exact value.
     bool near_pi() const { return d_ < theta0_; }
 
 private:
     amplitude() = default;
-    void set_moduli();
+    /// k or k' from theta0 and d, where they were not given (most users need neither).
+    double modulus(bool complementary) const;
     double theta0_ = 0;
     double d_ = 0;
-    double k_ = 0;
-    double kp_ = 0;
+    double k_ = std::numeric_limits<double>::quiet_NaN();   // NaN: computed when asked for
+    double kp_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The amplitude as a round-trip text: "pi - 1e-06" close to pi (its exact distance),

@@ -3,6 +3,7 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/gsl_support.hpp"
+#include "pendulum/mp_iteration.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -192,6 +193,8 @@ fourier_solution iterated(const amplitude& theta0, int order) {
 }
 
 std::vector<fourier_solution> iterated_sequence(const amplitude& a, int order) {
+    // Close to pi the double iteration's rounding grows at every level: MPFR there.
+    if (a.from_pi() < detail::iteration_mp_below) return detail::iterated_sequence_mp(a, order);
     const double theta0 = a.radians();
     check_order(order);
     std::vector<fourier_solution> levels;

@@ -8,6 +8,7 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/mp_iteration.hpp"
 #include "pendulum/mp_real.hpp"
 #include "pendulum/period_formulas.hpp"
 
@@ -274,7 +275,8 @@ private:
 /// lambda = (w/w0)^2 of levels 0 .. order with `bits`; an unset entry where the projection
 /// did not converge (that level and all later ones).
 std::vector<std::optional<real>> mp_lambdas(const mp_amplitude& x, int order, mpfr_prec_t bits,
-                                            const std::function<bool(const real& lambda)>& stop = {}) {
+                                            const std::function<bool(const real& lambda)>& stop = {},
+                                            std::vector<std::vector<real>>* coefficients = nullptr) {
     std::vector<std::optional<real>> out;
     mp_projector project(bits);
     std::vector<real> u{real(1.0, bits)};
@@ -298,12 +300,60 @@ std::vector<std::optional<real>> mp_lambdas(const mp_amplitude& x, int order, mp
         u.clear();
         for (std::size_t k = 0; k < C.size(); ++k) u.push_back(C[k] / (static_cast<double>((2 * k + 1) * (2 * k + 1)) * lambda));
         out.emplace_back(lambda);
+        if (coefficients) coefficients->push_back(u);
         if (stop && stop(lambda)) break;
     }
     return out;
 }
 
 }  // namespace
+
+namespace {
+
+/// The iteration's levels with `bits`, rounded to doubles.
+std::vector<fourier_solution> mp_sequence(const amplitude& a, int order, mpfr_prec_t bits) {
+    const mp_amplitude x = exact_amplitude(a, bits);
+    std::vector<std::vector<real>> u;
+    const auto lambdas = mp_lambdas(x, order, bits, {}, &u);
+    std::vector<fourier_solution> levels;
+    for (std::size_t n = 0; n < lambdas.size(); ++n) {
+        if (!lambdas[n]) {
+            throw domain_error("the iteration's projection does not converge at order " + std::to_string(n) +
+                               " for theta0 = " + format_amplitude(a));
+        }
+        fourier_solution s;
+        s.frequency_ratio = lambdas[n]->sign() > 0 ? mp::sqrt(*lambdas[n]).to_double() : std::nan("");
+        for (const real& v : u[n]) s.coefficients.push_back((v * x.theta).to_double());
+        levels.push_back(std::move(s));
+    }
+    return levels;
+}
+
+}  // namespace
+
+std::vector<fourier_solution> detail::iterated_sequence_mp(const amplitude& a, int order) {
+    check_order(order);
+    // Close to pi the iteration amplifies rounding enormously (at pi - 1e-12, 128 bits give
+    // T_92/T0 = 26.59 where the exact iteration gives 30.50): the precision is doubled until
+    // every level's frequency agrees with the run at half the bits to 1e-15.
+    auto coarse = mp_sequence(a, order, 128);
+    for (mpfr_prec_t bits = 256;; bits *= 2) {
+        auto fine = mp_sequence(a, order, bits);
+        int differs = -1;
+        for (std::size_t n = 0; n < fine.size() && differs < 0; ++n) {
+            const double wc = coarse[n].frequency_ratio;
+            const double wf = fine[n].frequency_ratio;
+            const bool agree = (std::isnan(wc) && std::isnan(wf)) || std::fabs(wc / wf - 1) <= 1e-15;
+            if (!agree) differs = static_cast<int>(n);
+        }
+        if (differs < 0) return fine;
+        if (bits >= 2048) {
+            throw domain_error("the iteration at order " + std::to_string(differs) + " for theta0 = " +
+                               format_amplitude(a) + " cannot be computed to 1e-15 with 2048 bits");
+        }
+        coarse = std::move(fine);
+    }
+}
 
 std::vector<period_error> iterated_period_errors(const amplitude& a, int order, double floor) {
     check_order(order);

@@ -272,34 +272,40 @@ double parse_expression(std::string_view text) { return evaluate(text, false); }
 double parse_angle(std::string_view text) { return evaluate(text, true); }
 
 amplitude parse_amplitude(std::string_view text, std::string_view name) {
-    // Far from pi the double theta0 is all there is to know.
-    if (const auto v = plain_value(text); v && *v < 1.5) {
+    // A plain number below 3 (d > 0.14): its double is all there is to know, and its distance
+    // from pi and k' follow from it to rounding (a million amplitudes read without MPFR).
+    if (const auto v = plain_value(text); v && *v < 3.0) {
         check_amplitude(*v, name);
         return amplitude(*v);
     }
-    const real coarse = parser(text, working_bits).parse_all(true);
-    const real fine = parser(text, 2 * working_bits).parse_all(true);
-    const real d_coarse = mp::pi(working_bits) - coarse;
-    const real d_fine = mp::pi(2 * working_bits) - fine;
-    const double theta0 = fine.to_double();
-    const double d = d_fine.to_double();
-    if (!(fine > 0.0) || !(d_fine > 0.0)) {
-        // At or beyond pi (or 0) the rounded value says which: pi itself rounds to the double
-        // below pi, which check_amplitude rejects as pi.
-        check_amplitude(theta0, name);
-        check_amplitude(fine > 0.0 ? std::numbers::pi : 0.0, name);
+    // 128 bits (checked against 256) for plain numbers and most expressions, the working
+    // precision where those disagree: where they cancel, as pi - 1e-300 does.
+    for (const mpfr_prec_t bits : {mpfr_prec_t{128}, working_bits}) {
+        const real coarse = parser(text, bits).parse_all(true);
+        const real fine = parser(text, 2 * bits).parse_all(true);
+        const real d_coarse = mp::pi(bits) - coarse;
+        const real d_fine = mp::pi(2 * bits) - fine;
+        const double theta0 = fine.to_double();
+        const double d = d_fine.to_double();
+        const bool agree = coarse.to_double() == theta0 && d_coarse.to_double() == d;
+        if (bits != working_bits && (!agree || d_coarse.is_zero() || d_fine.is_zero())) continue;
+        if (!(fine > 0.0) || !(d_fine > 0.0)) {
+            // At or beyond pi (or 0) the rounded value says which: pi itself rounds to the
+            // double below pi, which check_amplitude rejects as pi.
+            check_amplitude(theta0, name);
+            check_amplitude(fine > 0.0 ? std::numbers::pi : 0.0, name);
+        }
+        if (!agree) parser(text, bits).fail("it cancels beyond " + std::to_string(2 * bits) + " bits");
+        if (d < DBL_MIN) {
+            throw domain_error(std::string(name) + " must be at least 2.2250738585072014e-308 below pi, got pi - " +
+                               format_double(d));
+        }
+        // k = sin(theta0/2), k' = sin(d/2): each from the exact value, rounded once.
+        const real k = mp::sin(fine / 2.0);
+        const real kp = mp::sin(d_fine / 2.0);
+        return amplitude::from_parts(theta0, d, k.to_double(), kp.to_double());
     }
-    if (coarse.to_double() != theta0 || d_coarse.to_double() != d) {
-        parser(text, working_bits).fail("it cancels beyond " + std::to_string(2 * working_bits) + " bits");
-    }
-    if (d < DBL_MIN) {
-        throw domain_error(std::string(name) + " must be at least 2.2250738585072014e-308 below pi, got pi - " +
-                           format_double(d));
-    }
-    // k = sin(theta0/2), k' = sin(d/2): each from the exact value, rounded once.
-    const real k = mp::sin(fine / 2.0);
-    const real kp = mp::sin(d_fine / 2.0);
-    return amplitude::from_parts(theta0, d, k.to_double(), kp.to_double());
+    throw domain_error("unreachable");  // the loop returns or throws at the working precision
 }
 
 std::vector<angle_token> angle_tokens(std::string_view text) {

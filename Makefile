@@ -32,7 +32,7 @@ endif
 # Debian packages needed to build and test. GoogleTest and Google Benchmark are listed too,
 # so that a machine without them gets them the same way.
 DEB_PACKAGES := g++ cmake make pkgconf
-DEB_PACKAGES += libgsl-dev libcairo2-dev libpango1.0-dev libcli11-dev libpng-dev
+DEB_PACKAGES += libgsl-dev libmpfr-dev libcairo2-dev libpango1.0-dev libcli11-dev libpng-dev
 DEB_PACKAGES += libgtest-dev libbenchmark-dev
 DEB_PACKAGES += libtomlplusplus-dev libgif-dev
 # Beamer and animate, for the test that plays an animation's PDF pages.

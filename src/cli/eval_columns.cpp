@@ -5,8 +5,8 @@
 
 namespace pendulum::cli {
 
-eval_point::eval_point(double t)
-    : theta0(t),
+eval_point::eval_point(const amplitude& t)
+    : theta0(t.radians()),
       exact(t),
       lowest(lowest_order(t)),
       first(first_order(t)),

@@ -13,7 +13,7 @@ namespace pendulum::cli {
 /// Everything eval computes once per amplitude.
 struct eval_point {
     /// Solves every method at theta0.
-    explicit eval_point(double theta0);
+    explicit eval_point(const amplitude& theta0);
     double theta0;                ///< the amplitude
     exact_solution exact;         ///< the exact solution
     fourier_solution lowest;      ///< lowest order

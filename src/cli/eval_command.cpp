@@ -23,10 +23,10 @@ namespace pendulum::cli {
 namespace {
 
 /// Says on standard error which levels of the iteration have no period at this amplitude.
-void warn_breakdown(double theta0, const std::vector<int>& levels) {
+void warn_breakdown(const amplitude& theta0, const std::vector<int>& levels) {
     std::string list;
     for (int n : levels) list += (list.empty() ? "" : ", ") + std::to_string(n);
-    std::cerr << "pendulum-figures: warning: theta0 = " << format_double(theta0) << ": the iteration has no period at order "
+    std::cerr << "pendulum-figures: warning: theta0 = " << format_amplitude(theta0) << ": the iteration has no period at order "
               << list << " (lambda = (w/w0)^2 < 0 there: the scheme itself breaks down near pi); "
               << (levels.size() == 1 ? "that field is" : "those fields are") << " left empty\n";
 }
@@ -75,7 +75,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         if (m.row->role == method_role::iterated) highest = std::max(highest, m.n);
     }
     table_writer writer(out, columns, format);
-    for (const double value : amplitudes) {
+    for (const auto& value : amplitudes) {
         const eval_point point(value);
         const auto levels = highest >= 0 ? iterated_sequence(value, highest) : std::vector<fourier_solution>{};
         std::vector<int> broken;
@@ -122,7 +122,7 @@ command add_eval_command(CLI::App& app) {
     cmd->footer(std::string("\n") + angle_help + "\n\nColumns: " + cli::eval_columns_help() +
                  "; then period_orderN for each --order N, period_NAME for each --method NAME, and T_s with "
                  "--length. Periods are T/T0. Numbers round-trip a double.\n\n"
-                 "Close to pi (from about pi - 3e-4) some levels of the iteration have lambda = (w/w0)^2 < 0, "
+                 "Close to pi (from pi - 6.995e-4) some levels of the iteration have lambda = (w/w0)^2 < 0, "
                  "so no period: at pi - 1e-6 the orders 6, 8, 16 and 17. That field is left empty (null in "
                  "JSON), a warning on standard error names the amplitude and the orders, and the exit status "
                  "stays 0: the table is complete, the value does not exist.\n\n"

@@ -16,20 +16,20 @@ const char* const angle_help =
 const CLI::Validator non_empty(
     [](std::string& value) { return value.empty() ? std::string("empty value") : std::string(); }, "", "NON-EMPTY");
 
-std::vector<double> parse_amplitude_values(const std::string& given) {
-    std::vector<double> values;
-    for_each_amplitude(given, [&](const std::string&, double v) { values.push_back(v); });
+std::vector<pendulum::amplitude> parse_amplitude_values(const std::string& given) {
+    std::vector<pendulum::amplitude> values;
+    for_each_amplitude(given, [&](const std::string&, const pendulum::amplitude& v) { values.push_back(v); });
     return values;
 }
 
 std::vector<figures::amplitude> parse_amplitudes(const std::string& given, std::size_t most) {
     std::vector<figures::amplitude> values;
-    for_each_amplitude(given, [&](const std::string& item, double v) {
+    for_each_amplitude(given, [&](const std::string& item, const pendulum::amplitude& v) {
         if (values.size() == most) {
             throw usage_error("--theta0: more than " + std::to_string(most) + " amplitudes; a figure's panel takes at most " +
                               std::to_string(most));
         }
-        values.push_back({item, v});
+        values.push_back({item, v.radians(), v});
     });
     return values;
 }

@@ -79,21 +79,20 @@ void for_each_item(const std::string& text, const std::string& option, Take take
 template <class Take>
 void for_each_amplitude(const std::string& given, Take take) {
     for_each_item(given, "--theta0", [&](const std::string& item) {
-        double v = 0;
+        std::optional<pendulum::amplitude> v;
         try {
-            v = parse_angle(item);
-            check_amplitude(v);
+            v = pendulum::parse_amplitude(item);
         } catch (const std::invalid_argument& e) {
             const std::string shown =
                 shown_text(item.size() <= 80 ? item : item.substr(0, 40) + "..." + item.substr(item.size() - 20));
             throw usage_error("--theta0 '" + shown + "': " + e.what());
         }
-        take(item, v);
+        take(item, *v);
     });
 }
 
 /// The values of --theta0, checked (a million of them take 8 MB).
-std::vector<double> parse_amplitude_values(const std::string& given);
+std::vector<pendulum::amplitude> parse_amplitude_values(const std::string& given);
 
 /// Amplitudes as typed and their values; figure titles show them as typed. More than
 /// `most` is bad input (the reading stops there).

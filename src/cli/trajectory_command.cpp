@@ -38,7 +38,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     const auto format = parse_table_format(o.format);
     const auto amplitudes = parse_amplitudes(o.theta0);
     if (amplitudes.size() != 1) throw usage_error("--theta0 takes one amplitude for trajectory");
-    const double theta0 = amplitudes.front().value;
+    const amplitude theta0 = amplitudes.front().theta0();
     std::string method_text = o.method;
     if (o.method == "order") {
         if (!order_given) throw usage_error("--method order needs --order N (or write --method order:N)");

@@ -29,19 +29,16 @@ plot::panel convergence_panel(const panel_context&, const panel_spec& p) {
     panel.y.max_ticks = 9;
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
         const amplitude& a = p.theta0[i];
-        const double exact = pendulum::period_ratio(a.value);
-        const auto levels = pendulum::iterated_periods(a.value, p.orders[1]);
+        // Every level with MPFR: each drawn error is right to 1e-12 relative; levels without a
+        // period (close to pi) and errors below the axis are gaps.
+        const auto levels = pendulum::iterated_period_errors(a.theta0(), p.orders[1], *panel.y.min);
         const series_style st = amplitude_style(i, std::string(theta0_markup) + " = " + typeset_angle(a.text));
         plot::series s = series_of(st);
         for (int n = p.orders[0]; n <= p.orders[1]; ++n) {
             const auto& level = levels[static_cast<std::size_t>(n)];
-            const double err = std::fabs(level.value / exact - 1);
-            // A point is drawn only where it is right to 10 %: its error, the level's rounding
-            // and that of T and of the ratio (1 ulp each), is below a tenth of it. Levels
-            // without a period (close to pi) are gaps too.
-            const double uncertainty = level.rounding / exact + 2 * std::numeric_limits<double>::epsilon();
+            const bool known = level.what == pendulum::period_error::kind::value && level.value != 0;
             s.x.push_back(n);
-            s.y.push_back(err >= 10 * uncertainty ? err : std::nan(""));
+            s.y.push_back(known ? std::fabs(level.value) : std::nan(""));
         }
         panel.data.push_back(std::move(s));
     }

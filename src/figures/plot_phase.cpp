@@ -28,7 +28,7 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
     const auto s_grid = grid(0, 1, 400);
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
         const amplitude& a = p.theta0[i];
-        const pendulum::exact_solution exact(a.value);
+        const pendulum::exact_solution exact(a.theta0());
         const double period = 4 * exact.quarter_period();
         for (std::size_t j = 0; j < p.methods.size(); ++j) {
             const auto& m = p.methods[j];
@@ -48,7 +48,7 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
                 }, 8);
             } else {
                 s.curve = plot::parametric_curve(
-                    0, 1, [sol = pendulum::method_solution(m.method, a.value), period, angle](double t) {
+                    0, 1, [sol = pendulum::method_solution(m.method, a.theta0()), period, angle](double t) {
                         return std::pair{angle * sol.theta(t * period), pendulum::velocity(sol, t * period)};
                     }, 8);
             }
@@ -83,7 +83,7 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
 void add_phase_frame(plot::panel& panel, const panel_context&, const panel_spec& p, double w0_t) {
     const double angle = p.degrees ? 180 / pi : 1.0;
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
-        const pendulum::exact_solution exact(p.theta0[i].value);
+        const pendulum::exact_solution exact(p.theta0[i].theta0());
         for (std::size_t j = 0; j < p.methods.size(); ++j) {
             // One method: each orbit its own colour, as the orbits are drawn.
             const int index = static_cast<int>(p.methods.size() == 1 ? i : j);

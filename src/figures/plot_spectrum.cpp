@@ -41,8 +41,8 @@ plot::panel spectrum_panel(const panel_context&, const panel_spec& p) {
             if (m.style) st.line = *m.style;
             plot::series s = series_of(st);
             const std::vector<double> c = is_exact(m)
-                                              ? pendulum::fourier_coefficients(a.value, p.harmonics)
-                                              : pendulum::method_solution(m.method, a.value).coefficients;
+                                              ? pendulum::fourier_coefficients(a.theta0(), p.harmonics)
+                                              : pendulum::method_solution(m.method, a.theta0()).coefficients;
             for (std::size_t k = 0; k < c.size() && static_cast<int>(k) < p.harmonics; ++k) {
                 s.x.push_back(static_cast<double>(2 * k + 1));
                 // Coefficients below the smallest normal double are noise or underflow.

@@ -20,7 +20,7 @@ using std::numbers::pi;
 
 plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
     const amplitude& a = p.theta0.front();
-    const pendulum::exact_solution exact(a.value);
+    const pendulum::exact_solution exact(a.theta0());
     const double period = 4 * exact.quarter_period();  // T in units of 1/w0
     // x = s * unit with s = t/T.
     const auto [unit, x_label] = time_unit_of(c.spec, p, exact);
@@ -62,7 +62,7 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
         if (is_exact(m)) {
             theta = [exact, angle](double s) { return angle * exact.theta_at_fraction(s); };
         } else {
-            theta = [solution = pendulum::method_solution(m.method, a.value), period, angle](double s) {
+            theta = [solution = pendulum::method_solution(m.method, a.theta0()), period, angle](double s) {
                 return angle * solution.theta(s * period);
             };
         }
@@ -82,7 +82,7 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
 void add_trajectory_frame(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t) {
     const double angle = p.degrees ? 180 / pi : 1.0;
     for (const auto& a : p.theta0) {
-        const pendulum::exact_solution exact(a.value);
+        const pendulum::exact_solution exact(a.theta0());
         const double period = 4 * exact.quarter_period();
         // The time cursor.
         const double x_now = w0_t / period * time_unit_of(c.spec, p, exact).first;

@@ -50,6 +50,10 @@ private:
 struct amplitude {
     std::string text;  ///< as written: "170deg", "95pi/100"
     double value = 0;  ///< radians
+    std::optional<pendulum::amplitude> exact = std::nullopt;  ///< with its distance from pi; unset for a range's ends
+
+    /// The amplitude with its distance from pi as written ("pi - 1e-300").
+    pendulum::amplitude theta0() const { return exact ? *exact : pendulum::amplitude(value); }
 };
 
 /// A method of a panel, with the theme's style overridden where given.

@@ -192,8 +192,12 @@ public:
             return std::nullopt;
         }
         try {
-            a.value = pendulum::parse_angle(a.text);
-            if (!amplitude_range) pendulum::check_amplitude(a.value, std::string(key));
+            if (amplitude_range) {
+                a.value = pendulum::parse_angle(a.text);
+            } else {
+                a.exact = pendulum::parse_amplitude(a.text, key);
+                a.value = a.exact->radians();
+            }
             if (amplitude_range && !(a.value >= 0 && a.value <= std::acos(-1.0))) {
                 throw std::invalid_argument(std::string(key) + " must lie in [0, pi], got " +
                                             pendulum::format_double(a.value));

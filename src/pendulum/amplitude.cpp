@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pendulum/amplitude.hpp"
 
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <numbers>
@@ -22,6 +23,52 @@ void check_amplitude(double theta0, std::string_view name) {
         throw domain_error(std::string(name) + " must be strictly between 0 and pi, got " +
                            format_double(theta0));
     }
+}
+
+namespace {
+
+/// pi = pi_hi + pi_lo + O(3e-33): pi_hi is the double nearest pi.
+constexpr double pi_hi = std::numbers::pi;
+constexpr double pi_lo = 1.2246467991473532e-16;
+
+}  // namespace
+
+amplitude::amplitude(double theta0) {
+    check_amplitude(theta0);
+    theta0_ = theta0;
+    // pi_hi - theta0 is exact for theta0 >= pi/2 (Sterbenz) and the one rounding is the last.
+    d_ = (pi_hi - theta0) + pi_lo;
+}
+
+double amplitude::modulus(bool complementary) const {
+    // Half of the smaller of theta0 and d: the sine and cosine of it are exact to rounding.
+    const bool small = theta0_ <= 0.5 * pi_hi;
+    const double half = 0.5 * (small ? theta0_ : d_);
+    return small == complementary ? std::cos(half) : std::sin(half);
+}
+
+amplitude amplitude::from_pi(double d) {
+    if (!(d >= DBL_MIN && d < pi_hi)) {
+        throw domain_error("the distance from pi must be between 2.2250738585072014e-308 and pi, got " +
+                           format_double(d));
+    }
+    amplitude a;
+    a.d_ = d;
+    a.theta0_ = (pi_hi - d) + pi_lo;
+    return a;
+}
+
+std::string format_amplitude(const amplitude& theta0) {
+    return theta0.near_pi() ? "pi - " + format_double(theta0.from_pi()) : format_double(theta0.radians());
+}
+
+amplitude amplitude::from_parts(double theta0, double d, double k, double kp) {
+    amplitude a;
+    a.theta0_ = theta0;
+    a.d_ = d;
+    a.k_ = k;
+    a.kp_ = kp;
+    return a;
 }
 
 }  // namespace pendulum

@@ -2,11 +2,15 @@
 #include "pendulum/angle.hpp"
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/mp_real.hpp"
 
 #include <cerrno>
+#include <cfloat>
 #include <cmath>
 #include <algorithm>
+#include <charconv>
 #include <cstdlib>
+#include <optional>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -35,20 +39,22 @@ std::string escaped(const std::string& text) {
 const std::string_view allowed =
     "expected a number, pi, or an expression such as 1.2, pi/2, 9pi/10, 0.9pi or 162deg";
 
-/// Recursive-descent evaluator; `pos` walks the text.
+using mp::real;
+
+/// Recursive-descent evaluator with `bits` of precision, correctly rounded; `pos` walks the text.
 class parser {
 public:
-    explicit parser(std::string_view text, std::vector<angle_token>* tokens = nullptr)
-        : text_(text), tokens_(tokens) {}
+    explicit parser(std::string_view text, mpfr_prec_t bits, std::vector<angle_token>* tokens = nullptr)
+        : text_(text), tokens_(tokens), bits_(bits) {}
 
-    double parse_all(bool allow_units) {
+    real parse_all(bool allow_units) {
         skip_space();
         if (pos_ == text_.size()) fail("empty value");
-        double v = sum();
+        real v = sum();
         skip_space();
         if (allow_units) {
             if (take("deg") || take("\u00b0")) {
-                v = v / 180.0 * std::numbers::pi;
+                v = v / 180.0 * mp::pi(bits_);
                 emit(angle_token::kind::degrees);
             } else if (take("rad")) {
                 emit(angle_token::kind::radians);
@@ -56,11 +62,10 @@ public:
             skip_space();
         }
         if (pos_ != text_.size()) fail("unexpected '" + std::string(text_.substr(pos_)) + "'");
-        if (!std::isfinite(v)) fail("value is not finite");
+        if (!std::isfinite(v.to_double())) fail("value is not finite");
         return v;
     }
 
-private:
     [[noreturn]] void fail(const std::string& why) const {
         // A long value is shown by its ends.
         const std::string shown = text_.size() <= 80 ? std::string(text_)
@@ -94,34 +99,35 @@ private:
         return rest.starts_with("(") || rest.starts_with("pi") || rest.starts_with("\u03c0");
     }
 
-    double sum() {
-        double v = product();
+private:
+    real sum() {
+        real v = product();
         for (;;) {
             if (take("+")) {
                 emit(angle_token::kind::plus);
-                v += product();
+                v = v + product();
             } else if (take("-")) {
                 emit(angle_token::kind::minus);
-                v -= product();
+                v = v - product();
             } else {
                 return v;
             }
         }
     }
 
-    double product() {
-        double v = unary();
+    real product() {
+        real v = unary();
         for (;;) {
             if (take("*")) {
                 emit(angle_token::kind::times);
-                v *= unary();
+                v = v * unary();
             } else if (take("/")) {
                 emit(angle_token::kind::divide);
-                const double d = unary();
-                if (d == 0.0) fail("division by zero");
-                v /= d;
+                const real d = unary();
+                if (d.is_zero()) fail("division by zero");
+                v = v / d;
             } else if (starts_primary()) {
-                v *= primary();
+                v = v * primary();
             } else {
                 return v;
             }
@@ -143,7 +149,7 @@ private:
         parser& p_;
     };
 
-    double unary() {
+    real unary() {
         const nesting level(*this);
         if (take("-")) {
             emit(angle_token::kind::sign_minus);
@@ -156,19 +162,19 @@ private:
         return primary();
     }
 
-    double primary() {
+    real primary() {
         skip_space();
         if (take("(")) {
             emit(angle_token::kind::open);
             const nesting level(*this);
-            const double v = sum();
+            real v = sum();
             if (!take(")")) fail("missing ')'");
             emit(angle_token::kind::close);
             return v;
         }
         if (take("pi") || take("\u03c0")) {
             emit(angle_token::kind::pi);
-            return std::numbers::pi;
+            return mp::pi(bits_);
         }
         if (pos_ < text_.size() &&
             ((text_[pos_] >= '0' && text_[pos_] <= '9') || text_[pos_] == '.')) {
@@ -178,7 +184,7 @@ private:
         fail("unexpected '" + std::string(text_.substr(pos_)) + "'");
     }
 
-    double number() {
+    real number() {
         // Only digits, one dot and an exponent are taken, so strtod never sees "inf" or hex.
         std::size_t end = pos_;
         while (end < text_.size() && std::isdigit(static_cast<unsigned char>(text_[end]))) ++end;
@@ -201,8 +207,10 @@ private:
             fail("'" + digits + "' is not a number");
         }
         errno = 0;
-        const double v = std::strtod(digits.c_str(), nullptr);
-        if (errno == ERANGE && std::isinf(v)) fail("number " + digits + " is out of range");
+        const double rounded = std::strtod(digits.c_str(), nullptr);
+        if (errno == ERANGE && std::isinf(rounded)) fail("number " + digits + " is out of range");
+        real v(bits_);
+        mpfr_strtofr(v.get(), digits.c_str(), nullptr, 10, MPFR_RNDN);
         pos_ = end;
         if (tokens_) {
             angle_token t{angle_token::kind::number, mantissa, {}, false};
@@ -222,19 +230,87 @@ private:
 
     std::string_view text_;
     std::vector<angle_token>* tokens_;
+    mpfr_prec_t bits_;
     std::size_t pos_ = 0;
     int depth_ = 0;
 };
 
+/// Two evaluations, the second with twice the bits: where they round to different doubles,
+/// cancellation has eaten the first one's digits, and the value is not vouched for.
+constexpr mpfr_prec_t working_bits = 1280;
+
+/// A plain decimal number ("2.5", "1e-3", no sign, no spaces), as from_chars reads it: that
+/// rounds correctly already, and a million of them are read without MPFR.
+std::optional<double> plain_value(std::string_view t) {
+    if (t.empty() || !(std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.')) return std::nullopt;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const char c = t[i];
+        if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E') continue;
+        if ((c == '+' || c == '-') && (t[i - 1] == 'e' || t[i - 1] == 'E')) continue;
+        return std::nullopt;
+    }
+    double v = 0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+double evaluate(std::string_view text, bool allow_units) {
+    if (const auto v = plain_value(text)) return *v;
+    const double coarse = parser(text, working_bits).parse_all(allow_units).to_double();
+    const double fine = parser(text, 2 * working_bits).parse_all(allow_units).to_double();
+    if (coarse != fine) {
+        parser(text, working_bits).fail("it cancels beyond " + std::to_string(2 * working_bits) + " bits");
+    }
+    return fine;
+}
+
 }  // namespace
 
-double parse_expression(std::string_view text) { return parser(text).parse_all(false); }
+double parse_expression(std::string_view text) { return evaluate(text, false); }
 
-double parse_angle(std::string_view text) { return parser(text).parse_all(true); }
+double parse_angle(std::string_view text) { return evaluate(text, true); }
+
+amplitude parse_amplitude(std::string_view text, std::string_view name) {
+    // A plain number below 3 (d > 0.14): its double is all there is to know, and its distance
+    // from pi and k' follow from it to rounding (a million amplitudes read without MPFR).
+    if (const auto v = plain_value(text); v && *v < 3.0) {
+        check_amplitude(*v, name);
+        return amplitude(*v);
+    }
+    // 128 bits (checked against 256) for plain numbers and most expressions, the working
+    // precision where those disagree: where they cancel, as pi - 1e-300 does.
+    for (const mpfr_prec_t bits : {mpfr_prec_t{128}, working_bits}) {
+        const real coarse = parser(text, bits).parse_all(true);
+        const real fine = parser(text, 2 * bits).parse_all(true);
+        const real d_coarse = mp::pi(bits) - coarse;
+        const real d_fine = mp::pi(2 * bits) - fine;
+        const double theta0 = fine.to_double();
+        const double d = d_fine.to_double();
+        const bool agree = coarse.to_double() == theta0 && d_coarse.to_double() == d;
+        if (bits != working_bits && (!agree || d_coarse.is_zero() || d_fine.is_zero())) continue;
+        if (!(fine > 0.0) || !(d_fine > 0.0)) {
+            // At or beyond pi (or 0) the rounded value says which: pi itself rounds to the
+            // double below pi, which check_amplitude rejects as pi.
+            check_amplitude(theta0, name);
+            check_amplitude(fine > 0.0 ? std::numbers::pi : 0.0, name);
+        }
+        if (!agree) parser(text, bits).fail("it cancels beyond " + std::to_string(2 * bits) + " bits");
+        if (d < DBL_MIN) {
+            throw domain_error(std::string(name) + " must be at least 2.2250738585072014e-308 below pi, got pi - " +
+                               format_double(d));
+        }
+        // k = sin(theta0/2), k' = sin(d/2): each from the exact value, rounded once.
+        const real k = mp::sin(fine / 2.0);
+        const real kp = mp::sin(d_fine / 2.0);
+        return amplitude::from_parts(theta0, d, k.to_double(), kp.to_double());
+    }
+    throw domain_error("unreachable");  // the loop returns or throws at the working precision
+}
 
 std::vector<angle_token> angle_tokens(std::string_view text) {
     std::vector<angle_token> tokens;
-    parser(text, &tokens).parse_all(true);
+    parser(text, working_bits, &tokens).parse_all(true);
     return tokens;
 }
 

@@ -3,6 +3,7 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/gsl_support.hpp"
+#include "pendulum/mp_iteration.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,18 +32,18 @@ double besinc(double x) {
     return 2.0 * bessel_j_over_x(1, x);
 }
 
-fourier_solution harmonic(double theta0) {
-    check_amplitude(theta0);
+fourier_solution harmonic(const amplitude& a) {
+    const double theta0 = a.radians();
     return {1.0, {theta0}};
 }
 
-fourier_solution lowest_order(double theta0) {
-    check_amplitude(theta0);
+fourier_solution lowest_order(const amplitude& a) {
+    const double theta0 = a.radians();
     return {std::sqrt(besinc(theta0)), {theta0}};
 }
 
-fourier_solution first_order(double theta0) {
-    check_amplitude(theta0);
+fourier_solution first_order(const amplitude& a) {
+    const double theta0 = a.radians();
     // Ratios J_n(theta0)/theta0 keep every digit down to the smallest subnormal amplitude.
     const double j1 = bessel_j_over_x(1, theta0);
     const double eta = -bessel_j_over_x(3, theta0) / (9.0 * j1);
@@ -50,8 +51,8 @@ fourier_solution first_order(double theta0) {
     return {std::sqrt(2.0 * j1 * (1.0 + eta)), {c1, eta * c1}};
 }
 
-fourier_solution second_order(double theta0) {
-    check_amplitude(theta0);
+fourier_solution second_order(const amplitude& amp) {
+    const double theta0 = amp.radians();
     const double j1 = bessel_j_over_x(1, theta0);
     const double eta = -bessel_j_over_x(3, theta0) / (9.0 * j1);
     const double a = theta0 / (1.0 + eta);
@@ -73,8 +74,8 @@ fourier_solution second_order(double theta0) {
     return s;
 }
 
-fourier_solution polynomial(double theta0) {
-    check_amplitude(theta0);
+fourier_solution polynomial(const amplitude& a) {
+    const double theta0 = a.radians();
     const double t2 = theta0 * theta0;
     const double t3 = t2 * theta0;
     const double t5 = t3 * t2;
@@ -187,12 +188,14 @@ void check_order(int order) {
     }
 }
 
-fourier_solution iterated(double theta0, int order) {
+fourier_solution iterated(const amplitude& theta0, int order) {
     return std::move(iterated_sequence(theta0, order).back());
 }
 
-std::vector<fourier_solution> iterated_sequence(double theta0, int order) {
-    check_amplitude(theta0);
+std::vector<fourier_solution> iterated_sequence(const amplitude& a, int order) {
+    // Close to pi the double iteration's rounding grows at every level: MPFR there.
+    if (a.from_pi() < detail::iteration_mp_below) return detail::iterated_sequence_mp(a, order);
+    const double theta0 = a.radians();
     check_order(order);
     std::vector<fourier_solution> levels;
     sine_projector<double> project;
@@ -221,8 +224,9 @@ std::vector<fourier_solution> iterated_sequence(double theta0, int order) {
     return levels;
 }
 
-std::vector<level_period> iterated_periods(double theta0, int order) {
-    const auto levels = iterated_sequence(theta0, order);
+std::vector<level_period> iterated_periods(const amplitude& a, int order) {
+    const double theta0 = a.radians();
+    const auto levels = iterated_sequence(a, order);
     // The same iteration in extended precision, every level projected (no double Bessel
     // values), so that the difference shows how far the double run's rounding has grown.
     sine_projector<long double> project;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "pendulum/amplitude.hpp"
+
 #include <vector>
 
 namespace pendulum {
@@ -22,27 +24,27 @@ struct fourier_solution {
 inline constexpr int max_order = 200;
 
 /// Harmonic solution theta0 cos(w0 t) (paper Eq. Lamb.5).
-fourier_solution harmonic(double theta0);
+fourier_solution harmonic(const amplitude& theta0);
 
 /// Lowest order: c1 = theta0, (w/w0)^2 = besinc(theta0) = 2 J1(theta0)/theta0 (Eq. Lamb.15.1).
-fourier_solution lowest_order(double theta0);
+fourier_solution lowest_order(const amplitude& theta0);
 
 /// First order: c1', c3' and w from eta = -J3/(9 J1) (Eqs. Lamb.20, Lamb.21).
-fourier_solution first_order(double theta0);
+fourier_solution first_order(const amplitude& theta0);
 
 /// Second order as in the paper's appendix, with its linearised projection.
-fourier_solution second_order(double theta0);
+fourier_solution second_order(const amplitude& theta0);
 
 /// Taylor polynomials of c1, c3, c5 and of T/T0 through theta0^5 (after Fulcher and Davis).
-fourier_solution polynomial(double theta0);
+fourier_solution polynomial(const amplitude& theta0);
 
 /// The paper's iteration carried to `order` (order + 1 harmonics), projecting
 /// sin(theta) exactly; orders 0 and 1 equal lowest_order() and first_order(). Close to pi
 /// some levels have lambda = (w/w0)^2 <= 0: there frequency_ratio is NaN and exists() false.
-fourier_solution iterated(double theta0, int order);
+fourier_solution iterated(const amplitude& theta0, int order);
 
 /// Every level of the iteration, 0 to `order`: element n is iterated(theta0, n).
-std::vector<fourier_solution> iterated_sequence(double theta0, int order);
+std::vector<fourier_solution> iterated_sequence(const amplitude& theta0, int order);
 
 /// Throws domain_error naming the order unless 0 <= order <= max_order.
 void check_order(int order);
@@ -55,7 +57,7 @@ struct level_period {
 
 /// The period of every level 0 to `order`, each with its rounding estimate (close to pi the
 /// iteration amplifies the rounding of its coefficients).
-std::vector<level_period> iterated_periods(double theta0, int order);
+std::vector<level_period> iterated_periods(const amplitude& theta0, int order);
 
 /// (w/w0)^2 = 2 J1(x) / x, the "besinc" function of optics (1 at x = 0).
 double besinc(double x);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "pendulum/amplitude.hpp"
+
 #include <vector>
 
 namespace pendulum {
@@ -12,8 +14,9 @@ namespace pendulum {
 /// k' = cos(theta0/2), never from 1 - k^2, so it stays accurate next to the separatrix.
 class exact_solution {
 public:
-    /// Prepares the solution for amplitude theta0; throws domain_error unless 0 < theta0 < pi.
-    explicit exact_solution(double theta0);
+    /// Prepares the solution for amplitude theta0 (a double converts, and is checked to lie
+    /// in (0, pi)); k and k' come from the amplitude, exact close to pi.
+    explicit exact_solution(const pendulum::amplitude& theta0);
 
     /// The amplitude theta0.
     double amplitude() const { return theta0_; }
@@ -56,10 +59,10 @@ private:
 };
 
 /// The exact period ratio T/T0 for amplitude theta0.
-double period_ratio(double theta0);
+double period_ratio(const amplitude& theta0);
 
 /// The exact Fourier coefficients c1, c3, ..., c_{2 count - 1} for amplitude theta0.
-std::vector<double> fourier_coefficients(double theta0, int count);
+std::vector<double> fourier_coefficients(const amplitude& theta0, int count);
 
 /// Jacobi elliptic functions sn, cn, dn of u for the complementary modulus k'.
 struct jacobi_values {

@@ -13,20 +13,20 @@ namespace pendulum {
 namespace {
 
 /// The Fourier solution of a motion method, as a table entry.
-template <fourier_solution (*f)(double)>
-fourier_solution solution_of(double theta0, int) {
+template <fourier_solution (*f)(const amplitude&)>
+fourier_solution solution_of(const amplitude& theta0, int) {
     return f(theta0);
 }
 
 /// The period of a motion method, from its Fourier solution.
-template <fourier_solution (*f)(double)>
-double period_of(double theta0, int) {
+template <fourier_solution (*f)(const amplitude&)>
+double period_of(const amplitude& theta0, int) {
     return f(theta0).period_ratio();
 }
 
 /// The period of a formula without N, as a table entry.
-template <double (*f)(double)>
-double formula(double theta0, int) {
+template <double (*f)(const amplitude&)>
+double formula(const amplitude& theta0, int) {
     return f(theta0);
 }
 
@@ -54,33 +54,34 @@ std::string series_label(int n) { return "series to $\\vartheta_0^{" + std::to_s
 
 constexpr std::array<method_row, 14> rows = {{
     {"exact", method_role::exact, fixed<exact_label>, -1, 0, "the exact solution (Jacobi elliptic functions)", formula<period_ratio>,
-     nullptr},
+     nullptr, exact_period_error},
     {"harmonic", method_role::approximant, fixed<harmonic_label>, -1, 0, "small-amplitude motion theta0 cos(w0 t)", period_of<harmonic>,
-     solution_of<harmonic>},
+     solution_of<harmonic>, harmonic_period_error},
     {"lowest", method_role::approximant, fixed<lowest_label>, -1, 0, "the paper's lowest order: c1 = theta0, besinc frequency",
-     period_of<lowest_order>, solution_of<lowest_order>},
+     period_of<lowest_order>, solution_of<lowest_order>, lowest_period_error},
     {"first", method_role::approximant, fixed<first_label>, -1, 0, "the paper's first order: c1', c3'", period_of<first_order>,
-     solution_of<first_order>},
+     solution_of<first_order>, first_period_error},
     {"second", method_role::approximant, fixed<second_label>, -1, 0, "the paper's second order (appendix): c1'', c3'', c5''",
-     period_of<second_order>, solution_of<second_order>},
+     period_of<second_order>, solution_of<second_order>, second_period_error},
     {"polynomial", method_role::approximant, fixed<polynomial_label>, -1, 0, "Taylor polynomials through theta0^5 (Fulcher and Davis)",
-     period_of<polynomial>, solution_of<polynomial>},
+     period_of<polynomial>, solution_of<polynomial>, polynomial_period_error},
     {"order", method_role::iterated, order_label, 0, max_order, "the paper's iteration to order N (N + 1 harmonics)",
-     [](double t, int n) { return iterated(t, n).period_ratio(); }, [](double t, int n) { return iterated(t, n); }},
+     [](const amplitude& t, int n) { return iterated(t, n).period_ratio(); },
+     [](const amplitude& t, int n) { return iterated(t, n); }, iterated_period_error},
     {"kidd-fogg", method_role::period_only, fixed<kidd_fogg_label>, -1, 0, "period 1/sqrt(k') (Kidd and Fogg 2002)",
-     formula<period_kidd_fogg>, nullptr},
+     formula<period_kidd_fogg>, nullptr, kidd_fogg_period_error},
     {"lima-arun", method_role::period_only, fixed<lima_arun_label>, -1, 0, "period -ln(k')/(1 - k') (Lima and Arun 2006)",
-     formula<period_lima_arun>, nullptr},
+     formula<period_lima_arun>, nullptr, lima_arun_period_error},
     {"ganley", method_role::period_only, fixed<ganley_label>, -1, 0, "period sqrt(F theta0/sin(F theta0)), F = sqrt(3)/2 (Ganley 1985)",
-     formula<period_ganley>, nullptr},
+     formula<period_ganley>, nullptr, ganley_period_error},
     {"agm", method_role::period_only, agm_label, 1, max_agm_steps, "period after N AGM steps (Carvalhaes and Suppes 2008)",
-     period_agm, nullptr},
+     period_agm, nullptr, agm_period_error},
     {"denman", method_role::period_only, fixed<denman_label>, -1, 0, "period 1/(1 - theta0^2/16) (Denman 1959)", formula<period_denman>,
-     nullptr},
+     nullptr, denman_period_error},
     {"series", method_role::period_only, series_label, 1, max_series_terms, "Taylor series of the period through theta0^(2N)",
-     period_series, nullptr},
+     period_series, nullptr, series_period_error},
     {"log-asymptote", method_role::period_only, fixed<log_asymptote_label>, -1, 0, "large-amplitude asymptote (2/pi) ln(4/k')",
-     formula<period_log_asymptote>, nullptr},
+     formula<period_log_asymptote>, nullptr, log_asymptote_period_error},
 }};
 
 }  // namespace
@@ -125,9 +126,11 @@ method_choice parse_method(std::string_view text) {
     throw domain_error("unknown method '" + std::string(text) + "'; methods: " + method_names());
 }
 
-double method_period(const method_choice& m, double theta0) { return m.row->period(theta0, m.n); }
+double method_period(const method_choice& m, const amplitude& theta0) { return m.row->period(theta0, m.n); }
 
-fourier_solution method_solution(const method_choice& m, double theta0) {
+period_error method_period_error(const method_choice& m, const amplitude& theta0) { return m.row->error(theta0, m.n); }
+
+fourier_solution method_solution(const method_choice& m, const amplitude& theta0) {
     if (!m.row->solution) {
         throw domain_error("method " + m.text() + " gives " +
                            (m.has_motion() ? std::string("the exact motion, not a Fourier approximant")

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "pendulum/amplitude.hpp"
 #include "pendulum/approximants.hpp"
+#include "pendulum/period_error.hpp"
 
 #include <span>
 #include <string>
@@ -21,8 +23,9 @@ struct method_row {
     int min_n;                     ///< smallest N, or -1 when the method takes none
     int max_n;                     ///< largest N
     std::string_view description;  ///< one line for help and lists
-    double (*period)(double theta0, int n);                ///< T/T0
-    fourier_solution (*solution)(double theta0, int n);    ///< the Fourier solution, or null
+    double (*period)(const amplitude& theta0, int n);              ///< T/T0
+    fourier_solution (*solution)(const amplitude& theta0, int n);  ///< the Fourier solution, or null
+    period_error (*error)(const amplitude& theta0, int n);         ///< T_m/T - 1 without cancellation
 
     /// True for methods with a law of motion theta(t), false for period formulas.
     constexpr bool has_motion() const { return role != method_role::period_only; }
@@ -50,11 +53,15 @@ struct method_choice {
 method_choice parse_method(std::string_view text);
 
 /// The period ratio T/T0 of the method at amplitude theta0.
-double method_period(const method_choice& m, double theta0);
+double method_period(const method_choice& m, const amplitude& theta0);
+
+/// The period error T_m/T - 1 of the method at amplitude theta0, right to 1e-12 relative
+/// down to 1e-300 (below that, and where no period exists, it says so).
+period_error method_period_error(const method_choice& m, const amplitude& theta0);
 
 /// The truncated Fourier solution of a motion method other than "exact"; throws
 /// domain_error for exact and for period-only methods.
-fourier_solution method_solution(const method_choice& m, double theta0);
+fourier_solution method_solution(const method_choice& m, const amplitude& theta0);
 
 /// The names of the table as one line, "exact, harmonic, ..., order:N, agm:N, ...".
 std::string method_names();

@@ -1,0 +1,464 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Period errors T_m/T - 1 without cancellation. Where the two periods differ in their first
+// two digits, doubles give the error to 1e-13; closer, both periods are computed again with
+// MPFR from the exact amplitude (theta0, or pi - d near pi), with 128 bits and then more, until
+// the difference is far above the rounding of the precision used.
+#include "pendulum/period_error.hpp"
+
+#include "pendulum/approximants.hpp"
+#include "pendulum/exact.hpp"
+#include "pendulum/methods.hpp"
+#include "pendulum/mp_iteration.hpp"
+#include "pendulum/mp_real.hpp"
+#include "pendulum/period_formulas.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <string>
+#include <optional>
+#include <vector>
+
+namespace pendulum {
+
+namespace {
+
+using mp::real;
+
+/// Above this |T_m/T - 1| the doubles' difference is right to 1e-13 relative.
+constexpr double double_enough = 1e-2;
+
+/// Precisions tried in turn; the last one decides that an error is below 1e-300 (2^-997).
+constexpr std::array<mpfr_prec_t, 4> precisions = {128, 256, 512, 1152};
+
+/// A difference computed with `bits` is kept when it is this many bits above their rounding.
+constexpr long margin_bits = 56;
+
+/// The amplitude, exact, with `bits`: theta0 and k' = cos(theta0/2) (= sin(d/2) near pi).
+struct mp_amplitude {
+    real theta;
+    real kp;
+    real one_minus_kp;  ///< 1 - k' without cancellation
+};
+
+mp_amplitude exact_amplitude(const amplitude& a, mpfr_prec_t bits) {
+    if (a.near_pi()) {
+        const real d(a.from_pi(), bits);
+        const real kp = mp::sin(d / 2.0);
+        return {mp::pi(bits) - d, kp, 1.0 - kp};
+    }
+    const real theta(a.radians(), bits);
+    const real s = mp::sin(theta / 4.0);
+    return {theta, mp::cos(theta / 2.0), 2.0 * s * s};
+}
+
+real exact_period(const mp_amplitude& x) { return 1.0 / mp::agm(real(1.0, x.theta.precision()), x.kp); }
+
+/// The error from a period with `bits`: a value, or nothing where it is within rounding.
+bool resolved(const real& error, mpfr_prec_t bits) {
+    return !error.is_zero() && mp::exponent(error) > -(static_cast<long>(bits) - margin_bits);
+}
+
+/// A resolved error as a period_error: below 1e-300 it is only that.
+period_error known(const real& error) {
+    if (mp::abs(error) < smallest_period_error) return {period_error::kind::below_limit, 0};
+    return {period_error::kind::value, error.to_double()};
+}
+
+using mp_period = real (*)(const mp_amplitude& x, int n);
+
+/// The error of a closed-form period: doubles where they suffice, MPFR otherwise.
+period_error closed_form_error(const amplitude& a, int n, double (*period)(const amplitude&, int), mp_period f) {
+    const double fast = period(a, n) / period_ratio(a) - 1;
+    if (std::fabs(fast) >= double_enough) return {period_error::kind::value, fast};
+    for (const mpfr_prec_t bits : precisions) {
+        const mp_amplitude x = exact_amplitude(a, bits);
+        const real error = f(x, n) / exact_period(x) - 1.0;
+        if (resolved(error, bits)) return known(error);
+    }
+    return {period_error::kind::below_limit, 0};
+}
+
+real harmonic_mp(const mp_amplitude& x, int) { return real(1.0, x.theta.precision()); }
+
+real lowest_mp(const mp_amplitude& x, int) { return mp::sqrt(x.theta / (2.0 * mp::bessel_j(1, x.theta))); }
+
+/// eta = -J3/(9 J1) and J1/theta0 of the first order.
+struct first_order_parts {
+    real j1;
+    real eta;
+};
+
+first_order_parts first_parts(const mp_amplitude& x) {
+    const real j1 = mp::bessel_j(1, x.theta);
+    return {j1 / x.theta, -mp::bessel_j(3, x.theta) / (9.0 * j1)};
+}
+
+real first_mp(const mp_amplitude& x, int) {
+    const auto p = first_parts(x);
+    return 1.0 / mp::sqrt(2.0 * p.j1 * (1.0 + p.eta));
+}
+
+real second_mp(const mp_amplitude& x, int) {
+    // As second_order(): C_{2k+1}/theta0 with a = theta0/(1 + eta), b/theta0 = eta/(1 + eta).
+    const auto p = first_parts(x);
+    const real a = x.theta / (1.0 + p.eta);
+    const real a_ratio = 1.0 / (1.0 + p.eta);
+    const real b_ratio = p.eta / (1.0 + p.eta);
+    real lambda(x.theta.precision());
+    for (int k = 0; k < 3; ++k) {
+        const real inner = 2.0 * mp::bessel_j(2 * k + 1, a) / a * a_ratio +
+                           b_ratio * (mp::bessel_j(2 * k + 4, a) - mp::bessel_j(std::abs(2 * k - 2), a));
+        const real term = inner / static_cast<double>((2 * k + 1) * (2 * k + 1));
+        lambda = k % 2 == 0 ? lambda + term : lambda - term;
+    }
+    return 1.0 / mp::sqrt(lambda);
+}
+
+real polynomial_mp(const mp_amplitude& x, int) {
+    const real t2 = x.theta * x.theta;
+    return 1.0 + t2 / 16.0 + 11.0 * t2 * t2 / 3072.0;
+}
+
+real kidd_fogg_mp(const mp_amplitude& x, int) { return 1.0 / mp::sqrt(x.kp); }
+
+real lima_arun_mp(const mp_amplitude& x, int) {
+    // ln k' = log1p(-(1 - k')), with 1 - k' itself exact.
+    return -mp::apply(mpfr_log1p, -x.one_minus_kp) / x.one_minus_kp;
+}
+
+real ganley_mp(const mp_amplitude& x, int) {
+    const real f = mp::sqrt(real(3.0, x.theta.precision())) / 2.0 * x.theta;
+    return mp::sqrt(f / mp::sin(f));
+}
+
+real agm_mp(const mp_amplitude& x, int steps) {
+    real a(1.0, x.theta.precision());
+    real b = x.kp;
+    for (int i = 0; i < steps; ++i) {
+        const real next = (a + b) / 2.0;
+        b = mp::sqrt(a * b);
+        a = next;
+    }
+    return 1.0 / a;
+}
+
+real denman_mp(const mp_amplitude& x, int) { return 1.0 / (1.0 - x.theta * x.theta / 16.0); }
+
+real series_mp(const mp_amplitude& x, int terms) {
+    // The exact rationals, not their doubles: the error of the series is far below a double's
+    // rounding of its coefficients at small amplitudes.
+    static constexpr std::array<std::array<const char*, 2>, max_series_terms + 1> rationals = {{
+#include "pendulum/period_series_rationals.inc"
+    }};
+    const mpfr_prec_t bits = x.theta.precision();
+    const real t2 = x.theta * x.theta;
+    real sum(bits);
+    for (int n = terms; n >= 0; --n) {
+        real num(bits);
+        real den(bits);
+        mpfr_set_str(num.get(), rationals[static_cast<std::size_t>(n)][0], 10, MPFR_RNDN);
+        mpfr_set_str(den.get(), rationals[static_cast<std::size_t>(n)][1], 10, MPFR_RNDN);
+        sum = sum * t2 + num / den;
+    }
+    return sum;
+}
+
+real log_asymptote_mp(const mp_amplitude& x, int) {
+    return 2.0 / mp::pi(x.theta.precision()) * mp::log(4.0 / x.kp);
+}
+
+// ---- The iteration to order N, with MPFR throughout.
+
+/// cos(m pi / (4L)) for m = 0 .. 8L - 1, from the first quadrant by symmetry.
+std::vector<real> mp_cosine_table(int L, mpfr_prec_t bits) {
+    const int quarter = 2 * L;  // m = 2L is pi/2
+    std::vector<real> first;
+    first.reserve(static_cast<std::size_t>(quarter + 1));
+    const real step = mp::pi(bits) / static_cast<double>(4 * L);
+    for (int m = 0; m <= quarter; ++m) first.push_back(mp::cos(step * static_cast<double>(m)));
+    std::vector<real> table;
+    table.reserve(static_cast<std::size_t>(8 * L));
+    for (int m = 0; m < 8 * L; ++m) {
+        // cos(x) over the four quadrants of the period 8L.
+        const int r = m % (8 * L);
+        if (r <= quarter) table.push_back(first[static_cast<std::size_t>(r)]);
+        else if (r <= 2 * quarter) table.push_back(-first[static_cast<std::size_t>(2 * quarter - r)]);
+        else if (r <= 3 * quarter) table.push_back(-first[static_cast<std::size_t>(r - 2 * quarter)]);
+        else table.push_back(first[static_cast<std::size_t>(4 * quarter - r)]);
+    }
+    return table;
+}
+
+/// C_{2k+1}/theta0 for k < count by the midpoint rule with L points (as project_sine in
+/// approximants.cpp), in place with MPFR.
+std::vector<real> mp_project(const std::vector<real>& u, int count, const real& theta0, int L,
+                             const std::vector<real>& table) {
+    const mpfr_prec_t bits = theta0.precision();
+    const int period = 8 * L;
+    std::vector<real> C(static_cast<std::size_t>(count), real(bits));
+    const std::size_t width = std::max(u.size(), static_cast<std::size_t>(count));
+    std::vector<const real*> odd_cos(width);
+    real theta(bits);
+    real term(bits);
+    real f(bits);
+    for (int i = 0; i < L; ++i) {
+        const int step = 2 * (2 * i + 1);
+        int index = 2 * i + 1;
+        for (auto& v : odd_cos) {
+            v = &table[static_cast<std::size_t>(index)];
+            index += step;
+            if (index >= period) index -= period;
+        }
+        mpfr_set_zero(theta.get(), 1);
+        for (std::size_t j = 0; j < u.size(); ++j) {
+            mpfr_mul(term.get(), u[j].get(), odd_cos[j]->get(), MPFR_RNDN);
+            mpfr_add(theta.get(), theta.get(), term.get(), MPFR_RNDN);
+        }
+        // sin(theta0 theta)/theta0
+        mpfr_mul(f.get(), theta.get(), theta0.get(), MPFR_RNDN);
+        mpfr_sin(f.get(), f.get(), MPFR_RNDN);
+        mpfr_div(f.get(), f.get(), theta0.get(), MPFR_RNDN);
+        for (int k = 0; k < count; ++k) {
+            mpfr_mul(term.get(), f.get(), odd_cos[static_cast<std::size_t>(k)]->get(), MPFR_RNDN);
+            mpfr_add(C[static_cast<std::size_t>(k)].get(), C[static_cast<std::size_t>(k)].get(), term.get(), MPFR_RNDN);
+        }
+    }
+    // 2/L exactly: a double 2.0/L would round for L that is no power of two.
+    for (real& v : C) {
+        mpfr_mul_2ui(v.get(), v.get(), 1, MPFR_RNDN);
+        mpfr_div_ui(v.get(), v.get(), static_cast<unsigned long>(L), MPFR_RNDN);
+    }
+    return C;
+}
+
+/// The rule with L points doubled until two agree to the precision's rounding.
+class mp_projector {
+public:
+    explicit mp_projector(mpfr_prec_t bits) : bits_(bits) {}
+
+    /// The projection, or an empty vector where 2^16 points do not agree.
+    std::vector<real> operator()(const std::vector<real>& u, int count, const real& theta0) {
+        L_ = std::max(L_, count / 2 + 16);
+        auto coarse = mp_project(u, count, theta0, L_, table(L_));
+        for (;;) {
+            auto fine = mp_project(u, count, theta0, 2 * L_, table(2 * L_));
+            long worst = -100000;
+            for (std::size_t k = 0; k < fine.size(); ++k) {
+                const real diff = fine[k] - coarse[k];
+                if (!diff.is_zero()) worst = std::max(worst, mp::exponent(diff));
+            }
+            if (worst < -(static_cast<long>(bits_) - 12)) return fine;
+            if (2 * L_ >= max_points) return {};
+            L_ *= 2;
+            coarse = std::move(fine);
+        }
+    }
+
+private:
+    static constexpr int max_points = 1 << 15;
+
+    const std::vector<real>& table(int L) {
+        auto it = tables_.find(L);
+        if (it == tables_.end()) it = tables_.emplace(L, mp_cosine_table(L, bits_)).first;
+        return it->second;
+    }
+
+    mpfr_prec_t bits_;
+    int L_ = 0;
+    std::map<int, std::vector<real>> tables_;
+};
+
+/// lambda = (w/w0)^2 of levels 0 .. order with `bits`; an unset entry where the projection
+/// did not converge (that level and all later ones).
+std::vector<std::optional<real>> mp_lambdas(const mp_amplitude& x, int order, mpfr_prec_t bits,
+                                            const std::function<bool(const real& lambda)>& stop = {},
+                                            std::vector<std::vector<real>>* coefficients = nullptr) {
+    std::vector<std::optional<real>> out;
+    mp_projector project(bits);
+    std::vector<real> u{real(1.0, bits)};
+    for (int level = 0; level <= order; ++level) {
+        const int count = level + 1;
+        std::vector<real> C;
+        if (level <= 1) {
+            for (int k = 0; k < count; ++k) {
+                const real j = 2.0 * mp::bessel_j(2 * k + 1, x.theta) / x.theta;
+                C.push_back(k % 2 == 0 ? j : -j);
+            }
+        } else {
+            C = project(u, count, x.theta);
+            if (C.empty()) {
+                out.resize(static_cast<std::size_t>(order + 1));
+                return out;
+            }
+        }
+        real lambda(bits);
+        for (std::size_t k = 0; k < C.size(); ++k) lambda = lambda + C[k] / static_cast<double>((2 * k + 1) * (2 * k + 1));
+        u.clear();
+        for (std::size_t k = 0; k < C.size(); ++k) u.push_back(C[k] / (static_cast<double>((2 * k + 1) * (2 * k + 1)) * lambda));
+        out.emplace_back(lambda);
+        if (coefficients) coefficients->push_back(u);
+        if (stop && stop(lambda)) break;
+    }
+    return out;
+}
+
+}  // namespace
+
+namespace {
+
+/// The iteration's levels with `bits`, rounded to doubles.
+std::vector<fourier_solution> mp_sequence(const amplitude& a, int order, mpfr_prec_t bits) {
+    const mp_amplitude x = exact_amplitude(a, bits);
+    std::vector<std::vector<real>> u;
+    const auto lambdas = mp_lambdas(x, order, bits, {}, &u);
+    std::vector<fourier_solution> levels;
+    for (std::size_t n = 0; n < lambdas.size(); ++n) {
+        if (!lambdas[n]) {
+            throw domain_error("the iteration's projection does not converge at order " + std::to_string(n) +
+                               " for theta0 = " + format_amplitude(a));
+        }
+        fourier_solution s;
+        s.frequency_ratio = lambdas[n]->sign() > 0 ? mp::sqrt(*lambdas[n]).to_double() : std::nan("");
+        for (const real& v : u[n]) s.coefficients.push_back((v * x.theta).to_double());
+        levels.push_back(std::move(s));
+    }
+    return levels;
+}
+
+}  // namespace
+
+std::vector<fourier_solution> detail::iterated_sequence_mp(const amplitude& a, int order) {
+    check_order(order);
+    // Close to pi the iteration amplifies rounding enormously (at pi - 1e-12, 128 bits give
+    // T_92/T0 = 26.59 where the exact iteration gives 30.50): the precision is doubled until
+    // every level's frequency agrees with the run at half the bits to 1e-15.
+    auto coarse = mp_sequence(a, order, 128);
+    for (mpfr_prec_t bits = 256;; bits *= 2) {
+        auto fine = mp_sequence(a, order, bits);
+        int differs = -1;
+        for (std::size_t n = 0; n < fine.size() && differs < 0; ++n) {
+            const double wc = coarse[n].frequency_ratio;
+            const double wf = fine[n].frequency_ratio;
+            const bool agree = (std::isnan(wc) && std::isnan(wf)) || std::fabs(wc / wf - 1) <= 1e-15;
+            if (!agree) differs = static_cast<int>(n);
+        }
+        if (differs < 0) return fine;
+        if (bits >= 2048) {
+            throw domain_error("the iteration at order " + std::to_string(differs) + " for theta0 = " +
+                               format_amplitude(a) + " cannot be computed to 1e-15 with 2048 bits");
+        }
+        coarse = std::move(fine);
+    }
+}
+
+std::vector<period_error> iterated_period_errors(const amplitude& a, int order, double floor) {
+    check_order(order);
+    if (!(floor >= smallest_period_error)) {
+        throw domain_error("the floor of period errors must be at least 1e-300, got " + format_double(floor));
+    }
+    std::vector<period_error> out(static_cast<std::size_t>(order + 1), {period_error::kind::below_limit, 0});
+    std::vector<bool> done(out.size(), false);
+    for (const mpfr_prec_t bits : precisions) {
+        const mp_amplitude x = exact_amplitude(a, bits);
+        const real exact = exact_period(x);
+        const auto lambdas = mp_lambdas(x, order, bits);
+        bool all = true;
+        for (std::size_t n = 0; n < out.size(); ++n) {
+            if (done[n]) continue;
+            if (!lambdas[n]) {
+                out[n] = {period_error::kind::not_computed, 0};
+                all = false;
+                continue;
+            }
+            if (!(lambdas[n]->sign() > 0)) {
+                out[n] = {period_error::kind::no_period, 0};
+                done[n] = true;
+                continue;
+            }
+            const real error = 1.0 / (mp::sqrt(*lambdas[n]) * exact) - 1.0;
+            if (resolved(error, bits)) {
+                out[n] = known(error);
+                done[n] = true;
+            } else {
+                out[n] = {period_error::kind::below_limit, 0};
+                all = false;
+            }
+        }
+        // What is still unresolved lies below 2^-(bits - margin), and that is below the floor.
+        if (all || std::ldexp(1.0, -static_cast<int>(bits - margin_bits)) < floor) break;
+    }
+    return out;
+}
+
+int first_level_within(const amplitude& a, double tolerance, int up_to) {
+    check_order(up_to);
+    // 128 bits resolve errors down to 2^-72, far below any tolerance a double can state.
+    constexpr mpfr_prec_t bits = 128;
+    const mp_amplitude x = exact_amplitude(a, bits);
+    const real exact = exact_period(x);
+    const auto within = [&](const real& lambda) {
+        return lambda.sign() > 0 && mp::abs(1.0 / (mp::sqrt(lambda) * exact) - 1.0) < tolerance;
+    };
+    const auto lambdas = mp_lambdas(x, up_to, bits, within);
+    for (std::size_t n = 0; n < lambdas.size(); ++n) {
+        if (!lambdas[n]) {
+            throw domain_error("the iteration's projection does not converge at level " + std::to_string(n) +
+                               " for theta0 = pi - " + format_double(a.from_pi()));
+        }
+        if (within(*lambdas[n])) return static_cast<int>(n);
+    }
+    return -1;
+}
+
+period_error exact_period_error(const amplitude&, int) { return {period_error::kind::value, 0}; }
+
+period_error harmonic_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude&, int) { return 1.0; }, harmonic_mp);
+}
+period_error lowest_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude& t, int) { return lowest_order(t).period_ratio(); }, lowest_mp);
+}
+period_error first_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude& t, int) { return first_order(t).period_ratio(); }, first_mp);
+}
+period_error second_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude& t, int) { return second_order(t).period_ratio(); }, second_mp);
+}
+period_error polynomial_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude& t, int) { return polynomial(t).period_ratio(); }, polynomial_mp);
+}
+period_error iterated_period_error(const amplitude& a, int n) {
+    // The double iteration where its own rounding (measured against extended precision) is
+    // far below the error; MPFR otherwise.
+    const auto level = iterated_periods(a, n).back();
+    if (!std::isnan(level.value)) {
+        const double exact = period_ratio(a);
+        const double error = level.value / exact - 1;
+        const double uncertainty = level.rounding / exact + 4 * std::numeric_limits<double>::epsilon();
+        if (std::fabs(error) >= 1e12 * uncertainty) return {period_error::kind::value, error};
+    }
+    return iterated_period_errors(a, n).back();
+}
+period_error kidd_fogg_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude& t, int) { return period_kidd_fogg(t); }, kidd_fogg_mp);
+}
+period_error lima_arun_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude& t, int) { return period_lima_arun(t); }, lima_arun_mp);
+}
+period_error ganley_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude& t, int) { return period_ganley(t); }, ganley_mp);
+}
+period_error agm_period_error(const amplitude& a, int n) { return closed_form_error(a, n, period_agm, agm_mp); }
+period_error denman_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude& t, int) { return period_denman(t); }, denman_mp);
+}
+period_error series_period_error(const amplitude& a, int n) { return closed_form_error(a, n, period_series, series_mp); }
+period_error log_asymptote_period_error(const amplitude& a, int n) {
+    return closed_form_error(a, n, [](const amplitude& t, int) { return period_log_asymptote(t); }, log_asymptote_mp);
+}
+
+}  // namespace pendulum

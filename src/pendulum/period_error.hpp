@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "pendulum/amplitude.hpp"
+
+#include <vector>
+
+namespace pendulum {
+
+/// The smallest |T_m/T - 1| that is given as a number; below it the error is only known
+/// to be smaller.
+inline constexpr double smallest_period_error = 1e-300;
+
+/// A method's period error T_m/T - 1 at one amplitude, without cancellation: right to 1e-12
+/// relative (MPFR where the two periods agree to more than two digits).
+struct period_error {
+    /// What is known.
+    enum class kind {
+        value,        ///< `value` is T_m/T - 1
+        below_limit,  ///< |T_m/T - 1| < smallest_period_error (value 0)
+        no_period,    ///< the method has no period here (order:N close to pi)
+        not_computed, ///< the iteration's projection did not converge with 2^15 points
+    };
+    kind what = kind::value;  ///< what is known
+    double value = 0;         ///< T_m/T - 1 where what is kind::value
+};
+
+// The period errors of each method, for the method table (methods.hpp): T_m/T - 1 at
+// theta0, with the method's N where it takes one.
+
+/// The exact solution: zero.
+period_error exact_period_error(const amplitude& theta0, int n);
+/// theta0 cos(w0 t): 1/T - 1.
+period_error harmonic_period_error(const amplitude& theta0, int n);
+/// The paper's lowest order.
+period_error lowest_period_error(const amplitude& theta0, int n);
+/// The paper's first order.
+period_error first_period_error(const amplitude& theta0, int n);
+/// The paper's second order.
+period_error second_period_error(const amplitude& theta0, int n);
+/// The polynomial approximant.
+period_error polynomial_period_error(const amplitude& theta0, int n);
+/// The iteration to order n.
+period_error iterated_period_error(const amplitude& theta0, int n);
+/// Kidd and Fogg.
+period_error kidd_fogg_period_error(const amplitude& theta0, int n);
+/// Lima and Arun.
+period_error lima_arun_period_error(const amplitude& theta0, int n);
+/// Ganley.
+period_error ganley_period_error(const amplitude& theta0, int n);
+/// The period errors of the iteration's levels 0 to `order`, computed with MPFR throughout
+/// (close to pi doubles drift at every level); an error below `floor` (at least 1e-300) is
+/// kind::below_limit. Throws domain_error for a bad order.
+std::vector<period_error> iterated_period_errors(const amplitude& theta0, int order,
+                                                 double floor = smallest_period_error);
+/// The first level N <= up_to of the iteration with |T_N/T - 1| < tolerance (>= 1e-30), or
+/// -1; computed with MPFR.
+int first_level_within(const amplitude& theta0, double tolerance, int up_to);
+/// n AGM steps.
+period_error agm_period_error(const amplitude& theta0, int n);
+/// Denman.
+period_error denman_period_error(const amplitude& theta0, int n);
+/// The Taylor series through theta0^(2n).
+period_error series_period_error(const amplitude& theta0, int n);
+/// The large-amplitude asymptote.
+period_error log_asymptote_period_error(const amplitude& theta0, int n);
+
+}  // namespace pendulum

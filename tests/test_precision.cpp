@@ -1,0 +1,318 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Amplitudes near pi and angle expressions, correctly rounded, against 400-digit mpmath
+// references (tests/data/make_near_pi.py).
+#include "pendulum/amplitude.hpp"
+#include "pendulum/angle.hpp"
+#include "pendulum/approximants.hpp"
+#include "pendulum/exact.hpp"
+#include "pendulum/methods.hpp"
+#include "pendulum/period_error.hpp"
+#include "process.hpp"
+#include "reference.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace pendulum;
+
+/// A decimal as strtod reads it: subnormal values too (std::stod throws for them).
+double number(const std::string& text) { return std::strtod(text.c_str(), nullptr); }
+
+struct near_pi_row {
+    std::string expression;
+    double theta0, d, k, kp, period, c1;
+};
+
+std::vector<near_pi_row> near_pi_rows() {
+    std::vector<near_pi_row> rows;
+    const auto text = test_support::read_reference_text("near_pi.csv");
+    for (std::size_t i = 1; i < text.size(); ++i) {
+        const auto& f = text[i];
+        rows.push_back({f.at(0), number(f.at(1)), number(f.at(2)), number(f.at(3)), number(f.at(4)), number(f.at(5)),
+                        number(f.at(6))});
+    }
+    return rows;
+}
+
+TEST(NearPi, ExpressionsKeepTheirDistanceFromPiToTheLastBit) {
+    const auto rows = near_pi_rows();
+    ASSERT_GE(rows.size(), 15u);
+    for (const auto& r : rows) {
+        const amplitude a = parse_amplitude(r.expression);
+        EXPECT_EQ(a.radians(), r.theta0) << r.expression;
+        if (a.near_pi()) {
+            EXPECT_EQ(a.from_pi(), r.d) << r.expression;
+        }
+        EXPECT_EQ(a.k(), r.k) << r.expression;
+        EXPECT_EQ(a.kp(), r.kp) << r.expression;
+    }
+}
+
+TEST(NearPi, PeriodAndCoefficientFromTheDistance) {
+    for (const auto& r : near_pi_rows()) {
+        const exact_solution e(parse_amplitude(r.expression));
+        EXPECT_LE(std::fabs(e.period_ratio() / r.period - 1), 4.5e-16) << r.expression;
+        EXPECT_LE(std::fabs(e.coefficient(0) / r.c1 - 1), 2e-15) << r.expression;
+    }
+}
+
+TEST(NearPi, DoublesGiveTheirDistanceExactly) {
+    // pi - 0.5 and pi - 2^-40 are doubles' distances from the double theta0 plus pi's own tail.
+    const double theta0 = std::nextafter(3.141592653589793, 0.0);  // the double below the one nearest pi
+    const amplitude a(theta0);
+    EXPECT_EQ(a.from_pi(), 5.66553889764798e-16);  // pi - theta0, 400 digits rounded
+    const amplitude b = amplitude::from_pi(1e-300);
+    EXPECT_EQ(b.kp(), 5e-301);
+    EXPECT_EQ(b.k(), 1.0);
+    EXPECT_THROW(amplitude::from_pi(1e-310), domain_error);
+    EXPECT_THROW(amplitude::from_pi(0.0), domain_error);
+    EXPECT_THROW(amplitude(3.141592653589793), domain_error);
+}
+
+TEST(NearPi, TooCloseOrBeyondIsAnErrorNamingTheValue) {
+    for (const char* text : {"pi", "pi - 1e-400", "pi - 1e-310", "pi + 1e-300", "0", "-1e-300", "4"}) {
+        try {
+            parse_amplitude(text);
+            ADD_FAILURE() << text << " was accepted";
+        } catch (const domain_error& e) {
+            EXPECT_NE(std::string(e.what()).find("theta0"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(AngleExpressions, AreCorrectlyRounded) {
+    EXPECT_EQ(parse_expression("0.1 + 0.2"), 0.3);
+    EXPECT_EQ(parse_expression("1e300 - (1e300 - 1)"), 1.0);
+    EXPECT_EQ(parse_expression("1/3"), 1.0 / 3.0);
+    EXPECT_EQ(parse_angle("pi - 1e-300"), 3.141592653589793);
+    EXPECT_EQ(parse_angle("0.1pi"), 0.3141592653589793);  // 400-digit pi/10, rounded
+    EXPECT_EQ(parse_angle("1deg"), 0.017453292519943295);
+    EXPECT_EQ(parse_angle("179.9999999deg"), 3.141592651844464);
+    // Cancellation beyond the working precision is no value at all.
+    EXPECT_THROW(parse_expression("1e300 - (1e300 - 1e-300)"), domain_error);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PeriodErrors, EveryClosedFormRightTo1e12DownTo1e300) {
+    // theta0, method, error
+    const auto rows = test_support::read_reference_text("period_errors.csv");
+    ASSERT_GE(rows.size(), 280u);
+    double worst = 0;
+    std::string where;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const std::string& theta0 = rows[i].at(0);
+        const std::string& method = rows[i].at(1);
+        const std::string& error = rows[i].at(2);
+        const auto e = method_period_error(parse_method(method), parse_amplitude(theta0));
+        if (error == "below") {
+            EXPECT_EQ(e.what, period_error::kind::below_limit) << method << " at " << theta0 << ": " << e.value;
+            continue;
+        }
+        ASSERT_EQ(e.what, period_error::kind::value) << method << " at " << theta0;
+        const double rel = std::fabs(e.value / number(error) - 1);
+        EXPECT_LE(rel, 1e-12) << method << " at " << theta0 << ": got " << format_double(e.value) << ", want " << error;
+        if (rel > worst) {
+            worst = rel;
+            where = method + " at " + theta0;
+        }
+    }
+    std::cout << "worst relative error of T_m/T - 1: " << worst << " (" << where << ")\n";
+}
+
+TEST(PeriodErrors, IterationLevelsAgainstExactArithmetic) {
+    // iteration.csv: theta0 expression, value, order, lambda, T_N/T0, T_N/T - 1 (empty: no period).
+    const auto rows = test_support::read_reference_text("iteration.csv");
+    struct level {
+        int order;
+        std::string error;
+    };
+    std::vector<std::pair<std::string, std::vector<level>>> by_amplitude;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        auto f = rows[i];
+        f.resize(6);
+        if (by_amplitude.empty() || by_amplitude.back().first != f[0]) by_amplitude.push_back({f[0], {}});
+        const int order = std::stoi(f[2]);
+        if (order <= 24) by_amplitude.back().second.push_back({order, f[5]});
+    }
+    ASSERT_GE(by_amplitude.size(), 6u);
+    double worst = 0;
+    for (const auto& [text, levels] : by_amplitude) {
+        const auto errors = iterated_period_errors(parse_amplitude(text), levels.back().order);
+        for (const auto& l : levels) {
+            const auto& e = errors[static_cast<std::size_t>(l.order)];
+            if (l.error.empty()) {
+                EXPECT_EQ(e.what, period_error::kind::no_period) << text << " order " << l.order;
+                continue;
+            }
+            ASSERT_EQ(e.what, period_error::kind::value) << text << " order " << l.order;
+            const double rel = std::fabs(e.value / number(l.error) - 1);
+            EXPECT_LE(rel, 1e-12) << text << " order " << l.order << ": got " << format_double(e.value) << ", want "
+                                  << l.error;
+            worst = std::max(worst, rel);
+        }
+    }
+    std::cout << "worst relative error of T_N/T - 1 over the levels: " << worst << "\n";
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PeriodErrors, FirstBreakdownOfTheIterationIsAtPiMinus6995e4) {
+    // Exact-arithmetic iteration (the physics notes): no period at levels 8 and 9 from pi - 6.995e-4 on.
+    const auto at = iterated_period_errors(parse_amplitude("pi - 6.995e-4"), 12, 1e-16);
+    const auto before = iterated_period_errors(parse_amplitude("pi - 6.996e-4"), 12, 1e-16);
+    for (int n = 0; n <= 12; ++n) {
+        const bool broken = n == 8 || n == 9;
+        EXPECT_EQ(at[static_cast<std::size_t>(n)].what == period_error::kind::no_period, broken) << n;
+        EXPECT_NE(before[static_cast<std::size_t>(n)].what, period_error::kind::no_period) << n;
+    }
+}
+
+}  // namespace
+
+namespace {
+
+/// |got - want| in units in the last place of want.
+double ulps(double got, double want) {
+    const double ulp = std::nextafter(std::fabs(want), INFINITY) - std::fabs(want);
+    return std::fabs(got - want) / ulp;
+}
+
+TEST(Scan, ThousandAmplitudesEveryMethodAgainstMpmath) {
+    auto rows = test_support::read_reference_text("scan.csv");
+    const std::vector<std::string> header = rows.front();
+    rows.erase(rows.begin());
+    ASSERT_EQ(rows.size(), 1000u);
+    struct worst_case {
+        double ulps = 0;
+        std::string ulps_at;
+        double error = 0;
+        std::string error_at;
+    };
+    std::vector<std::pair<std::string, worst_case>> worst;
+    const auto worst_of = [&](const std::string& method) -> worst_case& {
+        for (auto& [name, w] : worst) {
+            if (name == method) return w;
+        }
+        worst.push_back({method, {}});
+        return worst.back().second;
+    };
+    for (const auto& r : rows) {
+        ASSERT_EQ(r.size(), header.size());
+        const amplitude a = parse_amplitude(r[0]);
+        for (std::size_t i = 1; i < header.size(); ++i) {
+            const std::string column = header[i];
+            const std::string name = column.substr(2);
+            const method_choice m = parse_method(name);
+            worst_case& w = worst_of(name);
+            if (column.starts_with("T:")) {
+                const double u = ulps(method_period(m, a), number(r[i]));
+                if (u > w.ulps) {
+                    w.ulps = u;
+                    w.ulps_at = r[0];
+                }
+                continue;
+            }
+            const auto e = method_period_error(m, a);
+            if (r[i] == "below") {
+                EXPECT_EQ(e.what, period_error::kind::below_limit) << name << " at " << r[0];
+                continue;
+            }
+            ASSERT_EQ(e.what, period_error::kind::value) << name << " at " << r[0];
+            const double rel = std::fabs(e.value / number(r[i]) - 1);
+            EXPECT_LE(rel, 1e-12) << name << " at " << r[0] << ": got " << format_double(e.value) << ", want " << r[i];
+            if (rel > w.error) {
+                w.error = rel;
+                w.error_at = r[0];
+            }
+        }
+    }
+    for (const auto& [name, w] : worst) {
+        std::cout << name << ": period worst " << w.ulps << " ulps (" << w.ulps_at << "); error worst " << w.error
+                  << " relative (" << w.error_at << ")\n";
+    }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Coefficients, ExactC1C3C5InUlps) {
+    // coefficients_dense.csv: theta0, c1, c3, c5 (mpmath). The nome's series below pi/2 keeps
+    // c5 within 10 ulps where exp((n + 1/2) ln q) lost 350 near theta0 = 1e-8.
+    const auto rows = test_support::read_reference("coefficients_dense.csv");
+    ASSERT_EQ(rows.size(), 400u);
+    const double limit[] = {3, 6, 12};
+    double worst[] = {0, 0, 0};
+    for (const auto& r : rows) {
+        const exact_solution e(r[0]);
+        for (int n = 0; n < 3; ++n) {
+            const double u = ulps(e.coefficient(n), r[static_cast<std::size_t>(n + 1)]);
+            EXPECT_LE(u, limit[n]) << "c" << 2 * n + 1 << " at " << format_double(r[0]);
+            worst[n] = std::max(worst[n], u);
+        }
+    }
+    std::cout << "worst ulps: c1 " << worst[0] << ", c3 " << worst[1] << ", c5 " << worst[2] << "\n";
+}
+
+}  // namespace
+
+namespace {
+
+TEST(NearPiCli, EvalKeepsTheDistanceAndRejectsWhatNoDoubleCarries) {
+    const auto r = test_support::run_cli("eval --theta0 'pi - 1e-300,pi - 1e-17' --method kidd-fogg");
+    ASSERT_EQ(r.status, 0) << r.err;
+    // period_exact 1/AGM(1, k') = 441.08517292857255 and 26.243623962816454 (near_pi.csv, to
+    // 15 digits here); Kidd-Fogg 1/sqrt(5e-301) = 1.4142135623730950e+150 (50-digit mpmath).
+    EXPECT_NE(r.out.find("3.141592653589793,441.085172928572"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(",1.41421356237309"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("3.141592653589793,26.2436239628164"), std::string::npos) << r.out;
+    for (const char* bad : {"pi - 1e-400", "pi - 1e-310", "pi + 1e-300", "1e300 - (1e300 - 1e-300)"}) {
+        const auto b = test_support::run_cli(std::string("eval --theta0 '") + bad + "'");
+        EXPECT_EQ(b.status, 2) << bad << ": " << b.out;
+        EXPECT_TRUE(b.out.empty()) << bad;
+        EXPECT_NE(b.err.find("--theta0"), std::string::npos) << b.err;
+    }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PeriodErrors, IterationNearPiRightTo1e14) {
+    // iteration.csv's exact-arithmetic T_N/T0 next to pi, where the double iteration drifts
+    // (at pi - 1e-12 by 27 % at N = 92): iterated_sequence() works with MPFR there.
+    const auto rows = test_support::read_reference_text("iteration.csv");
+    for (const char* text : {"pi-1e-6", "pi-1e-9"}) {
+        const auto levels = iterated_sequence(parse_amplitude(text), 24);
+        int checked = 0;
+        for (std::size_t i = 1; i < rows.size(); ++i) {
+            auto f = rows[i];
+            f.resize(6);
+            const int n = std::stoi(f[2]);
+            if (f[0] != text || n > 24) continue;
+            const auto& level = levels[static_cast<std::size_t>(n)];
+            if (f[4].empty()) {
+                EXPECT_FALSE(level.exists()) << text << " order " << n;
+            } else {
+                EXPECT_LE(std::fabs(level.period_ratio() / number(f[4]) - 1), 1e-14) << text << " order " << n;
+            }
+            ++checked;
+        }
+        EXPECT_GE(checked, 20) << text;
+    }
+}
+
+}  // namespace

@@ -31,7 +31,7 @@ done
 # The page as text, wide enough that no option is hyphenated at a line end.
 # (Pipelines end in a reader that reads everything, grep >/dev/null, not grep -q: with
 # pipefail, a writer cut off early would fail the test by chance.)
-text=$(LC_ALL=C.UTF-8 MANWIDTH=250 man -l "$page1" 2>/dev/null | col -b | sed -E 's/([^ ])  +/\1 /g')
+text=$(LC_ALL=C.UTF-8 MANWIDTH=250 man -l "$page1" 2>/dev/null | col -bx | sed -E 's/([^ ])  +/\1 /g')
 # Lines of section NAME (a heading at the margin) or subsection NAME (three spaces in).
 # (awk reads to the end: one that exits early cuts off the echo, which pipefail reports.)
 section() { echo "$text" | awk -v h="$1" '$0 == h && !done { on = 1; next } on && /^[A-Z]/ { on = 0; done = 1 } on { print }'; }

@@ -7,6 +7,7 @@
 #include "figures/spec.hpp"
 #include "figures/spec_build.hpp"
 #include "figures/themes.hpp"
+#include "plot/frames.hpp"
 #include "plot/render.hpp"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -197,4 +199,45 @@ TEST(FigureRules, AMethodWithoutValueIsRefusedInEveryPlotKind) {
             EXPECT_NE(std::string(e.what()).find("'order 6' has no value"), std::string::npos) << e.what();
         }
     }
+}
+
+TEST(FigureRules, EveryPaletteColourStandsOutFromItsBackground) {
+    // WCAG 2.1 asks 3:1 of graphics against what is next to them.
+    const auto luminance = [](const plot::rgb& c) {
+        const auto linear = [](double v) { return v <= 0.03928 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+        return 0.2126 * linear(c.r) + 0.7152 * linear(c.g) + 0.0722 * linear(c.b);
+    };
+    for (const auto& builtin : figures::builtin_themes()) {
+        const plot::theme th = figures::load_theme(std::string(builtin.name));
+        const double bg = luminance(th.background);
+        for (const auto& c : th.palette) {
+            const double fg = luminance(c);
+            const double ratio = (std::max(fg, bg) + 0.05) / (std::min(fg, bg) + 0.05);
+            EXPECT_GE(ratio, 3.0) << builtin.name << ": colour " << c.r << " " << c.g << " " << c.b;
+        }
+    }
+}
+
+TEST(FigureRules, ASizeInPixelsIsTheRastersSizeForEveryFigure) {
+    for (const auto& builtin : figures::builtin_themes()) {
+        for (const char* size : {"1920x1080", "1280x720", "800x800", "3840x2160"}) {
+            for (const char* dpi : {"", "dpi=96"}) {
+                std::vector<std::string> sets;
+                if (*dpi) sets.emplace_back(dpi);
+                sets.push_back(std::string("size_px=") + size);
+                const plot::theme th = figures::load_theme(std::string(builtin.name), sets);
+                int w = 0;
+                int h = 0;
+                ASSERT_EQ(std::sscanf(size, "%dx%d", &w, &h), 2);
+                for (const auto& e : figures::catalog()) {
+                    const auto f = figures::build(e, figures::sized_by({}, th));
+                    const auto [pw, ph] = plot::pixel_size(f, th, th.dpi);
+                    EXPECT_EQ(pw, w) << builtin.name << " " << e.id << " " << size << " " << dpi;
+                    EXPECT_EQ(ph, h) << builtin.name << " " << e.id << " " << size << " " << dpi;
+                }
+            }
+        }
+    }
+    EXPECT_THROW((void)figures::load_theme("paper", {"size_px=1920"}), figures::spec_error);
+    EXPECT_THROW((void)figures::load_theme("paper", {"size_px=1920x1080", "figure_width_cm=8"}), figures::spec_error);
 }

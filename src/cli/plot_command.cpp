@@ -68,6 +68,7 @@ struct plot_options {
     std::string theme = "paper";
     std::vector<std::string> sets;
     std::optional<double> dpi;
+    std::string size;
 };
 
 /// A TOML string: the text in quotes, with backslashes and quotes escaped.
@@ -175,6 +176,7 @@ int run_plot(const plot_options& o) {
     r.theme = o.theme;
     r.sets = o.sets;
     r.dpi = o.dpi;
+    r.size = o.size;
     return render_figures({&e}, r);
 }
 
@@ -200,6 +202,9 @@ command add_plot_command(CLI::App& app) {
     cmd->add_option("--theme", po->theme, figures::theme_help() + "; default paper")->type_name("NAME")->check(non_empty);
     cmd->add_option("--set", po->sets, "KEY=VALUE of a style file on top of the theme; repeatable")
         ->type_name("KEY=VALUE")->check(non_empty);
+    cmd->add_option("--size", po->size, "A raster of WIDTHxHEIGHT pixels, e.g. 1920x1080 (the style key size_px)")
+        ->type_name("WxH")
+        ->check(non_empty);
     cmd->add_option("--dpi", po->dpi, "Resolution of " + raster_formats() + " in dots per inch, 10..2400 (default: "
                                           "the theme's)")
         ->type_name("N");

@@ -86,9 +86,15 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
         }
         overlay.tex_font_pt = *o.tex_font_size;
     }
-    const plot::theme theme = chosen_theme(o.theme.empty() ? "paper" : o.theme, o.sets);
+    // --size is the style key size_px, at the resolution of --dpi where one is given.
+    std::vector<std::string> sets = o.sets;
+    if (!o.size.empty()) {
+        if (o.dpi) sets.push_back("dpi=" + format_double(*o.dpi));
+        sets.push_back("size_px=" + o.size);
+    }
+    const plot::theme theme = chosen_theme(o.theme.empty() ? "paper" : o.theme, sets);
     // Animations are for slides: theirs unless a theme is asked for.
-    const plot::theme moving_theme = o.theme.empty() ? chosen_theme("slides", o.sets) : theme;
+    const plot::theme moving_theme = o.theme.empty() ? chosen_theme("slides", sets) : theme;
     const double dpi = o.dpi.value_or(theme.dpi);
     const double moving_dpi = o.dpi.value_or(moving_theme.dpi);
     for (const double d : {dpi, moving_dpi}) {
@@ -125,7 +131,7 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
     }
     if (!o.frames.empty() && !o.at.empty()) throw usage_error("give --frames or --at, not both");
     if (o.paper_files && !animations.empty()) throw usage_error("--paper-files applies to still figures, not to animations");
-    for (const char* key : {"figure_width_cm", "figure_height_cm"}) {
+    for (const char* key : {"figure_width_cm", "figure_height_cm", "size_px"}) {
         if (o.paper_files && theme.given.contains(key)) {
             throw usage_error(std::string(key) + " sizes a whole figure, and --paper-files writes each panel to a file "
                               "of its own, sized as in the paper's source: set panel_width_cm instead");
@@ -175,6 +181,10 @@ command add_render_command(CLI::App& app) {
     cmd->add_option("--set", ro->sets, "KEY=VALUE of a style file on top of the theme, e.g. tick_font_pt=9; "
                                          "repeatable ('show --theme paper' lists the keys)")
         ->type_name("KEY=VALUE")->check(non_empty);
+    cmd->add_option("--size", ro->size, "A raster of WIDTHxHEIGHT pixels, e.g. 1920x1080: the figure is that size "
+                                        "at the resolution (--dpi or the theme's) and laid out for it")
+        ->type_name("WxH")
+        ->check(non_empty);
     cmd->add_option("--dpi", ro->dpi, "Resolution of " + raster_formats() + " in dots per inch, 10..2400 (default: "
                                         "the theme's, 300 for paper)")
         ->type_name("N");

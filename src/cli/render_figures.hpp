@@ -19,6 +19,7 @@ struct render_options {
     std::string theme;  // empty: paper for still figures, slides for animations
     std::vector<std::string> sets;
     std::optional<double> dpi;  // the theme's when not given
+    std::string size;           // WIDTHxHEIGHT in pixels: the style key size_px
     std::string theta0;
     bool paper_files = false;
     bool force = false;  // rewrite files that would not change

@@ -24,14 +24,14 @@ plot::panel convergence_panel(const panel_context&, const panel_spec& p) {
     panel.x.max = p.orders[1];
     panel.y.label = "|<i>T</i><sub><i>N</i></sub>/<i>T</i> \u2212 1|";
     panel.y.kind = plot::scale::log;
-    panel.y.min = 1e-16;
-    panel.y.max = 1.0;
+    // The limits follow the data: the errors are right far below the doubles' rounding.
+    panel.y.round_limits = true;
     panel.y.max_ticks = 9;
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
         const amplitude& a = p.theta0[i];
         // Every level with MPFR: each drawn error is right to 1e-12 relative; levels without a
         // period (close to pi) and errors below the axis are gaps.
-        const auto levels = pendulum::iterated_period_errors(a.theta0(), p.orders[1], *panel.y.min);
+        const auto levels = pendulum::iterated_period_errors(a.theta0(), p.orders[1], 1e-300);
         const series_style st = amplitude_style(i, std::string(theta0_markup) + " = " + typeset_angle(a.text));
         plot::series s = series_of(st);
         for (int n = p.orders[0]; n <= p.orders[1]; ++n) {

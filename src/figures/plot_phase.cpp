@@ -32,12 +32,24 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
         const double period = 4 * exact.quarter_period();
         for (std::size_t j = 0; j < p.methods.size(); ++j) {
             const auto& m = p.methods[j];
-            // One method: each orbit its own colour; several: a colour per method.
-            series_style st = style_of(m, static_cast<int>(p.methods.size() == 1 ? i : j));
-            if (i > 0) st.label.clear();  // one legend entry per method
+            // One method: each orbit its own line and colour, its amplitude in the legend;
+            // several: a style per method, one legend entry each.
+            const bool by_amplitude = p.methods.size() == 1 && !m.style && !m.marker && m.label.empty();
+            series_style st = by_amplitude
+                                  ? amplitude_style(i, std::string(theta0_markup) + " = " + typeset_angle(a.text))
+                                  : style_of(m, static_cast<int>(p.methods.size() == 1 ? i : j));
+            if (!by_amplitude && i > 0) st.label.clear();  // one legend entry per method
+            if (by_amplitude) {
+                // Orbits are lines: five dash patterns, then the same a little wider.
+                static const line_style lines[] = {line_style::solid, line_style::dashed, line_style::dotted,
+                                                   line_style::dash_dot, line_style::dash_dot_dot};
+                st.line = lines[i % 5];
+                st.marker = marker_style::none;
+            }
             plot::series s = series_of(st);
+            if (by_amplitude && i >= 5) s.width_scale = 1.8;
             if (is_exact(m)) {
-                if (!m.style && !m.marker) {
+                if (!m.style && !m.marker && !by_amplitude) {
                     // An orbit reads best as a line, whatever the theme's circles for exact.
                     s.line = line_style::solid;
                     s.marker = marker_style::none;
@@ -62,11 +74,14 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
         }
     }
     if (p.separatrix) {
+        // A wide grey band under the orbits: seen even where an orbit runs along it.
         const auto theta = grid(-pi, pi, 400);
         for (double sign : {1.0, -1.0}) {
             plot::series s;
             if (sign > 0) s.label = "separatrix";
-            s.line = line_style::dashed;
+            s.line = line_style::solid;
+            s.rgb_color = plot::rgb{0.62, 0.62, 0.62};
+            s.width_scale = 3.5;
             s.curve = plot::function_curve(-pi * angle, pi * angle, [sign, angle](double x) {
                 return sign * pendulum::separatrix_velocity(x / angle);
             });
@@ -74,7 +89,7 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
                 s.x.push_back(angle * t);
                 s.y.push_back(s.curve->at(angle * t).second);
             }
-            panel.data.push_back(std::move(s));
+            panel.data.insert(panel.data.begin() + (sign > 0 ? 0 : 1), std::move(s));
         }
     }
     return panel;

@@ -42,7 +42,7 @@ constexpr std::string_view figure_keys = "columns panel_width_cm panel_aspect le
 constexpr std::string_view pendulum_keys = "length_m g";
 constexpr std::string_view top_keys = "figure pendulum animation panel";
 constexpr std::string_view animation_keys = "fps periods duration_s speed clock";
-constexpr std::string_view line_keys = "x y label style";
+constexpr std::string_view line_keys = "x y label style span";
 constexpr std::string_view method_keys = "method label style color marker";
 
 constexpr std::array<std::pair<std::string_view, legend_mode>, 3> legend_modes = {{
@@ -111,6 +111,42 @@ std::optional<method_spec> read_method(reader& r, const toml::node& n, const plo
         return std::nullopt;
     }
     return m;
+}
+
+/// A reference line's span: two numbers or expressions ("pi/2"), the first below the second.
+std::optional<std::array<double, 2>> read_span(reader& r, const toml::node& n) {
+    const auto* a = n.as_array();
+    const char* what = "'span' must be two values [from, to] along the other axis, numbers or expressions such as \"pi/2\"";
+    if (!a || a->size() != 2) {
+        r.problem(n, what);
+        return std::nullopt;
+    }
+    std::array<double, 2> v{};
+    for (std::size_t i = 0; i < 2; ++i) {
+        const toml::node& e = *a->get(i);
+        try {
+            if (const auto* s = e.as_string()) {
+                v[i] = pendulum::parse_expression(s->get());
+            } else if (auto d = e.value<double>()) {
+                v[i] = *d;
+            } else {
+                r.problem(e, what);
+                return std::nullopt;
+            }
+        } catch (const std::exception& err) {
+            r.problem(e, std::string("'span': ") + err.what());
+            return std::nullopt;
+        }
+        if (!std::isfinite(v[i]) || std::fabs(v[i]) > 1e300) {
+            r.problem(e, "'span' values lie within 1e300");
+            return std::nullopt;
+        }
+    }
+    if (!(v[0] < v[1])) {
+        r.problem(n, "'span' = [from, to] needs from < to");
+        return std::nullopt;
+    }
+    return v;
 }
 
 std::vector<std::string> panel_keys_of(const plot_row& plot) {
@@ -347,6 +383,7 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
                 }
                 if (auto label = r.label(lt, "label")) line.label = *label;
                 if (auto style = r.choice(lt, "style", line_styles)) line.style = *style;
+                if (const toml::node* sn = lt.get("span")) line.span = read_span(r, *sn);
                 p.lines.push_back(line);
             }
         }

@@ -71,6 +71,7 @@ struct reference_line {
     std::optional<double> y;                       ///< horizontal line at y
     std::string label;                             ///< legend label; empty for none
     plot::line_style style = plot::line_style::dashed;  ///< line style
+    std::optional<std::array<double, 2>> span;     ///< its extent along the other axis; default: the whole panel
 };
 
 /// The time axis of trajectory and phase panels.

@@ -159,7 +159,11 @@ plot::figure build_figure(const figure_spec& spec, const build_options& options)
                 const double pad = a.kind == plot::scale::log ? 0.0 : (hi - lo);
                 return std::array<double, 2>{a.min ? lo : lo - pad, a.max ? hi : hi + pad};
             };
-            if (line.y) {
+            if (line.span) {
+                const auto& [from, to] = *line.span;
+                s.x = line.y ? std::vector<double>{from, to} : std::vector<double>{*line.x, *line.x};
+                s.y = line.y ? std::vector<double>{*line.y, *line.y} : std::vector<double>{from, to};
+            } else if (line.y) {
                 const auto x = extent(panel.x, true);
                 s.x = {x[0], x[1]};
                 s.y = {*line.y, *line.y};

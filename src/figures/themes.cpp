@@ -5,6 +5,7 @@
 #include "figures/toml_reader.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -65,7 +66,7 @@ struct flag_key {
 constexpr flag_key flag_keys[] = {{"opaque_vector_background", &plot::theme::opaque_vector_background}};
 
 std::vector<std::string> all_keys() {
-    std::vector<std::string> keys = {"base", "description", "font_family", "palette", "styles"};
+    std::vector<std::string> keys = {"base", "description", "font_family", "palette", "styles", "size_px"};
     for (const auto& k : number_keys) keys.emplace_back(k.name);
     for (const auto& k : color_keys) keys.emplace_back(k.name);
     for (const auto& k : flag_keys) keys.emplace_back(k.name);
@@ -87,6 +88,20 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
             r.problem(*doc.get("font_family"), "'font_family' must name a font");
         } else {
             t.font_family = *v;
+        }
+    }
+    if (auto v = r.string(doc, "size_px")) {
+        int w = 0;
+        int h = 0;
+        char x = 0;
+        char rest = 0;
+        if (std::sscanf(v->c_str(), "%d%c%d%c", &w, &x, &h, &rest) == 3 && x == 'x' && w >= 16 && h >= 16 &&
+            w <= 20000 && h <= 20000) {
+            t.width_px = w;
+            t.height_px = h;
+        } else {
+            r.problem(*doc.get("size_px"), "'size_px' = \"" + *v + "\" must be WIDTHxHEIGHT in pixels, 16 to 20000 each, "
+                                           "e.g. \"1920x1080\"");
         }
     }
     for (const auto& k : number_keys) {
@@ -286,6 +301,17 @@ plot::theme load_theme(std::string_view name_or_file, const std::vector<std::str
         t.given.insert(key);
     }
     check_font(t.font_family, font_from);
+    if (t.width_px > 0) {
+        // A size in pixels is a size in points at the theme's resolution: the layout follows
+        // from it like any other size, and the raster has exactly those pixels.
+        for (const char* key : {"figure_width_cm", "figure_height_cm"}) {
+            if (t.given.contains(key) && t.given.contains("size_px")) {
+                throw_option_problem("size_px", std::string("size_px and ") + key + " both size the figure; give one");
+            }
+        }
+        t.fixed_width_cm = t.width_px / t.dpi * 2.54;
+        t.fixed_height_cm = t.height_px / t.dpi * 2.54;
+    }
     return t;
 }
 

@@ -32,11 +32,12 @@ std::string listed(const std::vector<std::string>& names);
 std::optional<plot::rgb> parse_color(std::string_view text);
 
 /// Line styles by the names specs and style files use.
-inline constexpr std::array<std::pair<std::string_view, plot::line_style>, 5> line_styles = {{
+inline constexpr std::array<std::pair<std::string_view, plot::line_style>, 6> line_styles = {{
     {"solid", plot::line_style::solid},
     {"dashed", plot::line_style::dashed},
     {"dotted", plot::line_style::dotted},
     {"dash-dot", plot::line_style::dash_dot},
+    {"dash-dot-dot", plot::line_style::dash_dot_dot},
     {"none", plot::line_style::none},
 }};
 

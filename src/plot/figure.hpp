@@ -41,7 +41,7 @@ struct label {
 };
 
 /// How a series' line is drawn.
-enum class line_style { none, solid, dashed, dotted, dash_dot };
+enum class line_style { none, solid, dashed, dotted, dash_dot, dash_dot_dot };
 
 /// How a series' points are marked.
 enum class marker_style { none, open_circle, filled_circle };

@@ -213,6 +213,32 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
 }
 
 
+/// True if every panel's legend would list the same entries, drawn alike: one legend can
+/// then stand for all. Panels of different kinds each keep their own.
+bool same_legend_entries(const std::vector<panel>& panels) {
+    const auto entries = [](const panel& p) {
+        std::vector<std::size_t> v;  // legend entries refer to series by index
+        for (std::size_t i = 0; i < p.data.size(); ++i) {
+            if (!p.data[i].label.empty()) v.push_back(i);
+        }
+        return v;
+    };
+    const auto first = entries(panels.front());
+    for (const auto& p : panels) {
+        const auto these = entries(p);
+        if (these.size() != first.size()) return false;
+        for (std::size_t i = 0; i < these.size(); ++i) {
+            if (these[i] != first[i]) return false;
+            const series& a = panels.front().data[first[i]];
+            const series& b = p.data[these[i]];
+            if (a.label.markup != b.label.markup || a.line != b.line || a.marker != b.marker || a.color != b.color) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
 /// The figure with the theme's named styles applied to the series that carry a style key.
 figure with_theme_styles(const figure& fig, const theme& th) {
     figure styled = fig;
@@ -319,7 +345,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
                                           plans[i].yt.hi, fig.panels[i].frameless});
         }
     };
-    if (!fig.shared_legend || fig.panels.empty()) {
+    if (!fig.shared_legend || fig.panels.empty() || !same_legend_entries(fig.panels)) {
         check_room();
         record_frames();
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {

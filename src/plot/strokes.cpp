@@ -41,6 +41,11 @@ void set_line_style(cairo_t* cr, const theme& th, line_style style, double width
             cairo_set_dash(cr, d, 4, 0);
             break;
         }
+        case line_style::dash_dot_dot: {
+            const double d[] = {5.0 * w, 2.2 * w, 0.5 * w, 2.2 * w, 0.5 * w, 2.2 * w};
+            cairo_set_dash(cr, d, 6, 0);
+            break;
+        }
         default: cairo_set_dash(cr, nullptr, 0, 0);
     }
 }

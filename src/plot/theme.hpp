@@ -42,6 +42,8 @@ struct theme {
     double fixed_width_cm = 0;        ///< whole-figure width, or 0 to size by panels
     double fixed_height_cm = 0;       ///< whole-figure height, or 0 to size by panels
     double dpi = 300;                 ///< PNG resolution where none is asked for
+    int width_px = 0;                 ///< a raster size asked for in pixels (size_px), or 0
+    int height_px = 0;                ///< a raster size asked for in pixels (size_px), or 0
     std::set<std::string> given;      ///< keys a user's style file or the command line set: they win over a figure's own
 };
 

@@ -141,7 +141,7 @@ methods = [{ method = "exact", color = "red", style = "wavy" }]
         "my-figure.toml:9:9: 'range' must go from a smaller to a larger value",
         "my-figure.toml:12:12: 'harmonic' must be odd",
         "my-figure.toml:13:40: 'color' = \"red\" is not a colour #rrggbb",
-        "my-figure.toml:13:55: 'style' = \"wavy\" is not one of solid, dashed, dotted, dash-dot, none",
+        "my-figure.toml:13:55: 'style' = \"wavy\" is not one of solid, dashed, dotted, dash-dot, dash-dot-dot, none",
     };
     for (const char* e : expected) EXPECT_NE(got.find(e), std::string::npos) << "missing: " << e << "\nin:\n" << got;
 }

@@ -83,7 +83,7 @@ TEST(Themes, BadStyleFilesAndSets) {
                              "bad.toml:2:1: unknown key 'colour' in a style file",
                              "bad.toml:3:14: 'foreground' must be a colour \"#rrggbb\"",
                              "bad.toml:4:11: 'palette' must be a list of colours",
-                             "'line' = \"wavy\" is not one of solid, dashed, dotted, dash-dot, none"}) {
+                             "'line' = \"wavy\" is not one of solid, dashed, dotted, dash-dot, dash-dot-dot, none"}) {
         EXPECT_NE(got.find(want), std::string::npos) << "missing: " << want << "\nin:\n" << got;
     }
     fs::remove(path);

@@ -10,20 +10,42 @@
 
 namespace pendulum::mp {
 
+namespace detail {
+
+/// MPFR keeps caches (pi, log 2) per thread and asks each thread to free them before it
+/// ends: a worker thread that used a real frees them at its exit.
+struct thread_caches {
+    thread_caches() = default;
+    thread_caches(const thread_caches&) = delete;
+    thread_caches& operator=(const thread_caches&) = delete;
+    ~thread_caches() { mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE); }
+};
+
+/// Registers the calling thread's cleanup, once per thread.
+inline void free_caches_at_thread_exit() {
+    thread_local thread_caches caches;
+    (void)caches;
+}
+
+}  // namespace detail
+
 /// An MPFR number with its own precision; every operation rounds to nearest.
 class real {
 public:
     /// Zero with `bits` of precision.
     explicit real(mpfr_prec_t bits) {
+        detail::free_caches_at_thread_exit();
         mpfr_init2(v_, bits);
         mpfr_set_zero(v_, 1);
     }
     /// `x` exactly, with `bits` of precision (at least 53).
     real(double x, mpfr_prec_t bits) {
+        detail::free_caches_at_thread_exit();
         mpfr_init2(v_, bits);
         mpfr_set_d(v_, x, MPFR_RNDN);
     }
     real(const real& o) {
+        detail::free_caches_at_thread_exit();
         mpfr_init2(v_, mpfr_get_prec(o.v_));
         mpfr_set(v_, o.v_, MPFR_RNDN);
     }

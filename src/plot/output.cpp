@@ -277,16 +277,8 @@ std::string with_svg_title(std::string svg, const std::string& title) {
     const auto root = svg.find("<svg");
     const auto end = root == std::string::npos ? root : svg.find('>', root);
     if (end == std::string::npos) throw std::runtime_error("Cairo wrote an SVG without a root element");
-    std::string escaped;
-    for (char c : title) {
-        switch (c) {
-            case '&': escaped += "&amp;"; break;
-            case '<': escaped += "&lt;"; break;
-            case '>': escaped += "&gt;"; break;
-            default: escaped += c;
-        }
-    }
-    svg.insert(end + 1, "\n<title>" + escaped + "</title>");
+    // Markup's escapes are XML's.
+    svg.insert(end + 1, "\n<title>" + escape_markup(title) + "</title>");
     return svg;
 }
 

@@ -13,7 +13,7 @@ check=$2
 route=$3
 size=${4:-}
 dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
+[ -n "${KEEP:-}" ] && echo "dir $dir" || trap 'rm -rf "$dir"' EXIT
 cd "$dir"
 fail() { echo "FAIL: $*"; exit 1; }
 for tool in pdflatex pdftoppm pdftotext kpsewhich; do

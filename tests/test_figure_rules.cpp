@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Rules every figure keeps, built-in or a user's, in every theme and at every size: data
 // stand clear of the frame.
+#include "figures/batch.hpp"
 #include "figures/build_options.hpp"
 #include "figures/catalog.hpp"
 #include "figures/errors.hpp"
@@ -9,6 +10,9 @@
 #include "figures/themes.hpp"
 #include "plot/frames.hpp"
 #include "plot/render.hpp"
+#include "plot/text.hpp"
+
+#include <cairo.h>
 
 #include <gtest/gtest.h>
 
@@ -240,4 +244,87 @@ TEST(FigureRules, ASizeInPixelsIsTheRastersSizeForEveryFigure) {
     }
     EXPECT_THROW((void)figures::load_theme("paper", {"size_px=1920"}), figures::spec_error);
     EXPECT_THROW((void)figures::load_theme("paper", {"size_px=1920x1080", "figure_width_cm=8"}), figures::spec_error);
+}
+
+namespace {
+
+/// The texts a figure draws, in points, as the LaTeX overlay receives them.
+std::vector<plot::placed_text> texts_of(const plot::figure& fig, const plot::theme& th,
+                                        std::vector<plot::panel_frame>& frames) {
+    const plot::page_size size = plot::figure_size(fig, th);
+    cairo_surface_t* surface = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, nullptr);
+    cairo_t* cr = cairo_create(surface);
+    std::vector<plot::placed_text> texts;
+    plot::draw_figure(cr, fig, th, size, plot::draw_pass::all, &texts, true, &frames);
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    return texts;
+}
+
+}  // namespace
+
+// --paper-files writes each panel of a figure to a file of its own: a figure with one legend
+// shows it in exactly one of them (the one the whole figure would put it in, or a band over
+// the first), and every file's frame stays where its neighbours' are, in every theme and size.
+TEST(FigureRules, PaperFilesShowOneLegendPerFigureAndKeepTheirFramesInLine) {
+    int figures_checked = 0;
+    for (const auto& builtin : figures::builtin_themes()) {
+        for (const char* size : {"", "panel_width_cm=4.2", "panel_width_cm=9"}) {
+            std::vector<std::string> sets;
+            if (*size) sets.emplace_back(size);
+            const plot::theme theme = figures::load_theme(std::string(builtin.name), sets);
+            figures::build_options o;
+            o.panel_width_cm = theme.panel_width_cm;
+            o.panel_aspect = theme.panel_aspect;
+            for (const auto& e : figures::catalog()) {
+                if (e.spec.animation || e.spec.panels.size() < 2) continue;
+                const plot::figure whole = figures::build(e, o);
+                // The legend entries every panel shares: the first entry's text stands for the legend.
+                std::vector<std::string> first_entries;
+                for (const auto& p : whole.panels) {
+                    for (const auto& s : p.data) {
+                        if (!s.label.markup.empty()) {
+                            first_entries.push_back(s.label.markup);
+                            break;
+                        }
+                    }
+                }
+                if (!whole.shared_legend || first_entries.empty()) continue;
+                int with_legend = 0;
+                std::vector<plot::panel_frame> first_frame;
+                for (std::size_t i = 0; i < whole.panels.size(); ++i) {
+                    const plot::figure one = figures::single_panel(whole, static_cast<int>(i), whole.panel_width_cm);
+                    std::vector<plot::panel_frame> frames;
+                    std::vector<plot::placed_text> texts;
+                    try {
+                        texts = texts_of(one, theme, frames);
+                    } catch (const plot::layout_error&) {
+                        break;  // too small for the theme's text: refused, not drawn
+                    }
+                    const bool legend = std::any_of(texts.begin(), texts.end(), [&](const plot::placed_text& t) {
+                        return t.text.markup == first_entries.front();
+                    });
+                    with_legend += legend ? 1 : 0;
+                    ASSERT_EQ(frames.size(), 1u);
+                    if (i == 0) {
+                        first_frame = frames;
+                        continue;
+                    }
+                    EXPECT_NEAR(frames[0].y, first_frame[0].y, 1e-6) << e.id << " panel " << i + 1 << " " << size;
+                    EXPECT_NEAR(frames[0].h, first_frame[0].h, 1e-6) << e.id << " panel " << i + 1 << " " << size;
+                    EXPECT_NEAR(frames[0].x, first_frame[0].x, 1e-6) << e.id << " panel " << i + 1 << " " << size;
+                }
+                if (first_frame.empty()) continue;
+                // At the theme's own size every figure has its legend; files too small for a
+                // band over their axes may have none, never two.
+                if (*size) {
+                    EXPECT_LE(with_legend, 1) << e.id << " in " << builtin.name << " " << size;
+                } else {
+                    EXPECT_EQ(with_legend, 1) << e.id << " in " << builtin.name;
+                }
+                ++figures_checked;
+            }
+        }
+    }
+    EXPECT_GE(figures_checked, 12);
 }

@@ -84,14 +84,10 @@ plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
     for (std::size_t i = 0; i < f.panels.size(); ++i) {
         if (static_cast<int>(i) != panel) one.peers.push_back(f.panels[i]);
     }
-    // One legend per figure, in the first file, inside the frame or not at all: the
-    // captions name every line.
-    auto& legend = one.panels.front().legend;
-    if (panel != 0) {
-        legend = plot::legend_place::none;
-    } else if (legend != plot::legend_place::none) {
-        legend = plot::legend_place::inside;
-    }
+    // One legend per figure: the plot layer puts it in the file of the panel the whole
+    // figure would put it in, or in a band over the first file (all files leave room).
+    one.shared_legend = f.shared_legend;
+    one.place_in_set = panel;
     return one;
 }
 

@@ -146,6 +146,7 @@ struct figure {
     std::vector<panel> panels;     ///< row-major, rows * cols at most
     bool shared_legend = false;    ///< one legend, in the first panel with room inside the axes
     std::vector<panel> peers;      ///< panels drawn alone in other files of this size (one panel each) whose frames these must match
+    int place_in_set = 0;          ///< with peers: where this figure's one panel stands among them (0: first)
     plot::label title;             ///< drawn centred above the panels (theme's title_font_pt; 0 hides it)
 };
 

@@ -242,14 +242,18 @@ bool same_legend_entries(const std::vector<panel>& panels) {
 /// The figure with the theme's named styles applied to the series that carry a style key.
 figure with_theme_styles(const figure& fig, const theme& th) {
     figure styled = fig;
-    for (auto& p : styled.panels) {
-        for (auto& s : p.data) {
-            const auto it = s.style_key.empty() ? th.styles.end() : th.styles.find(s.style_key);
-            if (it == th.styles.end()) continue;
-            if (it->second.line) s.line = *it->second.line;
-            if (it->second.marker) s.marker = *it->second.marker;
+    const auto style = [&](std::vector<panel>& panels) {
+        for (auto& p : panels) {
+            for (auto& s : p.data) {
+                const auto it = s.style_key.empty() ? th.styles.end() : th.styles.find(s.style_key);
+                if (it == th.styles.end()) continue;
+                if (it->second.line) s.line = *it->second.line;
+                if (it->second.marker) s.marker = *it->second.marker;
+            }
         }
-    }
+    };
+    style(styled.panels);
+    style(styled.peers);  // planned as their own files draw them
     return styled;
 }
 
@@ -257,9 +261,11 @@ figure with_theme_styles(const figure& fig, const theme& th) {
 
 void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
                  std::vector<placed_text>* texts, bool vector, std::vector<panel_frame>* frames) {
-    const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), [](const panel& p) {
+    const auto keyed = [](const panel& p) {
         return std::any_of(p.data.begin(), p.data.end(), [](const series& s) { return !s.style_key.empty(); });
-    });
+    };
+    const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), keyed) ||
+                         std::any_of(unstyled.peers.begin(), unstyled.peers.end(), keyed);
     const figure styled = any_key && !th.styles.empty() ? with_theme_styles(unstyled, th) : figure{};
     const figure& fig = any_key && !th.styles.empty() ? styled : unstyled;
     if (fig.rows < 1 || fig.cols < 1 || fig.panels.size() > static_cast<std::size_t>(fig.rows * fig.cols)) {
@@ -308,14 +314,27 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         }
     }
     std::vector<rect> cells = make_cells(title_h);
-    std::vector<rect> planned_cells = cells;
-    if (!cells.empty()) planned_cells.resize(planned.size(), cells.front());
-    thin_crowded_ticks(text, planned, plans, planned_cells, th, fig.cols);
-    plans.resize(fig.panels.size());
-    keep_data_off_frame(fig.panels, plans, cells, th);
+    // Every planned panel (the peers too) gets a cell the size of this figure's.
+    const auto planned_cells_of = [&](const std::vector<rect>& own) {
+        std::vector<rect> all = own;
+        if (!all.empty()) all.resize(planned.size(), all.front());
+        return all;
+    };
+    thin_crowded_ticks(text, planned, plans, planned_cells_of(cells), th, fig.cols);
+    keep_data_off_frame(planned, plans, planned_cells_of(cells), th);
     // Axes too small to read are an error, not a figure.
+    const double least = 3 * th.tick_font_pt;
+    // Room for a band over files of one panel each: their axes keep three quarters of their
+    // height (and room to read), or the band would squeeze the plots it names.
+    const auto roomy = [&](const std::vector<rect>& these) {
+        for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+            const rect area = axes_area(plans[i], these[i]);
+            const rect before = axes_area(plans[i], cells[i]);
+            if (area.w < least || area.h < std::max(least, 0.75 * before.h)) return false;
+        }
+        return true;
+    };
     const auto check_room = [&] {
-        const double least = 3 * th.tick_font_pt;
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {
             const rect area = axes_area(plans[i], cells[i]);
             if (area.w >= least && area.h >= least) continue;
@@ -345,7 +364,8 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
                                           plans[i].yt.hi, fig.panels[i].frameless});
         }
     };
-    if (!fig.shared_legend || fig.panels.empty() || !same_legend_entries(fig.panels)) {
+    if (!fig.shared_legend || fig.panels.empty() || !same_legend_entries(planned)) {
+        plans.resize(fig.panels.size());
         check_room();
         record_frames();
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {
@@ -353,30 +373,50 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         }
         return;
     }
-    // A shared legend goes to the first panel with room for it inside the axes; failing
-    // that, to a band across the top of the figure. Every panel shows the same series, so
-    // the first panel's entries stand for all.
-    const legend_layout& lg = plans[0].legend;
-    std::optional<std::size_t> legend_panel;
-    for (std::size_t i = 0; i < fig.panels.size() && !legend_panel; ++i) {
-        const auto g = place_panel(fig.panels[i], plans[i], axes_area(plans[i], cells[i]), curve_tolerance(cr),
-                                   th.line_width_pt);
-        if (legend_inside(fig.panels[i], lg, g, th)) legend_panel = i;
+    // A shared legend goes to the first panel of the set with room for it inside the axes;
+    // failing that, to a band across the top. The set is the figure's panels, or, for a file
+    // of one panel of a figure (peers), the figure's panels in their order: every file of a
+    // figure decides alike, so exactly one of them shows the legend, and all of them leave
+    // room for a band, which keeps their frames in line; files too small for a band above
+    // their axes (see roomy) have no legend: a caption names the lines. Every panel shows the same
+    // series, so the first panel's entries stand for all.
+    std::vector<std::size_t> set_order;  // indices into planned, in the set's order
+    if (fig.peers.empty()) {
+        for (std::size_t i = 0; i < fig.panels.size(); ++i) set_order.push_back(i);
+    } else {
+        const std::size_t own = std::min<std::size_t>(fig.place_in_set, fig.peers.size());
+        for (std::size_t i = 0; i < own; ++i) set_order.push_back(1 + i);
+        set_order.push_back(0);
+        for (std::size_t i = own; i < fig.peers.size(); ++i) set_order.push_back(1 + i);
     }
-    if (!legend_panel && !lg.entries.empty()) {
-        const double band = legend_band_height(lg, th, size.width_pt - 2 * th.padding_pt);
-        if (pass != draw_pass::overlay) {
+    const legend_layout lg = plans[0].legend;
+    std::optional<std::size_t> legend_panel;  // index into planned
+    for (std::size_t i : set_order) {
+        const rect cell = i < cells.size() ? cells[i] : cells.front();
+        const auto g = place_panel(planned[i], plans[i], axes_area(plans[i], cell), curve_tolerance(cr),
+                                   th.line_width_pt);
+        if (legend_inside(planned[i], lg, g, th)) {
+            legend_panel = i;
+            break;
+        }
+    }
+    const double band = lg.entries.empty() ? 0.0 : legend_band_height(lg, th, size.width_pt - 2 * th.padding_pt);
+    if (!legend_panel && !lg.entries.empty() &&
+        (fig.peers.empty() || roomy(make_cells(title_h + band + 0.3 * th.padding_pt)))) {
+        if (pass != draw_pass::overlay && (fig.peers.empty() || fig.place_in_set == 0)) {
             draw_legend_band(cr, text, th, fig.panels[0], lg,
                              rect{th.padding_pt, title_h + 0.3 * th.padding_pt, size.width_pt - 2 * th.padding_pt, band});
         }
         cells = make_cells(title_h + band + 0.3 * th.padding_pt);
-        keep_data_off_frame(fig.panels, plans, cells, th);
+        keep_data_off_frame(planned, plans, planned_cells_of(cells), th);
     }
+    plans.resize(fig.panels.size());
     check_room();
     record_frames();
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-        if (legend_panel && i == *legend_panel) plans[i].legend = lg;
-        draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], legend_panel && i == *legend_panel, pass);
+        const bool here = legend_panel && i == *legend_panel;
+        if (here) plans[i].legend = lg;
+        draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], here, pass);
     }
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Writing output files: whole or not at all, into what the path names.
 #include "plot/output.hpp"
+#include "plot/streamed_file.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -11,9 +12,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <ctime>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -35,7 +38,7 @@ std::string error_text(int e) {
 }
 
 /// Writes all bytes to fd; returns 0 or the errno of the failure.
-int write_all(int fd, const std::string& bytes) {
+int write_all(int fd, std::string_view bytes) {
     std::size_t done = 0;
     while (done < bytes.size()) {
         const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
@@ -110,32 +113,41 @@ struct prepared_file {
     std::string temp; ///< the temporary's name; empty when written in place
 };
 
-/// Writes bytes where `path` leads, under a temporary name, fsynced; the caller renames it.
-prepared_file prepare(const fs::path& path, const std::string& bytes) {
+/// Opens the file `path` leads to for writing: a temporary beside it, or a device, FIFO or
+/// socket itself (written through, in place, never replaced). fd is the open descriptor.
+prepared_file open_for(const fs::path& path, int& fd, struct stat& st, bool& exists) {
     prepared_file out{path, resolve_links(path), {}};
-    struct stat st {};
-    const bool exists = ::stat(out.target.c_str(), &st) == 0;
+    exists = ::stat(out.target.c_str(), &st) == 0;
     if (exists && S_ISDIR(st.st_mode)) fail(path, EISDIR);
     if (exists && !S_ISREG(st.st_mode)) {
-        // A device, FIFO or socket: written through, in place, never replaced.
-        const int fd = ::open(out.target.c_str(), O_WRONLY | O_CLOEXEC);
+        fd = ::open(out.target.c_str(), O_WRONLY | O_CLOEXEC);
         if (fd < 0) fail(path, errno);
-        const int e = write_all(fd, bytes);
-        if (::close(fd) != 0 && e == 0) fail(path, errno);
-        if (e != 0) fail(path, e);
         return out;
     }
     const fs::path dir = out.target.has_parent_path() ? out.target.parent_path() : fs::path(".");
     remove_stale_temporaries(dir, out.target);
     std::string temp = (dir / (temp_stem(out.target) + "XXXXXX")).string();
-    const int fd = ::mkstemp(temp.data());
+    fd = ::mkstemp(temp.data());
     if (fd < 0) fail(path, errno);
-    const auto give_up = [&](int e) {
-        ::close(fd);
-        ::unlink(temp.c_str());
-        fail(path, e);
-    };
-    if (const int e = write_all(fd, bytes)) give_up(e);
+    out.temp = std::move(temp);
+    return out;
+}
+
+/// Closes fd after an error e and removes the temporary; throws naming the path.
+[[noreturn]] void give_up(prepared_file& f, int fd, int e) {
+    ::close(fd);
+    if (!f.temp.empty()) ::unlink(f.temp.c_str());
+    f.temp.clear();
+    fail(f.path, e);
+}
+
+/// Ends the writing of fd: a temporary gets the mode (and owner) of the file it replaces
+/// and is on disk, closed; a device is closed.
+void close_written(prepared_file& f, int fd, const struct stat& st, bool exists) {
+    if (f.temp.empty()) {
+        if (::close(fd) != 0) fail(f.path, errno);
+        return;
+    }
     // An existing file keeps its mode (and owner, where we may set it); a new one gets the
     // usual 0666 less the umask, which is read once: reading it means setting it.
     static const mode_t mask = [] {
@@ -143,18 +155,28 @@ prepared_file prepare(const fs::path& path, const std::string& bytes) {
         ::umask(m);
         return m;
     }();
-    if (::fchmod(fd, exists ? (st.st_mode & 07777) : (0666 & ~mask)) != 0) give_up(errno);
+    if (::fchmod(fd, exists ? (st.st_mode & 07777) : (0666 & ~mask)) != 0) give_up(f, fd, errno);
     if (exists && (st.st_uid != ::geteuid() || st.st_gid != ::getegid())) {
-        if (::fchown(fd, st.st_uid, st.st_gid) != 0 && errno != EPERM) give_up(errno);
+        if (::fchown(fd, st.st_uid, st.st_gid) != 0 && errno != EPERM) give_up(f, fd, errno);
     }
     // On disk before it takes the name: a crash leaves the old file or the new one.
-    if (::fsync(fd) != 0) give_up(errno);
+    if (::fsync(fd) != 0) give_up(f, fd, errno);
     if (::close(fd) != 0) {
         const int e = errno;
-        ::unlink(temp.c_str());
-        fail(path, e);
+        ::unlink(f.temp.c_str());
+        f.temp.clear();
+        fail(f.path, e);
     }
-    out.temp = std::move(temp);
+}
+
+/// Writes bytes where `path` leads, under a temporary name, fsynced; the caller renames it.
+prepared_file prepare(const fs::path& path, const std::string& bytes) {
+    int fd = -1;
+    struct stat st {};
+    bool exists = false;
+    prepared_file out = open_for(path, fd, st, exists);
+    if (const int e = write_all(fd, bytes)) give_up(out, fd, e);
+    close_written(out, fd, st, exists);
     return out;
 }
 
@@ -196,6 +218,37 @@ void write_atomically(const std::vector<std::pair<std::filesystem::path, std::st
         discard(ready);
         throw;
     }
+}
+
+struct streamed_file::state {
+    prepared_file file;
+    int fd = -1;
+    struct stat st {};
+    bool exists = false;
+};
+
+streamed_file::streamed_file(const std::filesystem::path& path) : state_(std::make_unique<state>()) {
+    state_->file = open_for(path, state_->fd, state_->st, state_->exists);
+}
+
+streamed_file::~streamed_file() {
+    if (state_->fd >= 0) ::close(state_->fd);
+    if (!state_->file.temp.empty()) ::unlink(state_->file.temp.c_str());
+}
+
+void streamed_file::write(std::string_view bytes) {
+    if (state_->fd < 0) throw std::logic_error("file already committed");
+    if (const int e = write_all(state_->fd, bytes)) {
+        const int fd = std::exchange(state_->fd, -1);
+        give_up(state_->file, fd, e);
+    }
+}
+
+void streamed_file::commit() {
+    if (state_->fd < 0) throw std::logic_error("file already committed");
+    const int fd = std::exchange(state_->fd, -1);
+    close_written(state_->file, fd, state_->st, state_->exists);
+    plot::commit(state_->file);
 }
 
 }  // namespace plot

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -22,6 +23,8 @@
 using namespace pendulum;
 using std::numbers::pi;
 using test_support::run_cli;
+using test_support::slurp;
+namespace fs = std::filesystem;
 
 TEST(Angle, ParsesWhatPhysicistsType) {
     EXPECT_EQ(pendulum::parse_angle("1.2"), 1.2);
@@ -71,6 +74,37 @@ TEST(Table, CsvAndJsonRoundTrip) {
     cli::write_table(json, t, cli::table_format::json);
     EXPECT_EQ(json.str(), "[\n {\"x\": 0.1, \"y\": 0.3333333333333333},\n {\"x\": 1e-300, \"y\": -2.5}\n]\n");
     EXPECT_THROW(cli::parse_table_format("xml"), std::invalid_argument);
+}
+
+TEST(Table, LongTablesAsEachNumberAlone) {
+    // Rows are gathered and written in blocks: the text is that of each number formatted on
+    // its own (format_double), past many blocks, and a row needs no flush to be complete.
+    std::ostringstream csv;
+    std::string expected = "a,b\n";
+    {
+        cli::table_writer w(csv, {"a", "b"}, cli::table_format::csv);
+        for (int i = 0; i < 20000; ++i) {
+            const double a = std::ldexp(1.0 + i / 7.0, i % 600 - 300);
+            const double b = i % 97 == 0 ? std::nan("") : -1.0 / (i + 1);
+            w.row({a, b});
+            expected += pendulum::format_double(a) + "," + (std::isnan(b) ? "" : pendulum::format_double(b)) + "\n";
+        }
+        w.finish();
+    }
+    EXPECT_GT(csv.str().size(), 300000u);
+    EXPECT_TRUE(csv.str() == expected);
+}
+
+TEST(Cli, TablesAreTheTextTheyWere) {
+    // eval and trajectory write numbers straight into a buffer; the text is the one the
+    // streams wrote (tests/data/tables, written before), breakdowns near pi included.
+    const fs::path data = fs::path(PENDULUM_TEST_DATA) / "tables";
+    const std::string eval = "eval --theta0 'pi/3,1e-3,pi/2,9pi/10,pi-1e-6,0.3' --order 6,8 --method agm:2,kidd-fogg --length 0.5";
+    EXPECT_EQ(run_cli(eval).out, slurp(data / "eval.csv"));
+    EXPECT_EQ(run_cli(eval + " --format json").out, slurp(data / "eval.json"));
+    const std::string trajectory = "trajectory --theta0 170deg --samples 50 --periods 2";
+    EXPECT_EQ(run_cli(trajectory).out, slurp(data / "trajectory.csv"));
+    EXPECT_EQ(run_cli(trajectory + " --format json").out, slurp(data / "trajectory.json"));
 }
 
 namespace {

@@ -90,7 +90,10 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         for (const auto& m : methods) row.push_back(m.row->role == method_role::iterated ? level_period(m.n) : method_period(m, value));
         if (o.length) row.push_back(small_period_s * point.exact.period_ratio());
         writer.row(row);
-        if (!broken.empty()) warn_breakdown(value, broken);
+        if (!broken.empty()) {
+            writer.flush();  // the warning follows its row
+            warn_breakdown(value, broken);
+        }
     }
     writer.finish();
 }

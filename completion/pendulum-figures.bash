@@ -57,11 +57,11 @@ _pendulum_figures() {
         --separatrix) COMPREPLY=($(compgen -W "true false" -- "$cur")); return ;;
         --legend) COMPREPLY=($(compgen -W "each first none" -- "$cur")); return ;;
         --harmonics|--orders|--trail|--y-range|--x-label|--y-label|--panel-title|--title|--size) return ;;
-        --theta0|--at|--order|--dpi|--samples|--periods|--range|--frames|--name|--harmonic|--length|--g|--tex-font-size|--jobs) return ;;
+        --theta0|--at|--order|--dpi|--samples|--periods|--range|--frames|--name|--harmonic|--length|--g|--tex-font-size|--jobs|--columns) return ;;
     esac
     local options=""
     case $command in
-        eval) options="--theta0 --order --method --length --g --format --help --help-all" ;;
+        eval) options="--theta0 --order --method --length --g --format --columns --help --help-all" ;;
         trajectory) options="--theta0 --method --order --at --samples --periods --format --help --help-all" ;;
         claims) options="--format --help --help-all" ;;
         list) options="--markdown --help --help-all" ;;

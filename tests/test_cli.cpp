@@ -107,6 +107,33 @@ TEST(Cli, TablesAreTheTextTheyWere) {
     EXPECT_EQ(run_cli(trajectory + " --format json").out, slurp(data / "trajectory.json"));
 }
 
+TEST(Cli, EvalColumnsWritesOnlyThose) {
+    // --columns keeps the columns asked for, in the table's order, with the values of the
+    // whole table; T_s needs --length, and an unknown column is bad input.
+    const std::string amplitudes = "eval --theta0 'pi/3,1e-3,pi-1e-6' --length 0.5 --order 6";
+    const auto all = run_cli(amplitudes);
+    ASSERT_EQ(all.status, 0);
+    std::string expected;
+    std::istringstream in(all.out);
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> fields;
+        std::istringstream cells(line);
+        for (std::string f; std::getline(cells, f, ',');) fields.push_back(f);
+        if (line.back() == ',') fields.emplace_back();
+        // period_exact, c3_first, then period_order6 and T_s, the last two.
+        expected += fields[1] + "," + fields[10] + "," + fields[fields.size() - 2] + "," + fields.back() + "\n";
+    }
+    const auto some = run_cli(amplitudes + " --columns T_s,c3_first,period_exact");
+    EXPECT_EQ(some.status, 0);
+    EXPECT_EQ(some.out, expected);
+    auto r = run_cli("eval --theta0 1 --columns period_exact,bogus");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("unknown column 'bogus'; the columns are theta0, period_exact"), std::string::npos) << r.err;
+    r = run_cli("eval --theta0 1 --columns T_s");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("needs --length"), std::string::npos) << r.err;
+}
+
 namespace {
 
 std::vector<std::string> lines(const std::string& s) {

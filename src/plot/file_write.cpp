@@ -8,11 +8,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <ctime>
 #include <stdexcept>
 #include <string>
@@ -105,6 +108,8 @@ void remove_stale_temporaries(const fs::path& dir, const fs::path& target) {
     ::closedir(d);
 }
 
+}  // namespace
+
 /// A file written under a temporary name and on disk, waiting to take its name; or a
 /// device, FIFO or socket, written through in place.
 struct prepared_file {
@@ -112,6 +117,8 @@ struct prepared_file {
     fs::path target;  ///< what the path leads to
     std::string temp; ///< the temporary's name; empty when written in place
 };
+
+namespace {
 
 /// Opens the file `path` leads to for writing: a temporary beside it, or a device, FIFO or
 /// socket itself (written through, in place, never replaced). fd is the open descriptor.
@@ -141,8 +148,11 @@ prepared_file open_for(const fs::path& path, int& fd, struct stat& st, bool& exi
     fail(f.path, e);
 }
 
+/// The batch that defers the syncing and renaming of this process's files, if one is open.
+std::atomic<durable_batch*> open_batch{nullptr};
+
 /// Ends the writing of fd: a temporary gets the mode (and owner) of the file it replaces
-/// and is on disk, closed; a device is closed.
+/// and is on disk (unless a batch syncs it later), closed; a device is closed.
 void close_written(prepared_file& f, int fd, const struct stat& st, bool exists) {
     if (f.temp.empty()) {
         if (::close(fd) != 0) fail(f.path, errno);
@@ -159,8 +169,9 @@ void close_written(prepared_file& f, int fd, const struct stat& st, bool exists)
     if (exists && (st.st_uid != ::geteuid() || st.st_gid != ::getegid())) {
         if (::fchown(fd, st.st_uid, st.st_gid) != 0 && errno != EPERM) give_up(f, fd, errno);
     }
-    // On disk before it takes the name: a crash leaves the old file or the new one.
-    if (::fsync(fd) != 0) give_up(f, fd, errno);
+    // On disk before it takes the name: a crash leaves the old file or the new one. In a
+    // batch, every temporary is put on disk at once, before the first rename.
+    if (!open_batch.load() && ::fsync(fd) != 0) give_up(f, fd, errno);
     if (::close(fd) != 0) {
         const int e = errno;
         ::unlink(f.temp.c_str());
@@ -204,6 +215,7 @@ void discard(std::vector<prepared_file>& files) {
 
 void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
     prepared_file f = prepare(path, bytes);
+    if (durable_batch* batch = open_batch.load()) return batch->defer(std::move(f));
     commit(f);
 }
 
@@ -213,6 +225,10 @@ void write_atomically(const std::vector<std::pair<std::filesystem::path, std::st
     std::vector<prepared_file> ready;
     try {
         for (const auto& [path, bytes] : files) ready.push_back(prepare(path, bytes));
+        if (durable_batch* batch = open_batch.load()) {
+            for (auto& f : ready) batch->defer(std::move(f));  // renamed in this order too
+            return;
+        }
         for (auto& f : ready) commit(f);
     } catch (...) {
         discard(ready);
@@ -248,7 +264,57 @@ void streamed_file::commit() {
     if (state_->fd < 0) throw std::logic_error("file already committed");
     const int fd = std::exchange(state_->fd, -1);
     close_written(state_->file, fd, state_->st, state_->exists);
+    if (durable_batch* batch = open_batch.load()) return batch->defer(std::exchange(state_->file, {}));
     plot::commit(state_->file);
+}
+
+struct durable_batch::state {
+    std::mutex mutex;
+    std::vector<prepared_file> files;  // in the order they were finished
+};
+
+durable_batch::durable_batch() : state_(std::make_unique<state>()) {
+    durable_batch* none = nullptr;
+    if (!open_batch.compare_exchange_strong(none, this)) throw std::logic_error("a durable_batch is open already");
+}
+
+durable_batch::~durable_batch() {
+    open_batch.store(nullptr);
+    discard(state_->files);
+}
+
+void durable_batch::defer(prepared_file&& f) {
+    if (f.temp.empty()) return;  // a device, written through
+    std::lock_guard lock(state_->mutex);
+    state_->files.push_back(std::move(f));
+}
+
+void durable_batch::commit() {
+    open_batch.store(nullptr);
+    std::vector<prepared_file> files;
+    {
+        std::lock_guard lock(state_->mutex);
+        files.swap(state_->files);
+    }
+    try {
+        // One syncfs per directory's file system puts every temporary on disk together.
+        std::vector<fs::path> synced;
+        for (const auto& f : files) {
+            const fs::path dir = fs::path(f.temp).parent_path();
+            if (std::find(synced.begin(), synced.end(), dir) != synced.end()) continue;
+            const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+            if (fd < 0) fail(f.path, errno);
+            const int status = ::syncfs(fd);
+            const int e = errno;
+            ::close(fd);
+            if (status != 0) fail(f.path, e);
+            synced.push_back(dir);
+        }
+        for (auto& f : files) plot::commit(f);
+    } catch (...) {
+        discard(files);
+        throw;
+    }
 }
 
 }  // namespace plot

@@ -13,6 +13,8 @@
 
 BUILD ?= build
 JOBS ?= 2
+# Rounds of bench/compare.sh, each running every row's two commands in turn.
+BENCH_ROUNDS ?= 5
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 # Continuous integration (CI=true in the environment of .ci/run) builds with -Werror.
 ifneq ($(CI),)
@@ -50,6 +52,8 @@ DEB_PACKAGES += fontconfig
 # The paper's class (revtex4), and librsvg's SVG reader: the figures as the paper and other
 # readers show them.
 DEB_PACKAGES += texlive-publishers librsvg2-bin
+# make bench: the tools it measures against, and callgrind.
+DEB_PACKAGES += python3-matplotlib python3-scipy python3-pil gnuplot-nox valgrind
 
 .PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz clean
 
@@ -96,8 +100,7 @@ check-sanitizers: deps
 bench: build
 	$(BUILD)/bench_pendulum --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
 	  --benchmark_min_time=0.2
-	bench/time_render.sh $(BUILD)/pendulum-figures 11
-	bench/time_animation.sh $(BUILD)/pendulum-figures 3
+	bench/compare.sh $(BUILD)/pendulum-figures $(BENCH_ROUNDS)
 
 figures: build
 	mkdir -p figures

@@ -3,7 +3,8 @@
 """The same work as `pendulum-figures render --all -f png,pdf --dpi 300`, done the usual
 way with numpy, scipy and matplotlib: the yardstick for `make bench`.
 
-Usage: matplotlib_catalog.py OUTDIR
+Usage: matplotlib_catalog.py OUTDIR [--paper]
+  --paper: only the paper's seven figures (Fig. 1 to 7)
 Needs: python3-matplotlib, python3-scipy (Debian).
 """
 import sys
@@ -108,7 +109,7 @@ def save(fig, out, name):
     plt.close(fig)
 
 
-def main(out):
+def main(out, paper_only=False):
     out.mkdir(parents=True, exist_ok=True)
     harmonic = lambda t: (1.0, [t])
 
@@ -150,6 +151,8 @@ def main(out):
     b.set_ylim(-20, 2)
     a.legend(frameon=False)
     save(fig, out, "period")
+    if paper_only:
+        return
 
     fig, ax = plt.subplots(figsize=(8 * CM, 5.6 * CM))
     for t in [PI / 2, 3 * PI / 4, 9 * PI / 10, 0.95 * PI, 0.99 * PI]:
@@ -160,4 +163,5 @@ def main(out):
 
 
 if __name__ == "__main__":
-    main(Path(sys.argv[1] if len(sys.argv) > 1 else "matplotlib-figures"))
+    args = [a for a in sys.argv[1:] if a != "--paper"]
+    main(Path(args[0] if args else "matplotlib-figures"), "--paper" in sys.argv[1:])

@@ -4,9 +4,11 @@
 #include "figures/animation.hpp"
 #include "figures/catalog.hpp"
 #include "pendulum/exact.hpp"
+#include "plot/workers.hpp"
 #include "process.hpp"
 
 #include <gif_lib.h>
+#include <sched.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <set>
 #include <string>
@@ -140,6 +143,63 @@ TEST(Animation, BeamerPlaysThePdf) {
     EXPECT_EQ(r.status, 0) << r.out.substr(r.out.size() > 2000 ? r.out.size() - 2000 : 0);
     EXPECT_TRUE(fs::exists(dir / "talk.pdf"));
     fs::remove_all(dir);
+}
+
+TEST(Animation, SameBytesForAnyNumberOfJobs) {
+    // The GIF is encoded in parts, as many as the workers keep busy: the parts join into the
+    // bytes of one encoder whatever their number. So do the PNG frames and still figures.
+    std::map<std::string, std::string> first;
+    for (const std::string jobs : {"--jobs 1", "--jobs 2", "--jobs 7", "", "--jobs 3"}) {
+        const auto dir = temp_dir("animation-jobs");
+        const std::string env = jobs.empty() ? "PENDULUM_FIGURES_JOBS=2 " : "";
+        auto r = run_command("cd '" + dir.string() + "' && " + env + "'" + PENDULUM_EXE + "' render swing --theme slides " +
+                             "-f gif,png --frames 3..40 --dpi 16 " + jobs + " && '" + PENDULUM_EXE +
+                             "' render fig7 fig2 -f png,pdf --dpi 30 " + jobs);
+        ASSERT_EQ(r.status, 0) << jobs << ": " << r.err;
+        std::map<std::string, std::string> files;
+        for (const auto& name : files_in(dir)) files[name] = slurp(dir / name);
+        EXPECT_EQ(files.size(), 38u + 1 + 4) << jobs;
+        if (first.empty()) {
+            first = files;
+        } else {
+            EXPECT_TRUE(files == first) << jobs << " wrote other bytes than --jobs 1";
+        }
+        fs::remove_all(dir);
+    }
+    EXPECT_EQ(read_gif(first["swing.gif"]).frames, 38);
+    for (const std::string bad : {"--jobs 0", "--jobs 1025", "--jobs x"}) {
+        const auto r = run_cli("render swing -f gif --frames 1..2 --dpi 16 -o /nonexistent " + bad);
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_NE(r.err.find("--jobs"), std::string::npos) << r.err;
+    }
+    const auto r = run_command("PENDULUM_FIGURES_JOBS=two '" + std::string(PENDULUM_EXE) + "' plot period --methods exact -o /tmp");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("PENDULUM_FIGURES_JOBS='two': the number of workers"), std::string::npos) << r.err;
+}
+
+TEST(Workers, OnePerCpuOfTheAffinityMask) {
+    // What taskset -c 0 does to the program: only CPU 0 is allowed, so one worker.
+    cpu_set_t saved;
+    ASSERT_EQ(sched_getaffinity(0, sizeof saved, &saved), 0);
+    EXPECT_EQ(plot::usable_cpus(), static_cast<unsigned>(CPU_COUNT(&saved)));
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu) {
+        if (CPU_ISSET(cpu, &saved)) {
+            CPU_SET(cpu, &one);
+            break;
+        }
+    }
+    ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+    const unsigned narrowed = plot::usable_cpus();
+    const unsigned workers = plot::worker_count(0, 100);
+    ASSERT_EQ(sched_setaffinity(0, sizeof saved, &saved), 0);
+    EXPECT_EQ(narrowed, 1u);
+    EXPECT_EQ(workers, 1u);
+    // --jobs wins over the mask, and there are never more workers than tasks.
+    EXPECT_EQ(plot::worker_count(5, 100), 5u);
+    EXPECT_EQ(plot::worker_count(5, 3), 3u);
+    EXPECT_EQ(plot::worker_count(0, 0), 1u);
 }
 
 TEST(Animation, BadInputIsExit2AndWritesNothing) {

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -22,6 +23,8 @@
 using namespace pendulum;
 using std::numbers::pi;
 using test_support::run_cli;
+using test_support::slurp;
+namespace fs = std::filesystem;
 
 TEST(Angle, ParsesWhatPhysicistsType) {
     EXPECT_EQ(pendulum::parse_angle("1.2"), 1.2);
@@ -71,6 +74,64 @@ TEST(Table, CsvAndJsonRoundTrip) {
     cli::write_table(json, t, cli::table_format::json);
     EXPECT_EQ(json.str(), "[\n {\"x\": 0.1, \"y\": 0.3333333333333333},\n {\"x\": 1e-300, \"y\": -2.5}\n]\n");
     EXPECT_THROW(cli::parse_table_format("xml"), std::invalid_argument);
+}
+
+TEST(Table, LongTablesAsEachNumberAlone) {
+    // Rows are gathered and written in blocks: the text is that of each number formatted on
+    // its own (format_double), past many blocks, and a row needs no flush to be complete.
+    std::ostringstream csv;
+    std::string expected = "a,b\n";
+    {
+        cli::table_writer w(csv, {"a", "b"}, cli::table_format::csv);
+        for (int i = 0; i < 20000; ++i) {
+            const double a = std::ldexp(1.0 + i / 7.0, i % 600 - 300);
+            const double b = i % 97 == 0 ? std::nan("") : -1.0 / (i + 1);
+            w.row({a, b});
+            expected += pendulum::format_double(a) + "," + (std::isnan(b) ? "" : pendulum::format_double(b)) + "\n";
+        }
+        w.finish();
+    }
+    EXPECT_GT(csv.str().size(), 300000u);
+    EXPECT_TRUE(csv.str() == expected);
+}
+
+TEST(Cli, TablesAreTheTextTheyWere) {
+    // eval and trajectory write numbers straight into a buffer; the text is the one the
+    // streams wrote (tests/data/tables, written before), breakdowns near pi included.
+    const fs::path data = fs::path(PENDULUM_TEST_DATA) / "tables";
+    const std::string eval = "eval --theta0 'pi/3,1e-3,pi/2,9pi/10,pi-1e-6,0.3' --order 6,8 --method agm:2,kidd-fogg --length 0.5";
+    EXPECT_EQ(run_cli(eval).out, slurp(data / "eval.csv"));
+    EXPECT_EQ(run_cli(eval + " --format json").out, slurp(data / "eval.json"));
+    const std::string trajectory = "trajectory --theta0 170deg --samples 50 --periods 2";
+    EXPECT_EQ(run_cli(trajectory).out, slurp(data / "trajectory.csv"));
+    EXPECT_EQ(run_cli(trajectory + " --format json").out, slurp(data / "trajectory.json"));
+}
+
+TEST(Cli, EvalColumnsWritesOnlyThose) {
+    // --columns keeps the columns asked for, in the table's order, with the values of the
+    // whole table; T_s needs --length, and an unknown column is bad input.
+    const std::string amplitudes = "eval --theta0 'pi/3,1e-3,pi-1e-6' --length 0.5 --order 6";
+    const auto all = run_cli(amplitudes);
+    ASSERT_EQ(all.status, 0);
+    std::string expected;
+    std::istringstream in(all.out);
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> fields;
+        std::istringstream cells(line);
+        for (std::string f; std::getline(cells, f, ',');) fields.push_back(f);
+        if (line.back() == ',') fields.emplace_back();
+        // period_exact, c3_first, then period_order6 and T_s, the last two.
+        expected += fields[1] + "," + fields[10] + "," + fields[fields.size() - 2] + "," + fields.back() + "\n";
+    }
+    const auto some = run_cli(amplitudes + " --columns T_s,c3_first,period_exact");
+    EXPECT_EQ(some.status, 0);
+    EXPECT_EQ(some.out, expected);
+    auto r = run_cli("eval --theta0 1 --columns period_exact,bogus");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("unknown column 'bogus'; the columns are theta0, period_exact"), std::string::npos) << r.err;
+    r = run_cli("eval --theta0 1 --columns T_s");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("needs --length"), std::string::npos) << r.err;
 }
 
 namespace {

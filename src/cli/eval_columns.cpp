@@ -5,34 +5,34 @@
 
 namespace pendulum::cli {
 
-eval_point::eval_point(const amplitude& t)
-    : theta0(t.radians()),
-      exact(t),
-      lowest(lowest_order(t)),
-      first(first_order(t)),
-      second(second_order(t)),
-      polynomial(pendulum::polynomial(t)) {}
+eval_point::eval_point(const amplitude& t, unsigned needs) : theta0(t.radians()) {
+    if (needs & need_exact) exact.emplace(t);
+    if (needs & need_lowest) lowest.emplace(lowest_order(t));
+    if (needs & need_first) first.emplace(first_order(t));
+    if (needs & need_second) second.emplace(second_order(t));
+    if (needs & need_polynomial) polynomial.emplace(pendulum::polynomial(t));
+}
 
 namespace {
 
 constexpr std::array<eval_column, 17> columns = {{
-    {"theta0", "the amplitude in radians", [](const eval_point& p) { return p.theta0; }},
-    {"period_exact", "T/T0, exact", [](const eval_point& p) { return p.exact.period_ratio(); }},
-    {"period_lowest", "T/T0, lowest order", [](const eval_point& p) { return p.lowest.period_ratio(); }},
-    {"period_first", "T/T0, first order", [](const eval_point& p) { return p.first.period_ratio(); }},
-    {"period_second", "T/T0, second order", [](const eval_point& p) { return p.second.period_ratio(); }},
-    {"c1_exact", "c1, exact", [](const eval_point& p) { return p.exact.coefficient(0); }},
-    {"c3_exact", "c3, exact", [](const eval_point& p) { return p.exact.coefficient(1); }},
-    {"c5_exact", "c5, exact", [](const eval_point& p) { return p.exact.coefficient(2); }},
-    {"c1_lowest", "c1, lowest order (= theta0)", [](const eval_point& p) { return p.lowest.coefficients[0]; }},
-    {"c1_first", "c1', first order", [](const eval_point& p) { return p.first.coefficients[0]; }},
-    {"c3_first", "c3', first order", [](const eval_point& p) { return p.first.coefficients[1]; }},
-    {"c1_second", "c1'', second order", [](const eval_point& p) { return p.second.coefficients[0]; }},
-    {"c3_second", "c3'', second order", [](const eval_point& p) { return p.second.coefficients[1]; }},
-    {"c5_second", "c5'', second order", [](const eval_point& p) { return p.second.coefficients[2]; }},
-    {"c1_poly", "c1, polynomial", [](const eval_point& p) { return p.polynomial.coefficients[0]; }},
-    {"c3_poly", "c3, polynomial", [](const eval_point& p) { return p.polynomial.coefficients[1]; }},
-    {"c5_poly", "c5, polynomial", [](const eval_point& p) { return p.polynomial.coefficients[2]; }},
+    {"theta0", "the amplitude in radians", 0, [](const eval_point& p) { return p.theta0; }},
+    {"period_exact", "T/T0, exact", need_exact, [](const eval_point& p) { return p.exact->period_ratio(); }},
+    {"period_lowest", "T/T0, lowest order", need_lowest, [](const eval_point& p) { return p.lowest->period_ratio(); }},
+    {"period_first", "T/T0, first order", need_first, [](const eval_point& p) { return p.first->period_ratio(); }},
+    {"period_second", "T/T0, second order", need_second, [](const eval_point& p) { return p.second->period_ratio(); }},
+    {"c1_exact", "c1, exact", need_exact, [](const eval_point& p) { return p.exact->coefficient(0); }},
+    {"c3_exact", "c3, exact", need_exact, [](const eval_point& p) { return p.exact->coefficient(1); }},
+    {"c5_exact", "c5, exact", need_exact, [](const eval_point& p) { return p.exact->coefficient(2); }},
+    {"c1_lowest", "c1, lowest order (= theta0)", need_lowest, [](const eval_point& p) { return p.lowest->coefficients[0]; }},
+    {"c1_first", "c1', first order", need_first, [](const eval_point& p) { return p.first->coefficients[0]; }},
+    {"c3_first", "c3', first order", need_first, [](const eval_point& p) { return p.first->coefficients[1]; }},
+    {"c1_second", "c1'', second order", need_second, [](const eval_point& p) { return p.second->coefficients[0]; }},
+    {"c3_second", "c3'', second order", need_second, [](const eval_point& p) { return p.second->coefficients[1]; }},
+    {"c5_second", "c5'', second order", need_second, [](const eval_point& p) { return p.second->coefficients[2]; }},
+    {"c1_poly", "c1, polynomial", need_polynomial, [](const eval_point& p) { return p.polynomial->coefficients[0]; }},
+    {"c3_poly", "c3, polynomial", need_polynomial, [](const eval_point& p) { return p.polynomial->coefficients[1]; }},
+    {"c5_poly", "c5, polynomial", need_polynomial, [](const eval_point& p) { return p.polynomial->coefficients[2]; }},
 }};
 
 }  // namespace

@@ -4,28 +4,39 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 
 namespace pendulum::cli {
 
-/// Everything eval computes once per amplitude.
+/// The solutions a column of eval reads, as flags: only those asked for are computed.
+enum eval_need : unsigned {
+    need_exact = 1,        ///< the exact solution
+    need_lowest = 2,       ///< lowest order
+    need_first = 4,        ///< first order
+    need_second = 8,       ///< second order
+    need_polynomial = 16,  ///< polynomial approximant
+};
+
+/// Everything eval computes once per amplitude: the solutions `needs` names (eval_need flags).
 struct eval_point {
-    /// Solves every method at theta0.
-    explicit eval_point(const amplitude& theta0);
-    double theta0;                ///< the amplitude
-    exact_solution exact;         ///< the exact solution
-    fourier_solution lowest;      ///< lowest order
-    fourier_solution first;       ///< first order
-    fourier_solution second;      ///< second order
-    fourier_solution polynomial;  ///< polynomial approximant
+    /// Solves the methods of `needs` at theta0.
+    eval_point(const amplitude& theta0, unsigned needs);
+    double theta0;                               ///< the amplitude
+    std::optional<exact_solution> exact;         ///< the exact solution
+    std::optional<fourier_solution> lowest;      ///< lowest order
+    std::optional<fourier_solution> first;       ///< first order
+    std::optional<fourier_solution> second;      ///< second order
+    std::optional<fourier_solution> polynomial;  ///< polynomial approximant
 };
 
 /// One fixed column of eval's table.
 struct eval_column {
     std::string_view name;                  ///< CSV header and JSON key
     std::string_view description;           ///< for --help
+    unsigned needs;                         ///< the solutions it reads (eval_need flags)
     double (*value)(const eval_point& p);   ///< the value at an amplitude
 };
 

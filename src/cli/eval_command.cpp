@@ -16,6 +16,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace pendulum::cli {
@@ -38,7 +40,39 @@ struct eval_options {
     std::string format = "csv";
     std::optional<double> length;  // metres: adds the period in seconds
     double g = 9.80665;
+    std::string columns;            // only these columns (fixed ones and T_s); empty: every fixed column
 };
+
+/// The name of the column of the period in seconds (--length).
+constexpr std::string_view seconds_column = "T_s";
+
+/// The fixed columns --columns keeps, in the table's order, and whether it keeps T_s; every
+/// fixed column (and T_s with --length) without it. An unknown name is bad input.
+std::pair<std::vector<const eval_column*>, bool> chosen_columns(const eval_options& o) {
+    std::vector<const eval_column*> fixed;
+    if (o.columns.empty()) {
+        for (const auto& c : eval_columns()) fixed.push_back(&c);
+        return {fixed, o.length.has_value()};
+    }
+    const auto names = split_list(o.columns);
+    bool seconds = false;
+    for (const auto& name : names) {
+        const bool known = name == seconds_column ||
+                           std::any_of(eval_columns().begin(), eval_columns().end(), [&](const eval_column& c) { return c.name == name; });
+        if (!known) {
+            std::string all;
+            for (const auto& c : eval_columns()) all += std::string(c.name) + ", ";
+            throw usage_error("--columns: unknown column '" + shown_text(name) + "'; the columns are " + all +
+                              std::string(seconds_column));
+        }
+        seconds = seconds || name == seconds_column;
+    }
+    for (const auto& c : eval_columns()) {
+        if (std::find(names.begin(), names.end(), c.name) != names.end()) fixed.push_back(&c);
+    }
+    if (seconds && !o.length) throw usage_error("--columns T_s: the period in seconds needs --length");
+    return {fixed, seconds};
+}
 
 /// Writes eval's table row by row: every input is checked first (nothing is written for
 /// bad input), then each amplitude's row goes out as it is computed.
@@ -54,8 +88,12 @@ void eval_stream(std::ostream& out, const eval_options& o) {
             methods.push_back(m);
         }
     }
+    const auto [fixed, seconds] = chosen_columns(o);
+    // Only the solutions the chosen columns read are computed.
+    unsigned needs = seconds ? need_exact : 0;
+    for (const auto* c : fixed) needs |= c->needs;
     std::vector<std::string> columns;
-    for (const auto& c : eval_columns()) columns.emplace_back(c.name);
+    for (const auto* c : fixed) columns.emplace_back(c->name);
     for (int n : orders) columns.push_back("period_order" + std::to_string(n));
     for (const auto& m : methods) columns.push_back("period_" + m.text());
     double small_period_s = 0;
@@ -65,7 +103,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         }
         if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
         small_period_s = 2 * std::acos(-1.0) * std::sqrt(*o.length / o.g);
-        columns.push_back("T_s");
+        if (seconds) columns.emplace_back(seconds_column);
     }
     // The iteration is computed once per amplitude, to the highest level asked for, and
     // every --order and --method order:N column is read off that one sequence.
@@ -75,8 +113,9 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         if (m.row->role == method_role::iterated) highest = std::max(highest, m.n);
     }
     table_writer writer(out, columns, format);
+    std::vector<double> row;
     for (const auto& value : amplitudes) {
-        const eval_point point(value);
+        const eval_point point(value, needs);
         const auto levels = highest >= 0 ? iterated_sequence(value, highest) : std::vector<fourier_solution>{};
         std::vector<int> broken;
         const auto level_period = [&](int n) {
@@ -84,13 +123,16 @@ void eval_stream(std::ostream& out, const eval_options& o) {
             if (!level.exists() && std::find(broken.begin(), broken.end(), n) == broken.end()) broken.push_back(n);
             return level.period_ratio();
         };
-        std::vector<double> row;
-        for (const auto& c : eval_columns()) row.push_back(c.value(point));
+        row.clear();
+        for (const auto* c : fixed) row.push_back(c->value(point));
         for (int n : orders) row.push_back(level_period(n));
         for (const auto& m : methods) row.push_back(m.row->role == method_role::iterated ? level_period(m.n) : method_period(m, value));
-        if (o.length) row.push_back(small_period_s * point.exact.period_ratio());
+        if (seconds) row.push_back(small_period_s * point.exact->period_ratio());
         writer.row(row);
-        if (!broken.empty()) warn_breakdown(value, broken);
+        if (!broken.empty()) {
+            writer.flush();  // the warning follows its row
+            warn_breakdown(value, broken);
+        }
     }
     writer.finish();
 }
@@ -119,6 +161,11 @@ command add_eval_command(CLI::App& app) {
     cmd->add_option("--g", ev->g, "Gravity in m/s^2 for --length (default 9.80665)")->type_name("G");
     cmd->add_option("--format", ev->format, "Output format: csv (default) or json")
         ->type_name("csv|json");
+    cmd->add_option("--columns", ev->columns,
+                     "Only these columns, a comma-separated LIST of the columns below and T_s (with --length), "
+                     "written in the table's order; only what they need is computed. --order and --method "
+                     "columns follow them")
+        ->type_name("LIST")->check(non_empty);
     cmd->footer(std::string("\n") + angle_help + "\n\nColumns: " + cli::eval_columns_help() +
                  "; then period_orderN for each --order N, period_NAME for each --method NAME, and T_s with "
                  "--length. Periods are T/T0. Numbers round-trip a double.\n\n"
@@ -130,7 +177,8 @@ command add_eval_command(CLI::App& app) {
                  "  pendulum-figures eval --theta0 'pi/2,9pi/10' --order 12\n"
                  "  pendulum-figures eval --theta0 0.99pi --order 0..40\n"
                  "  pendulum-figures eval --theta0 170deg --method kidd-fogg,lima-arun,ganley,agm:2\n"
-                 "  pendulum-figures eval --theta0 170deg --length 0.5");
+                 "  pendulum-figures eval --theta0 170deg --length 0.5\n"
+                 "  pendulum-figures eval --theta0 170deg --length 0.5 --columns period_exact,T_s");
 
     return {cmd, [ev] {
                 eval_stream(std::cout, *ev);

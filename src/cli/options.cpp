@@ -4,6 +4,7 @@
 #include "figures/themes.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <unistd.h>
 
@@ -15,6 +16,33 @@ const char* const angle_help =
 
 const CLI::Validator non_empty(
     [](std::string& value) { return value.empty() ? std::string("empty value") : std::string(); }, "", "NON-EMPTY");
+
+const char* const jobs_help =
+    "Worker threads, 1..1024 (default: PENDULUM_FIGURES_JOBS, else one per CPU this process may use, "
+    "as taskset and cpusets allow); the files are the same for any number";
+
+unsigned chosen_jobs(const std::optional<int>& given) {
+    const auto check = [](long long n, const std::string& what) {
+        if (n < 1 || n > max_jobs) {
+            throw usage_error(what + ": the number of workers, 1 to " + std::to_string(max_jobs));
+        }
+        return static_cast<unsigned>(n);
+    };
+    if (given) return check(*given, "--jobs " + std::to_string(*given));
+    const char* text = std::getenv(jobs_variable);
+    if (!text || !*text) return 0;
+    const std::string value = text;
+    std::size_t used = 0;
+    long long n = 0;
+    try {
+        n = std::stoll(value, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    const std::string what = std::string(jobs_variable) + "='" + shown_text(value) + "'";
+    if (used != value.size()) check(0, what);
+    return check(n, what);
+}
 
 std::vector<pendulum::amplitude> parse_amplitude_values(const std::string& given) {
     std::vector<pendulum::amplitude> values;

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -113,6 +114,19 @@ std::vector<std::string> list_items(const std::vector<std::string>& values);
 
 /// The theme of --theme and --set; a bad style file is bad input.
 plot::theme chosen_theme(const std::string& name, const std::vector<std::string>& sets);
+
+/// The environment variable that gives --jobs when the option is not given (for builds).
+inline constexpr const char* jobs_variable = "PENDULUM_FIGURES_JOBS";
+
+/// The help of --jobs.
+extern const char* const jobs_help;
+
+/// The largest accepted --jobs.
+inline constexpr int max_jobs = 1024;
+
+/// The workers --jobs asks for, or PENDULUM_FIGURES_JOBS when the option is not given; 0
+/// (one per CPU the process may use) when neither is. Bad input names the option or variable.
+unsigned chosen_jobs(const std::optional<int>& given);
 
 /// Checks that dir exists and can be written to, naming it otherwise.
 void check_output_dir(const std::string& dir);

@@ -69,6 +69,7 @@ struct plot_options {
     std::vector<std::string> sets;
     std::optional<double> dpi;
     std::string size;
+    std::optional<int> jobs;  // worker threads, as render takes them
 };
 
 /// A TOML string: the text in quotes, with backslashes and quotes escaped.
@@ -177,6 +178,7 @@ int run_plot(const plot_options& o) {
     r.sets = o.sets;
     r.dpi = o.dpi;
     r.size = o.size;
+    r.jobs = o.jobs;
     return render_figures({&e}, r);
 }
 
@@ -208,6 +210,7 @@ command add_plot_command(CLI::App& app) {
     cmd->add_option("--dpi", po->dpi, "Resolution of " + raster_formats() + " in dots per inch, 10..2400 (default: "
                                           "the theme's)")
         ->type_name("N");
+    cmd->add_option("--jobs", po->jobs, jobs_help)->type_name("N");
     cmd->footer(std::string("\n") + angle_help +
                      "\n\nThe same as a spec with one [[panel]] of these keys; 'show' prints specs to start from.\n\n"
                      "Examples:\n"

@@ -111,9 +111,10 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
         }
         build.amplitudes = parse_amplitudes(o.theta0, figures::max_amplitudes_per_panel);
     }
-    const figures::render_style style{theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes},
-                                      moving_theme,
-                                      plot::output_options{moving_dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes}};
+    const unsigned workers = chosen_jobs(o.jobs);
+    const figures::render_style style{
+        theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes, workers}, moving_theme,
+        plot::output_options{moving_dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes, workers}};
     if (o.dir == "-") {
         // One still figure in one format, to standard output.
         if (chosen.size() != 1 || formats.size() != 1 || o.paper_files || chosen.front()->spec.animation) {
@@ -210,6 +211,7 @@ command add_render_command(CLI::App& app) {
     }
     cmd->add_flag("--paper-files", ro->paper_files,
                      "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
+    cmd->add_option("--jobs", ro->jobs, jobs_help)->type_name("N");
     cmd->footer(std::string("\n") + angle_help +
                    "\n\nFiles are DIR/ID.EXT (or the paper's names with --paper-files). Each file is written "
                    "under a temporary name and renamed, so a failed run never leaves a partial figure. Set "

@@ -27,6 +27,7 @@ struct render_options {
     std::string at;      // t/T of one frame of an animation
     std::optional<double> tex_font_size;  // the document's font size, for pdf_tex and eps_tex
     std::string tex_sizes = "relative";  // how pdf_tex and eps_tex size their text
+    std::optional<int> jobs;              // worker threads; PENDULUM_FIGURES_JOBS or the usable CPUs when not given
 };
 
 /// Checks the options of `o` other than the ids and renders the chosen figures; returns the exit code.

@@ -4,6 +4,7 @@
 #include "cli/errors.hpp"
 #include "pendulum/amplitude.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -43,21 +44,30 @@ std::string json_quoted(const std::string& text) {
     return out + "\"";
 }
 
-/// A number as a field: a value that does not exist (the iteration's breakdown) is an empty
-/// CSV field or JSON null.
-std::string cell(double v, table_format format) {
-    if (std::isfinite(v)) return format_double(v);
-    return format == table_format::json ? "null" : "";
+/// Appends a number as a field: the shortest form that reads back to the same double; a
+/// value that does not exist (the iteration's breakdown) is an empty CSV field or JSON null.
+void append_cell(std::string& out, double v, table_format format) {
+    if (!std::isfinite(v)) {
+        if (format == table_format::json) out += "null";
+        return;
+    }
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+    out.append(buf, end);
 }
 
-std::string cell(const field& v, table_format format) {
+void append_cell(std::string& out, const field& v, table_format format) {
     if (const auto* text = std::get_if<std::string>(&v)) {
         // A text a spreadsheet would take for a formula gets a single quote before it.
         const bool formula = !text->empty() && std::string_view("=+-@\t\r").find(text->front()) != std::string_view::npos;
-        return format == table_format::csv ? csv_quoted(formula ? "'" + *text : *text) : json_quoted(*text);
+        out += format == table_format::csv ? csv_quoted(formula ? "'" + *text : *text) : json_quoted(*text);
+        return;
     }
-    return cell(std::get<double>(v), format);
+    append_cell(out, std::get<double>(v), format);
 }
+
+/// Rows are gathered into this many bytes before they go to the stream together.
+constexpr std::size_t flush_bytes = 1 << 16;
 
 }  // namespace
 
@@ -70,29 +80,42 @@ table_writer::table_writer(std::ostream& out, std::vector<std::string> columns, 
         for (const auto& c : columns) keys_.push_back(json_quoted(c) + ": ");
         out_ << "[";
     }
+    buffer_.reserve(flush_bytes + 4096);
 }
 
 template <class Value>
 void table_writer::write_row(const std::vector<Value>& values) {
     if (format_ == table_format::csv) {
-        for (std::size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << cell(values[i], format_);
-        out_ << '\n';
-    } else {
-        out_ << (rows_ ? ",\n " : "\n ") << "{";
-        for (std::size_t i = 0; i < keys_.size() && i < values.size(); ++i) {
-            out_ << (i ? ", " : "") << keys_[i] << cell(values[i], format_);
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (i) buffer_ += ',';
+            append_cell(buffer_, values[i], format_);
         }
-        out_ << "}";
+        buffer_ += '\n';
+    } else {
+        buffer_ += rows_ ? ",\n {" : "\n {";
+        for (std::size_t i = 0; i < keys_.size() && i < values.size(); ++i) {
+            if (i) buffer_ += ", ";
+            buffer_ += keys_[i];
+            append_cell(buffer_, values[i], format_);
+        }
+        buffer_ += '}';
     }
     ++rows_;
+    if (buffer_.size() >= flush_bytes) flush();
 }
 
 void table_writer::row(const std::vector<double>& values) { write_row(values); }
 
 void table_writer::record(const std::vector<field>& values) { write_row(values); }
 
+void table_writer::flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+}
+
 void table_writer::finish() {
-    if (format_ == table_format::json) out_ << (rows_ ? "\n]\n" : "]\n");
+    if (format_ == table_format::json) buffer_ += rows_ ? "\n]\n" : "]\n";
+    flush();
 }
 
 void write_table(std::ostream& out, const table& t, table_format format) {

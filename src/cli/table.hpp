@@ -24,7 +24,8 @@ table_format parse_table_format(std::string_view text);
 /// A field of a record: text or a number.
 using field = std::variant<std::string, double>;
 
-/// Writes a table row by row as it is computed, so that long tables need no memory. Numbers
+/// Writes a table row by row as it is computed, so that long tables need no memory (rows go
+/// out in blocks of 64 kB, and at finish()). Numbers
 /// use the shortest form that reads back to the same double, NaN an empty field / null;
 /// text is quoted as RFC 4180 asks (CSV) or escaped (JSON). A CSV text field that a
 /// spreadsheet would take for a formula (=, +, -, @, tab or CR first) gets a ' before it.
@@ -36,8 +37,10 @@ public:
     void row(const std::vector<double>& values);
     /// Writes one row of text and numbers, one per column.
     void record(const std::vector<field>& values);
-    /// Ends the table (JSON's closing bracket).
+    /// Ends the table (JSON's closing bracket) and writes what is gathered.
     void finish();
+    /// Writes the rows gathered so far to the stream.
+    void flush();
 
 private:
     template <class Value>
@@ -47,6 +50,7 @@ private:
     std::vector<std::string> keys_;  // JSON: each column's quoted name and ": "
     table_format format_;
     std::size_t rows_ = 0;
+    std::string buffer_;  // rows not yet written: numbers go straight into it (std::to_chars)
 };
 
 /// Writes the table: CSV with a header line, or JSON as an array of objects. Numbers use

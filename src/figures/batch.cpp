@@ -3,6 +3,7 @@
 
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
+#include "plot/workers.hpp"
 
 #include <algorithm>
 #include <condition_variable>
@@ -154,8 +155,7 @@ void write_figures(const std::vector<figure_file>& files, const build_options& o
             changed.notify_all();
         }
     };
-    const unsigned workers =
-        std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), static_cast<unsigned>(files.size())));
+    const unsigned workers = plot::worker_count(output.jobs, files.size());
     std::vector<std::thread> threads;
     for (unsigned i = 1; i < workers; ++i) threads.emplace_back(worker);
     worker();

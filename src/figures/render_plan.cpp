@@ -4,8 +4,10 @@
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
 #include "plot/frames.hpp"
+#include "plot/streamed_file.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <map>
 #include <stdexcept>
 
@@ -146,14 +148,12 @@ void check_frame_rates(const std::vector<animation_job>& animations, const std::
     }
 }
 
-void write_render(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
-                  const std::vector<std::string>& formats, const std::filesystem::path& dir,
-                  const build_options& build, const render_style& style, std::optional<double> at) {
-    check_distinct_outputs(stills, animations, formats, dir, at.has_value());
-    if (!at) {
-        check_frame_rates(animations, formats);
-        check_animation_work(animations, formats, build, style);
-    }
+namespace {
+
+/// write_render's files, each as it is finished.
+void write_files(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
+                 const std::vector<std::string>& formats, const std::filesystem::path& dir,
+                 const build_options& build, const render_style& style, std::optional<double> at) {
     if (!stills.empty()) write_figures(stills, build, style.still_theme, style.still);
     for (const auto& m : animations) {
         for (const auto& f : formats) {
@@ -170,6 +170,33 @@ void write_render(const std::vector<figure_file>& stills, const std::vector<anim
             plot::save(frame, style.moving_theme, dir / (m.figure->id + "." + f), style.moving);
         }
     }
+}
+
+}  // namespace
+
+void write_render(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
+                  const std::vector<std::string>& formats, const std::filesystem::path& dir,
+                  const build_options& build, const render_style& style, std::optional<double> at) {
+    check_distinct_outputs(stills, animations, formats, dir, at.has_value());
+    if (!at) {
+        check_frame_rates(animations, formats);
+        check_animation_work(animations, formats, build, style);
+    }
+    // The files are synced together and then renamed, when all are written; on a failure,
+    // those finished before it are kept, as they would have been one by one, and the
+    // failure is what is reported.
+    plot::durable_batch batch;
+    try {
+        write_files(stills, animations, formats, dir, build, style, at);
+    } catch (...) {
+        const auto error = std::current_exception();
+        try {
+            batch.commit();
+        } catch (...) {  // the first failure is the one to report
+        }
+        std::rethrow_exception(error);
+    }
+    batch.commit();
 }
 
 }  // namespace figures

@@ -3,6 +3,8 @@
 
 #include "plot/frames.hpp"
 #include "plot/gif.hpp"
+#include "plot/streamed_file.hpp"
+#include "plot/workers.hpp"
 
 #include <algorithm>
 #include <condition_variable>
@@ -19,11 +21,11 @@ namespace plot {
 
 namespace {
 
-/// Runs draw(i) for every frame i in [first, last] on all cores and hands the results to
-/// use(i, result) in order, holding at most a few results at a time.
+/// Runs draw(i) for every i in [first, last] on `jobs` workers (0: one per usable CPU) and
+/// hands the results to use(i, result) in order, holding at most a few results at a time.
 template <class Result, class Draw, class Use>
-void in_order(int first, int last, Draw draw, Use use) {
-    const unsigned workers = std::max(1u, std::thread::hardware_concurrency());
+void in_order(int first, int last, unsigned jobs, Draw draw, Use use) {
+    const unsigned workers = worker_count(jobs, static_cast<std::size_t>(last - first + 1));
     const int window = static_cast<int>(2 * workers);
     std::mutex mutex;
     std::condition_variable changed;
@@ -85,6 +87,14 @@ void in_order(int first, int last, Draw draw, Use use) {
     if (error) std::rethrow_exception(error);
 }
 
+/// Frames per part of a GIF encoded on its own: parts enough to keep every worker busy to
+/// the end, each costing one frame drawn twice (the one before it), and few enough pixels
+/// per part that a part's bytes stay small at any size.
+int frames_per_part(int count, unsigned workers, double pixels) {
+    const int most = std::max(4, static_cast<int>(32.0 * 1024 * 1024 / pixels));
+    return std::clamp(count / static_cast<int>(4 * workers), 1, most);
+}
+
 }  // namespace
 
 void write_gif_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
@@ -103,54 +113,45 @@ void write_gif_animation(const animation_frames& frames, const theme& th, const 
     const auto palette = gif_palette(inks, th.background, 16);
     // What stays is drawn once; each frame draws what moves over a copy of it.
     const argb_image still_image = render_argb(first_frame, th, dpi, draw_pass::still);
-    const auto draw = [&](int i) {
-        return render_argb(frames.frame(i), th, dpi, draw_pass::overlay, &still_image);
-    };
-    // Each core encodes a run of consecutive frames on its own (starting from the frame
-    // before its run); the runs join in order into one file.
+    // The frames are encoded in parts of consecutive frames, each part on its own from the
+    // frame before it (a frame stores what changed since that one, so the bytes are those of
+    // one encoder doing all), several parts at a time; finished parts go to the file in
+    // order, so memory stays the same at any length.
     const int count = last - first + 1;
-    const int runs = std::max(1, std::min(count, static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))));
-    std::vector<std::string> parts(static_cast<std::size_t>(runs));
-    std::string head;
-    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(runs));
-    std::vector<std::thread> threads;
-    for (int r = 0; r < runs; ++r) {
-        threads.emplace_back([&, r] {
-            try {
-                const int from = first + static_cast<int>(static_cast<long long>(count) * r / runs);
-                const int to = first + static_cast<int>(static_cast<long long>(count) * (r + 1) / runs) - 1;
-                gif_encoder gif(width, height, palette, frames.fps, from - first);
-                if (from > first) {
-                    const auto before = draw(from - 1);
-                    gif.prime(before.data.data(), before.stride);
-                }
-                for (int i = from; i <= to; ++i) {
-                    const auto image = draw(i);
-                    gif.add_frame(image.data.data(), image.stride);
-                }
-                const std::size_t head_size = gif.head_size();
-                auto [h, body] = gif_encoder::split(gif.finish(), head_size);
-                parts[static_cast<std::size_t>(r)] = std::move(body);
-                if (r == 0) head = std::move(h);
-            } catch (...) {
-                errors[static_cast<std::size_t>(r)] = std::current_exception();
-            }
-        });
-    }
-    for (auto& t : threads) t.join();
-    for (const auto& error : errors) {
-        if (error) std::rethrow_exception(error);
-    }
-    std::size_t size = head.size() + 1;
-    for (const auto& p : parts) size += p.size();
-    std::string bytes = std::move(head);
-    bytes.reserve(size);
-    for (auto& p : parts) {
-        bytes += p;
-        std::string().swap(p);  // each part's memory goes as soon as it is copied
-    }
-    bytes += ';';
-    write_atomically(dir / gif_animation_file(id, frames.first, frames.count), bytes);
+    const unsigned workers = worker_count(options.jobs, static_cast<std::size_t>(count));
+    const int part_frames = frames_per_part(count, workers, static_cast<double>(width) * height);
+    const int parts = (count + part_frames - 1) / part_frames;
+    streamed_file file(dir / gif_animation_file(id, frames.first, frames.count));
+    struct part {
+        std::string head;  // the file's head, kept from the first part only
+        std::string body;  // the part's frames
+    };
+    in_order<part>(0, parts - 1, workers,
+                   [&](int p) {
+                       const int from = first + p * part_frames;
+                       const int to = std::min(last, from + part_frames - 1);
+                       // One frame buffer per worker, reused: a new one per frame is mapped
+                       // and unmapped by the allocator when it is large.
+                       thread_local argb_image image;
+                       gif_encoder gif(width, height, palette, frames.fps, from - first);
+                       if (from > first) {
+                           render_argb(image, frames.frame(from - 1), th, dpi, draw_pass::overlay, &still_image);
+                           gif.prime(image.data.data(), image.stride);
+                       }
+                       for (int i = from; i <= to; ++i) {
+                           render_argb(image, frames.frame(i), th, dpi, draw_pass::overlay, &still_image);
+                           gif.add_frame(image.data.data(), image.stride);
+                       }
+                       const std::size_t head_size = gif.head_size();
+                       auto [head, body] = gif_encoder::split(gif.finish(), head_size);
+                       return part{p == 0 ? std::move(head) : std::string(), std::move(body)};
+                   },
+                   [&](int, part done) {
+                       file.write(done.head);
+                       file.write(done.body);
+                   });
+    file.write(";");
+    file.commit();
 }
 
 void write_pdf_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
@@ -162,7 +163,7 @@ void write_pdf_animation(const animation_frames& frames, const theme& th, const 
 
 void write_png_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
                          const std::string& id, const output_options& options) {
-    in_order<int>(frames.first, frames.last,
+    in_order<int>(frames.first, frames.last, options.jobs,
                   [&](int i) {
                       write_atomically(dir / png_frame_file(id, i, frames.count),
                                        render(frames.frame(i), th, "png", output_options{options.dpi}));

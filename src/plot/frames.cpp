@@ -36,11 +36,20 @@ std::pair<int, int> pixel_size(const figure& fig, const theme& th, double dpi) {
 }
 
 argb_image render_argb(const figure& fig, const theme& th, double dpi, draw_pass pass, const argb_image* under) {
-    const auto [width, height] = pixel_size(fig, th, dpi);
     argb_image image;
+    render_argb(image, fig, th, dpi, pass, under);
+    return image;
+}
+
+void render_argb(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass,
+                 const argb_image* under) {
+    const auto [width, height] = pixel_size(fig, th, dpi);
     if (under) {
         if (under->width != width || under->height != height) throw std::invalid_argument("frames differ in size");
-        image = *under;
+        image.width = under->width;
+        image.height = under->height;
+        image.stride = under->stride;
+        image.data.assign(under->data.begin(), under->data.end());  // into the buffer it has
     } else {
         image.width = width;
         image.height = height;
@@ -57,7 +66,6 @@ argb_image render_argb(const figure& fig, const theme& th, double dpi, draw_pass
         check_cairo(cairo_status(cr.get()), "draw a frame");
     }
     cairo_surface_flush(surface.get());
-    return image;
 }
 
 std::string render_pdf_pages(int count, const std::function<figure(int)>& frame, const theme& th) {

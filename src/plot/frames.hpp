@@ -27,6 +27,11 @@ std::pair<int, int> pixel_size(const figure& fig, const theme& th, double dpi);
 argb_image render_argb(const figure& fig, const theme& th, double dpi, draw_pass pass = draw_pass::all,
                        const argb_image* under = nullptr);
 
+/// Draws as render_argb does into `image`, whose buffer is reused (a frame's pixels take as
+/// much memory as the allocator maps afresh, and unmaps, at every frame otherwise).
+void render_argb(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass = draw_pass::all,
+                 const argb_image* under = nullptr);
+
 /// A PDF of `count` pages, page i showing frame(i), for Beamer's animate package. Frames
 /// must share one size. Dated by SOURCE_DATE_EPOCH like a still PDF, otherwise undated.
 std::string render_pdf_pages(int count, const std::function<figure(int)>& frame, const theme& th);

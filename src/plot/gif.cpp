@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 namespace plot {
@@ -30,6 +32,49 @@ struct color_map_deleter {
 [[noreturn]] void fail(const char* what, int error) {
     throw std::runtime_error(std::string("GIF encoding failed (") + what + "): " +
                              (GifErrorString(error) ? GifErrorString(error) : "unknown error"));
+}
+
+/// The palette index nearest to each colour of 5 bits per channel.
+using nearest_colours = std::array<std::uint8_t, 32768>;
+
+nearest_colours nearest_of(const std::vector<rgb8>& palette) {
+    nearest_colours nearest{};
+    for (std::uint32_t key = 0; key < nearest.size(); ++key) {
+        // The centre of the 5-bit cell: a palette colour is always nearest to itself.
+        const int r = static_cast<int>((key >> 10) << 3 | 4);
+        const int g = static_cast<int>(((key >> 5) & 31) << 3 | 4);
+        const int b = static_cast<int>((key & 31) << 3 | 4);
+        int best = 0;
+        int best_d = std::numeric_limits<int>::max();
+        for (std::size_t i = 0; i < palette.size(); ++i) {
+            const int dr = r - palette[i].r;
+            const int dg = g - palette[i].g;
+            const int db = b - palette[i].b;
+            // Weighted towards green, as the eye is.
+            const int d = 2 * dr * dr + 4 * dg * dg + 3 * db * db;
+            if (d < best_d) {
+                best_d = d;
+                best = static_cast<int>(i);
+            }
+        }
+        nearest[key] = static_cast<std::uint8_t>(best);
+    }
+    return nearest;
+}
+
+/// The table of the palette, made once for the encoders of one animation (each part of it
+/// has an encoder of its own, all with one palette).
+std::shared_ptr<const nearest_colours> nearest_table(const std::vector<rgb8>& palette) {
+    static std::mutex mutex;
+    static std::vector<rgb8> last_palette;
+    static std::shared_ptr<const nearest_colours> last;
+    std::lock_guard lock(mutex);
+    const auto equal = [](const rgb8& a, const rgb8& b) { return same(a, b); };
+    if (!last || !std::equal(palette.begin(), palette.end(), last_palette.begin(), last_palette.end(), equal)) {
+        last = std::make_shared<const nearest_colours>(nearest_of(palette));
+        last_palette = palette;
+    }
+    return last;
 }
 
 }  // namespace
@@ -57,7 +102,7 @@ struct gif_encoder::state {
     int height = 0;
     double fps = 30;
     std::vector<rgb8> palette;
-    std::array<std::uint8_t, 32768> nearest{};  // 5 bits per channel -> palette index
+    std::shared_ptr<const nearest_colours> nearest;  // 5 bits per channel -> palette index
     std::vector<std::uint32_t> previous;   // the last frame's pixels, to find what changed
     std::vector<GifPixelType> rect;        // the changed rectangle, as palette indices
     int transparent = -1;                  // the index that keeps the previous frame's pixel
@@ -76,7 +121,7 @@ struct gif_encoder::state {
         const std::uint32_t r = (pixel >> 16) & 0xff;
         const std::uint32_t g = (pixel >> 8) & 0xff;
         const std::uint32_t b = pixel & 0xff;
-        return nearest[(r >> 3) << 10 | (g >> 3) << 5 | (b >> 3)];
+        return (*nearest)[(r >> 3) << 10 | (g >> 3) << 5 | (b >> 3)];
     }
 };
 
@@ -92,26 +137,7 @@ gif_encoder::gif_encoder(int width, int height, std::vector<rgb8> palette, doubl
     s.height = height;
     s.fps = fps;
     s.palette = std::move(palette);
-    for (std::uint32_t key = 0; key < s.nearest.size(); ++key) {
-        // The centre of the 5-bit cell: a palette colour is always nearest to itself.
-        const int r = static_cast<int>((key >> 10) << 3 | 4);
-        const int g = static_cast<int>(((key >> 5) & 31) << 3 | 4);
-        const int b = static_cast<int>((key & 31) << 3 | 4);
-        int best = 0;
-        int best_d = std::numeric_limits<int>::max();
-        for (std::size_t i = 0; i < s.palette.size(); ++i) {
-            const int dr = r - s.palette[i].r;
-            const int dg = g - s.palette[i].g;
-            const int db = b - s.palette[i].b;
-            // Weighted towards green, as the eye is.
-            const int d = 2 * dr * dr + 4 * dg * dg + 3 * db * db;
-            if (d < best_d) {
-                best_d = d;
-                best = static_cast<int>(i);
-            }
-        }
-        s.nearest[key] = static_cast<std::uint8_t>(best);
-    }
+    s.nearest = nearest_table(s.palette);
     int error = 0;
     s.gif = EGifOpen(&s, &state::write, &error);
     if (!s.gif) fail("open", error);

@@ -40,6 +40,7 @@ struct output_options {
     bool force = false;        ///< rewrite a file even if it already holds the same bytes
     double tex_font_pt = 10;   ///< the document's font size, for pdf_tex and eps_tex (relative sizes)
     tex_sizing tex_sizes = tex_sizing::relative;  ///< how pdf_tex and eps_tex size their text
+    unsigned jobs = 0;         ///< worker threads; 0: one per CPU this process may use (plot::usable_cpus)
 };
 
 /// The smallest and largest accepted --dpi.

@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# pendulum-figures against the usual tools, in one interleaved run: each round runs every
+# row's two commands in turn, so that a busy machine slows both alike, and each row prints
+# the medians over the rounds and their ratio. Then callgrind's instruction counts (the
+# paper's figures, the catalog, one animation frame) and the peak memory of the swing GIF
+# for 1 and 30 periods at 720p and 4K.
+# Usage: compare.sh EXE [ROUNDS]   (BENCH_MEMORY=0 leaves out the memory rows)
+set -euo pipefail
+exe=$(realpath "${1:?usage: compare.sh EXE [ROUNDS]}")
+rounds=${2:-5}
+here=$(cd "$(dirname "$0")" && pwd)
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+python=${PYTHON:-/usr/bin/python3}
+"$python" -c 'import matplotlib, scipy, PIL' 2>/dev/null ||
+  { echo "compare.sh: needs python3-matplotlib, python3-scipy and python3-pil" >&2; exit 1; }
+command -v gnuplot >/dev/null || { echo "compare.sh: needs gnuplot (gnuplot-nox)" >&2; exit 1; }
+command -v valgrind >/dev/null || { echo "compare.sh: needs valgrind" >&2; exit 1; }
+
+median() { printf '%s\n' "$@" | sort -g | sed -n "$(( ($# + 1) / 2 ))p"; }
+# Seconds of a command (its output thrown away).
+seconds() {
+  local start end
+  start=$(date +%s%N)
+  "$@" >/dev/null 2>&1
+  end=$(date +%s%N)
+  awk -v n=$((end - start)) 'BEGIN { printf "%.3f", n / 1e9 }'
+}
+
+paper="fig1 fig2 fig3 fig4 fig5 fig6 fig7"
+mkdir -p "$out/ours" "$out/theirs" "$out/gnuplot"
+# Fig. 7's curves for gnuplot, one file per series (not timed).
+"$exe" data fig7 | awk -F, -v d="$out/gnuplot" 'NR > 1 { print $3 "," $4 > (d "/" $1 "-" $2 ".csv") }'
+# A million amplitudes for eval (not timed).
+awk 'BEGIN { srand(1); for (i = 0; i < 1000000; i++) printf "%.17g\n", 0.01 + 3.09 * rand() }' >"$out/amplitudes"
+
+rows=(paper catalog fig7 swing eval)
+declare -A label ours theirs peer
+label[paper]="7 paper figures, PNG 300 dpi + PDF"; peer[paper]="matplotlib script"
+label[catalog]="render --all, PNG 300 dpi + PDF"; peer[catalog]="bench/matplotlib_catalog.py"
+label[fig7]="Fig. 7, PNG + PDF, same pixels"; peer[fig7]="gnuplot pngcairo + pdfcairo"
+label[swing]="swing GIF, 441 frames 1280x720"; peer[swing]="matplotlib FuncAnimation"
+label[eval]="eval of 1e6 amplitudes (theta0, period_exact)"; peer[eval]="numpy/scipy + savetxt"
+run_ours() {
+  case $1 in
+    paper) "$exe" render $paper -f png,pdf --dpi 300 --force -o "$out/ours" ;;
+    catalog) "$exe" render --all -f png,pdf --dpi 300 --force -o "$out/ours" ;;
+    fig7) "$exe" render fig7 -f png,pdf --dpi 300 --force -o "$out/ours" ;;
+    swing) "$exe" render swing --theme slides -f gif --force -o "$out/ours" ;;
+    eval) "$exe" eval --theta0 @"$out/amplitudes" --columns theta0,period_exact >"$out/ours/eval.csv" ;;
+  esac
+}
+run_theirs() {
+  case $1 in
+    paper) "$python" "$here/matplotlib_catalog.py" "$out/theirs" --paper ;;
+    catalog) "$python" "$here/matplotlib_catalog.py" "$out/theirs" ;;
+    fig7) gnuplot -e "dir='$out/gnuplot'" "$here/gnuplot_fig7.gp" ;;
+    swing) "$python" "$here/matplotlib_swing.py" "$out/theirs/swing.gif" ;;
+    eval) "$python" "$here/numpy_eval.py" "$out/amplitudes" "$out/theirs/eval.csv" ;;
+  esac
+}
+for ((i = 0; i < rounds; i++)); do
+  for r in "${rows[@]}"; do
+    ours[$r]+="$(seconds run_ours "$r") "
+    theirs[$r]+="$(seconds run_theirs "$r") "
+  done
+done
+echo "Medians of $rounds interleaved rounds ($(nproc) CPUs usable):"
+printf '%-48s %10s  %-30s %10s  %s\n' "work" "ours (s)" "peer" "peer (s)" "ratio"
+for r in "${rows[@]}"; do
+  # shellcheck disable=SC2086
+  a=$(median ${ours[$r]}); b=$(median ${theirs[$r]})
+  printf '%-48s %10s  %-30s %10s  %s\n' "${label[$r]}" "$a" "${peer[$r]}" "$b" \
+    "$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.1fx", b / a }')"
+done
+
+# Instructions, one worker (callgrind counts every thread; one keeps the count steady).
+instructions() {
+  valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 >/dev/null |
+    sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
+}
+echo
+echo "Instructions (callgrind, --jobs 1):"
+n=$(instructions "$exe" render $paper -f png,pdf --dpi 300 --force --jobs 1 -o "$out/ours")
+printf '%-48s %6.0f M\n' "7 paper figures, PNG 300 dpi + PDF" "$(awk -v n="$n" 'BEGIN { print n / 1e6 }')"
+n=$(instructions "$exe" render --all -f png,pdf --dpi 300 --force --jobs 1 -o "$out/ours")
+printf '%-48s %6.0f M\n' "render --all, PNG 300 dpi + PDF" "$(awk -v n="$n" 'BEGIN { print n / 1e6 }')"
+n=$(instructions "$exe" render fig7 -f png,pdf --dpi 300 --force --jobs 1 -o "$out/ours")
+printf '%-48s %6.0f M\n' "Fig. 7, PNG + PDF" "$(awk -v n="$n" 'BEGIN { print n / 1e6 }')"
+one=$(instructions "$exe" render swing --theme slides -f gif --force --jobs 1 --frames 1..1 -o "$out/ours")
+more=$(instructions "$exe" render swing --theme slides -f gif --force --jobs 1 --frames 1..31 -o "$out/ours")
+printf '%-48s %6.1f M\n' "swing GIF 1280x720, per frame" "$(awk -v a="$one" -v b="$more" 'BEGIN { print (b - a) / 30 / 1e6 }')"
+
+[ "${BENCH_MEMORY:-1}" = 0 ] && exit 0
+# Peak memory of the GIF at any length: the swing for 1 and 30 periods, at 720p and 4K (at
+# 4K, 30 periods are more pixels than an animation may have: its first 2400 frames).
+echo
+echo "Peak memory of the swing GIF (max RSS):"
+for periods in 1 30; do
+  sed "s/^periods = .*/periods = $periods/" "$here/../src/figures/specs/swing.toml" >"$out/swing$periods.toml"
+done
+for size in 1280x720 3840x2160; do
+  for periods in 1 30; do
+    frames=()
+    [ "$size" = 3840x2160 ] && [ "$periods" = 30 ] && frames=(--frames 1..2400)
+    /usr/bin/time -f '%M' -o "$out/rss" "$exe" render "$out/swing$periods.toml" --theme slides --size "$size" \
+      -f gif --force -o "$out/ours" "${frames[@]}" >/dev/null
+    printf '%-48s %6d MB\n' "$size, $periods period(s)${frames:+ (frames 1..2400)}" $(( $(cat "$out/rss") / 1024 ))
+  done
+done

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "plot/workers.hpp"
+
+#include <sched.h>
+
+#include <algorithm>
+#include <thread>
+
+namespace plot {
+
+unsigned usable_cpus() {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof set, &set) == 0) return static_cast<unsigned>(std::max(1, CPU_COUNT(&set)));
+    // A mask larger than cpu_set_t (over 1024 CPUs): every CPU the machine has.
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
+unsigned worker_count(unsigned jobs, std::size_t tasks) {
+    const std::size_t wanted = jobs ? jobs : usable_cpus();
+    return static_cast<unsigned>(std::max<std::size_t>(1, std::min(wanted, tasks)));
+}
+
+}  // namespace plot

@@ -90,7 +90,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     }
     const auto [fixed, seconds] = chosen_columns(o);
     // Only the solutions the chosen columns read are computed.
-    unsigned needs = seconds ? need_exact : 0;
+    unsigned needs = seconds ? static_cast<unsigned>(need_exact) : 0u;
     for (const auto* c : fixed) needs |= c->needs;
     std::vector<std::string> columns;
     for (const auto* c : fixed) columns.emplace_back(c->name);

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -110,8 +111,18 @@ struct prepared_file {
     std::string temp; ///< the temporary's name; empty when written in place
 };
 
-/// Writes bytes where `path` leads, under a temporary name, fsynced; the caller renames it.
-prepared_file prepare(const fs::path& path, const std::string& bytes) {
+/// Writes the file's contents: into the open descriptor, or by the file's name.
+using contents = std::function<void(int fd, const fs::path& file)>;
+
+/// Contents that are these bytes.
+contents bytes_of(const fs::path& path, const std::string& bytes) {
+    return [&path, &bytes](int fd, const fs::path&) {
+        if (const int e = write_all(fd, bytes)) fail(path, e);
+    };
+}
+
+/// Writes the contents where `path` leads, under a temporary name, fsynced; the caller renames it.
+prepared_file prepare(const fs::path& path, const contents& write) {
     prepared_file out{path, resolve_links(path), {}};
     struct stat st {};
     const bool exists = ::stat(out.target.c_str(), &st) == 0;
@@ -120,9 +131,13 @@ prepared_file prepare(const fs::path& path, const std::string& bytes) {
         // A device, FIFO or socket: written through, in place, never replaced.
         const int fd = ::open(out.target.c_str(), O_WRONLY | O_CLOEXEC);
         if (fd < 0) fail(path, errno);
-        const int e = write_all(fd, bytes);
-        if (::close(fd) != 0 && e == 0) fail(path, errno);
-        if (e != 0) fail(path, e);
+        try {
+            write(fd, out.target);
+        } catch (...) {
+            ::close(fd);
+            throw;
+        }
+        if (::close(fd) != 0) fail(path, errno);
         return out;
     }
     const fs::path dir = out.target.has_parent_path() ? out.target.parent_path() : fs::path(".");
@@ -135,7 +150,13 @@ prepared_file prepare(const fs::path& path, const std::string& bytes) {
         ::unlink(temp.c_str());
         fail(path, e);
     };
-    if (const int e = write_all(fd, bytes)) give_up(e);
+    try {
+        write(fd, temp);
+    } catch (...) {
+        ::close(fd);
+        ::unlink(temp.c_str());
+        throw;
+    }
     // An existing file keeps its mode (and owner, where we may set it); a new one gets the
     // usual 0666 less the umask, which is read once: reading it means setting it.
     static const mode_t mask = [] {
@@ -181,7 +202,13 @@ void discard(std::vector<prepared_file>& files) {
 }  // namespace
 
 void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
-    prepared_file f = prepare(path, bytes);
+    prepared_file f = prepare(path, bytes_of(path, bytes));
+    commit(f);
+}
+
+void write_atomically_by(const std::filesystem::path& path,
+                         const std::function<void(const std::filesystem::path& file)>& fill) {
+    prepared_file f = prepare(path, [&fill](int, const fs::path& file) { fill(file); });
     commit(f);
 }
 
@@ -190,7 +217,7 @@ void write_atomically(const std::vector<std::pair<std::filesystem::path, std::st
     // the files change together but for the few microseconds of the renames, in order.
     std::vector<prepared_file> ready;
     try {
-        for (const auto& [path, bytes] : files) ready.push_back(prepare(path, bytes));
+        for (const auto& [path, bytes] : files) ready.push_back(prepare(path, bytes_of(path, bytes)));
         for (auto& f : ready) commit(f);
     } catch (...) {
         discard(ready);

@@ -148,6 +148,29 @@ void check_frame_rates(const std::vector<animation_job>& animations, const std::
     }
 }
 
+/// Throws bad_input, before any file is written, if a still figure or one frame of an
+/// animation (--at) is asked for in a format that holds animations only (a video).
+void check_still_formats(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
+                         const std::vector<std::string>& formats, bool at) {
+    const auto check = [](const std::string& id, const std::string& format) {
+        try {
+            plot::check_still_format(format);
+        } catch (const plot::bad_input& err) {
+            throw bad_input(id + "." + format + ": " + err.what());
+        }
+    };
+    for (const auto& f : stills) {
+        std::string ext = f.path.extension().string();
+        if (!ext.empty()) ext.erase(0, 1);
+        check(f.figure->id, ext);
+    }
+    for (const auto& m : animations) {
+        for (const auto& f : formats) {
+            if (at || !plot::find_format(f).animate) check(m.figure->id, f);
+        }
+    }
+}
+
 namespace {
 
 /// write_render's files, each as it is finished.
@@ -177,6 +200,7 @@ void write_files(const std::vector<figure_file>& stills, const std::vector<anima
 void write_render(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
                   const std::vector<std::string>& formats, const std::filesystem::path& dir,
                   const build_options& build, const render_style& style, std::optional<double> at) {
+    check_still_formats(stills, animations, formats, at.has_value());
     check_distinct_outputs(stills, animations, formats, dir, at.has_value());
     if (!at) {
         check_frame_rates(animations, formats);

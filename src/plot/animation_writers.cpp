@@ -4,6 +4,7 @@
 #include "plot/frames.hpp"
 #include "plot/gif.hpp"
 #include "plot/streamed_file.hpp"
+#include "plot/video.hpp"
 #include "plot/workers.hpp"
 
 #include <algorithm>
@@ -171,6 +172,48 @@ void write_png_animation(const animation_frames& frames, const theme& th, const 
                   },
                   [](int, int) {});
 }
+
+namespace {
+
+/// DIR/ID.EXT as a video of the kind: frames drawn on every core, at most a few at a time
+/// waiting, converted where they are drawn and encoded in order.
+void write_video_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
+                           const std::string& id, const output_options& options, video_kind kind) {
+    const figure first_frame = frames.frame(frames.first);
+    // Plain variables, not a structured binding: the lambda below captures them.
+    const std::pair<int, int> pixels = pixel_size(first_frame, th, options.dpi);
+    const int width = pixels.first;
+    const int height = pixels.second;
+    // What stays is drawn once; each frame draws what moves over a copy of it.
+    const argb_image still_image = render_argb(first_frame, th, options.dpi, draw_pass::still);
+    const std::string name = id + "." + kind.container;
+    write_atomically_by(dir / name, [&](const std::filesystem::path& file) {
+        video_encoder video(file, name, kind, width, height, frames.fps);
+        in_order<video_frame>(
+            frames.first, frames.last, options.jobs,
+            [&](int i) {
+                return video.convert(render_argb(frames.frame(i), th, options.dpi, draw_pass::overlay, &still_image));
+            },
+            [&](int, video_frame frame) { video.add(std::move(frame)); });
+        video.finish();
+    });
+}
+
+}  // namespace
+
+void write_mp4_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
+                         const std::string& id, const output_options& options) {
+    write_video_animation(frames, th, dir, id, options, mp4_video);
+}
+
+void write_webm_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
+                          const std::string& id, const output_options& options) {
+    write_video_animation(frames, th, dir, id, options, webm_video);
+}
+
+std::string mp4_animation_file(const std::string& id, int, int) { return id + ".mp4"; }
+
+std::string webm_animation_file(const std::string& id, int, int) { return id + ".webm"; }
 
 std::string gif_animation_file(const std::string& id, int, int) { return id + ".gif"; }
 

@@ -22,6 +22,20 @@ void write_pdf_animation(const animation_frames& frames, const theme& th, const 
 void write_png_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
                          const std::string& id, const output_options& options);
 
+/// DIR/ID.mp4: H.264 for slides (see mp4_video); frames drawn on every core, encoded in order.
+void write_mp4_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
+                         const std::string& id, const output_options& options);
+
+/// DIR/ID.webm: VP9 for browsers (see webm_video); frames drawn on every core, encoded in order.
+void write_webm_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
+                          const std::string& id, const output_options& options);
+
+/// ID.mp4, the file of every frame.
+std::string mp4_animation_file(const std::string& id, int frame, int count);
+
+/// ID.webm, the file of every frame.
+std::string webm_animation_file(const std::string& id, int frame, int count);
+
 /// ID.gif, the file of every frame.
 std::string gif_animation_file(const std::string& id, int frame, int count);
 

@@ -17,6 +17,7 @@
 #include <memory>
 #include <mutex>
 #include <ctime>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -215,6 +216,24 @@ void discard(std::vector<prepared_file>& files) {
 
 void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
     prepared_file f = prepare(path, bytes);
+    if (durable_batch* batch = open_batch.load()) return batch->defer(std::move(f));
+    commit(f);
+}
+
+void write_atomically_by(const std::filesystem::path& path,
+                         const std::function<void(const std::filesystem::path& file)>& fill) {
+    int fd = -1;
+    struct stat st {};
+    bool exists = false;
+    prepared_file f = open_for(path, fd, st, exists);
+    try {
+        fill(f.temp.empty() ? f.target : fs::path(f.temp));
+    } catch (...) {
+        ::close(fd);
+        if (!f.temp.empty()) ::unlink(f.temp.c_str());
+        throw;
+    }
+    close_written(f, fd, st, exists);
     if (durable_batch* batch = open_batch.load()) return batch->defer(std::move(f));
     commit(f);
 }

@@ -385,6 +385,8 @@ void check_gif_frame_rate(double fps) {
 //  name, description,
 //  still writer, overlay's graphics format, writer under an overlay, raster, animation writer, what it animates as,
 //  the file of an animation's frame, the check of its frame rate
+// Videos play at any rate the specs allow (1 to 120 frames per second): the frame rate is
+// a fraction that H.264 and MP4 keep exactly, and WebM's millisecond times within 0.5 ms.
 constexpr format_row formats[] = {
     {"png", "raster at --dpi",
      render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)", png_frame_file, nullptr},
@@ -396,6 +398,10 @@ constexpr format_row formats[] = {
      write_eps, {}, render_eps, false, nullptr, {}, nullptr, nullptr},
     {"gif", "animation that loops; one frame for a still figure",
      render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF", gif_animation_file, check_gif_frame_rate},
+    {"mp4", "video (H.264) for slides and browsers; animations only",
+     nullptr, {}, nullptr, true, write_mp4_animation, "an MP4 video (H.264)", mp4_animation_file, nullptr},
+    {"webm", "video (VP9) for browsers; animations only",
+     nullptr, {}, nullptr, true, write_webm_animation, "a WebM video (VP9)", webm_animation_file, nullptr},
     {"pdf_tex", "ID.pdf without text and ID.pdf_tex setting the text in the document's fonts (pdflatex)",
      refuse_one_stream, "pdf", nullptr, false, nullptr, {}, nullptr, nullptr},
     {"eps_tex", "ID.eps without text and ID.eps_tex setting the text in the document's fonts (latex, dvips)",
@@ -481,7 +487,15 @@ const format_row& find_format(std::string_view format) {
 
 void check_format(std::string_view format) { find_format(format); }
 
+void check_still_format(std::string_view format) {
+    const format_row& row = find_format(format);
+    if (row.write) return;
+    throw bad_input(std::string(format) + " holds animations only; a still figure, or one frame of an animation (--at): " +
+                    format_names([](const format_row& f) { return f.write != nullptr; }, " or "));
+}
+
 std::string render(const figure& fig, const theme& th, std::string_view format, const output_options& options) {
+    check_still_format(format);
     return find_format(format).write(fig, th, options);
 }
 
@@ -533,6 +547,7 @@ void save_unnamed(const figure& fig, const theme& th, const std::filesystem::pat
             write_if_changed(p, bytes);
         }
     };
+    check_still_format(ext);
     const format_row& row = find_format(ext);
     if (!row.graphics.empty()) {
         auto graphics = path;

@@ -78,7 +78,7 @@ using animation_writer = void (*)(const animation_frames& frames, const theme& t
 struct format_row {
     std::string_view name;         ///< file extension
     std::string_view description;  ///< one line for help and lists
-    /// A still figure's bytes.
+    /// A still figure's bytes; null for a format that holds animations only (a video).
     std::string (*write)(const figure& fig, const theme& th, const output_options& options);
     std::string_view graphics;     ///< for a LaTeX overlay: the format of the drawing beside it
     /// The bytes with every text left out and recorded in `texts` instead, to be the drawing
@@ -124,6 +124,9 @@ std::string format_names(bool (*keep)(const format_row&), std::string_view last 
 /// Throws plot::bad_input listing the supported formats unless `format` is one.
 void check_format(std::string_view format);
 
+/// Throws plot::bad_input, naming the formats that can, unless `format` holds a still figure.
+void check_still_format(std::string_view format);
+
 /// The creation date of PDF files, "YYYY-MM-DDTHH:MM:SSZ" from SOURCE_DATE_EPOCH, or empty;
 /// throws plot::bad_input naming it if it is set and not 0 to 253402300799 seconds.
 std::string pdf_creation_date();
@@ -135,6 +138,12 @@ std::string render(const figure& fig, const theme& th, std::string_view format, 
 /// Writes bytes to path through a temporary file in the same directory and a rename, so the
 /// file is either the old one or the complete new one. Throws std::runtime_error naming the path.
 void write_atomically(const std::filesystem::path& path, const std::string& bytes);
+
+/// Writes the file as write_atomically does, its contents written by fill(file) into the
+/// file it is given by name (a temporary beside path, or a device path leads to): for a
+/// writer that opens its file itself, and a file that need not be held in memory.
+void write_atomically_by(const std::filesystem::path& path,
+                         const std::function<void(const std::filesystem::path& file)>& fill);
 
 /// Writes the files as write_atomically does one, each complete under a temporary name and
 /// on disk before the first is renamed, then renamed in order: a pair that belongs together

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Video files (MP4 with H.264, WebM with VP9) written through FFmpeg's libraries.
+
+#include "plot/frames.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+
+struct AVFrame;
+
+namespace plot {
+
+/// A container and the codec in it, and how that codec is set up.
+struct video_kind {
+    const char* container;       ///< libavformat's name of the container: "mp4", "webm"
+    const char* encoder;         ///< libavcodec's encoder: "libx264", "libvpx-vp9"
+    const char* codec_options;   ///< the encoder's options, "key=value:key=value"
+    const char* muxer_options;   ///< the container's options, the same way
+    int threads;                 ///< the encoder's threads: fixed, as the bytes may depend on it
+};
+
+/// MP4 holding H.264 (High profile, yuv420p, constant quality), its index first
+/// (faststart): PowerPoint, Keynote, Google Slides and every browser play it.
+inline constexpr video_kind mp4_video{"mp4", "libx264", "preset=medium:tune=animation:crf=23:profile=high:rc-lookahead=20",
+                                      "movflags=+faststart", 4};
+/// WebM holding VP9 (yuv420p, constant quality): browsers and Google Slides play it.
+inline constexpr video_kind webm_video{"webm", "libvpx-vp9",
+                                       "b=0:crf=34:deadline=good:cpu-used=4:row-mt=0:tile-columns=2", "", 4};
+
+/// A frame converted for the encoder (yuv420p, BT.709, limited range); empty by default.
+struct video_frame {
+    /// Frees the frame.
+    struct deleter {
+        /// Frees an AVFrame.
+        void operator()(AVFrame* f) const;
+    };
+    std::unique_ptr<AVFrame, deleter> frame;  ///< the pixels
+};
+
+/// The even size a video of width x height pixels has: yuv420p halves the colour in both
+/// directions, so an odd side gets one more row or column, a copy of its last.
+std::pair<int, int> video_size(int width, int height);
+
+/// Encodes frames of one size, in order, into a video file at `path` (a temporary: the
+/// caller renames it). Every setting is fixed, the thread counts too, and the files carry
+/// no date (unless SOURCE_DATE_EPOCH gives one) and no library version: the same frames
+/// give the same bytes with the same libraries. Memory does not grow with the frames.
+class video_encoder {
+public:
+    /// Opens the file for frames of width x height pixels (any size: see video_size) shown
+    /// at `fps` frames per second. Throws std::runtime_error naming `shown` (the file's
+    /// name for messages) if the libraries cannot.
+    video_encoder(const std::filesystem::path& path, const std::string& shown, video_kind kind, int width,
+                  int height, double fps);
+    ~video_encoder();
+    video_encoder(const video_encoder&) = delete;
+    video_encoder& operator=(const video_encoder&) = delete;
+
+    /// Converts a frame drawn by render_argb for the encoder; callable from several threads.
+    video_frame convert(const argb_image& image) const;
+
+    /// Encodes the next frame.
+    void add(video_frame frame);
+
+    /// Flushes the encoder and ends the file; nothing may be added afterwards.
+    void finish();
+
+private:
+    struct state;
+    std::unique_ptr<state> state_;
+};
+
+/// The frame rate as libavformat takes it: a fraction that is fps within 1e-6.
+std::pair<int, int> video_frame_rate(double fps);
+
+}  // namespace plot

@@ -50,6 +50,8 @@ DEB_PACKAGES += fontconfig
 # The paper's class (revtex4), and librsvg's SVG reader: the figures as the paper and other
 # readers show them.
 DEB_PACKAGES += texlive-publishers librsvg2-bin
+# ninja, for the test of the README's build recipes (make's and ninja's).
+DEB_PACKAGES += ninja-build
 
 .PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz clean
 

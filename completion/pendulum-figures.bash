@@ -39,7 +39,7 @@ _pendulum_figures() {
             COMPREPLY+=($(compgen -f -X '!*.toml' -- "$cur"))
             return ;;
         -o|--output-dir) _filedir -d; return ;;
-        --output) _filedir; return ;;
+        --output|--depfile|--depfile-target) _filedir; return ;;
         --format) COMPREPLY=($(compgen -W "csv json" -- "$cur")); return ;;
         --tex-sizes) _pendulum_figures_words "$exe" tex-sizes; return ;;
         --set) _pendulum_figures_words "$exe" set-keys; return ;;
@@ -66,7 +66,7 @@ _pendulum_figures() {
         claims) options="--format --help --help-all" ;;
         list) options="--markdown --help --help-all" ;;
         show) options="--theme --help --help-all" ;;
-        render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --help --help-all" ;;
+        render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --help --help-all" ;;
         plot) options="--theta0 --methods --range --time --harmonic --harmonics --orders --y --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --help --help-all" ;;
         data) options="-o --output --theta0 --help --help-all" ;;
     esac

@@ -138,6 +138,7 @@ try:
             if not file:
                 failures.append(f"{where}: a {lang} block needs <!-- snippet: file NAME --> before it")
                 continue
+            os.makedirs(os.path.dirname(os.path.join(run_dir, file)), exist_ok=True)
             with open(os.path.join(run_dir, file), "w", encoding="utf-8") as f:
                 f.write(text)
             example = os.path.join(source_dir, "examples", file)

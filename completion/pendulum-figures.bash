@@ -26,7 +26,7 @@ _pendulum_figures() {
     local cur prev words cword
     _init_completion -n := || return
     local exe=${words[0]}
-    local commands="eval trajectory claims list show render plot data"
+    local commands="eval trajectory claims list show render plot data describe"
     if [[ $cword -eq 1 ]]; then
         COMPREPLY=($(compgen -W "$commands --help --help-all --version" -- "$cur"))
         return
@@ -69,6 +69,7 @@ _pendulum_figures() {
         render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --help --help-all" ;;
         plot) options="--theta0 --methods --range --time --harmonic --harmonics --orders --y --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --help --help-all" ;;
         data) options="-o --output --theta0 --help --help-all" ;;
+        describe) options="--alt --help --help-all" ;;
     esac
     if [[ $cur == -* ]]; then
         COMPREPLY=($(compgen -W "$options" -- "$cur"))

@@ -32,7 +32,9 @@ while i < len(lines):
         while not lines[k].strip().startswith("```"):
             body.append(lines[k][indent:])
             k += 1
-        open(os.path.join(sys.argv[2], m.group(1)), "w", encoding="utf-8").write("\n".join(body) + "\n")
+        path = os.path.join(sys.argv[2], m.group(1))
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        open(path, "w", encoding="utf-8").write("\n".join(body) + "\n")
         i = k
     i += 1
 EOF

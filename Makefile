@@ -56,6 +56,8 @@ DEB_PACKAGES += fontconfig
 DEB_PACKAGES += texlive-publishers librsvg2-bin
 # make bench: the tools it measures against, and callgrind.
 DEB_PACKAGES += python3-matplotlib python3-scipy python3-pil gnuplot-nox valgrind
+# ninja, for the test of the README's build recipes (make's and ninja's).
+DEB_PACKAGES += ninja-build
 
 .PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz clean
 

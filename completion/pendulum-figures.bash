@@ -26,7 +26,7 @@ _pendulum_figures() {
     local cur prev words cword
     _init_completion -n := || return
     local exe=${words[0]}
-    local commands="eval trajectory claims list show render plot data"
+    local commands="eval trajectory claims list show render plot data describe"
     if [[ $cword -eq 1 ]]; then
         COMPREPLY=($(compgen -W "$commands --help --help-all --version" -- "$cur"))
         return
@@ -39,7 +39,7 @@ _pendulum_figures() {
             COMPREPLY+=($(compgen -f -X '!*.toml' -- "$cur"))
             return ;;
         -o|--output-dir) _filedir -d; return ;;
-        --output) _filedir; return ;;
+        --output|--depfile|--depfile-target) _filedir; return ;;
         --format) COMPREPLY=($(compgen -W "csv json" -- "$cur")); return ;;
         --tex-sizes) _pendulum_figures_words "$exe" tex-sizes; return ;;
         --set) _pendulum_figures_words "$exe" set-keys; return ;;
@@ -66,9 +66,10 @@ _pendulum_figures() {
         claims) options="--format --help --help-all" ;;
         list) options="--markdown --help --help-all" ;;
         show) options="--theme --help --help-all" ;;
-        render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --jobs --help --help-all" ;;
+        render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --jobs --help --help-all" ;;
         plot) options="--theta0 --methods --range --time --harmonic --harmonics --orders --y --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --help --help-all" ;;
         data) options="-o --output --theta0 --help --help-all" ;;
+        describe) options="--alt --help --help-all" ;;
     esac
     if [[ $cur == -* ]]; then
         COMPREPLY=($(compgen -W "$options" -- "$cur"))

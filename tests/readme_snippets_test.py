@@ -8,10 +8,11 @@ Blocks are fenced, with a language:
 - sh: run with bash -e. A block of `$ COMMAND` lines with output runs each command and
   compares the output shown, if any: `...` stands for any text within a line, and a line
   `...` alone for the rest of the output.
-- toml, cpp, cmake: written to the file named by `<!-- snippet: file NAME -->` on the line
+- toml, cpp, cmake, make, ninja: written to the file named by `<!-- snippet: file NAME -->` on the line
   before the block; a toml spec (one with [[panel]]) is also read by `pendulum-figures data`,
   and a block whose file is one of examples/ must be that file.
-- latex: a whole document, compiled with pdflatex (after the blocks before it ran).
+- latex: a whole document, written to the file named as above (default readme.tex) and
+  compiled with pdflatex (after the blocks before it ran).
 A block that cannot run here (sudo, make recursing into the project, a synopsis) carries
 `<!-- not run: REASON -->` on the line before it; such blocks are counted and listed.
 The installed core library (cmake --install --component dev) is on PKG_CONFIG_PATH and
@@ -30,7 +31,7 @@ readme = open(os.path.join(source_dir, "README.md"), encoding="utf-8").read().sp
 
 MARKER = re.compile(r"^\s*<!-- (snippet: file (?P<file>\S+)|not run: (?P<reason>.+?)) -->\s*$")
 FENCE = re.compile(r"^(?P<indent>\s*)```(?P<lang>\S*)\s*$")
-LANGS = {"sh", "toml", "cpp", "cmake", "latex"}
+LANGS = {"sh", "toml", "cpp", "cmake", "latex", "make", "ninja"}
 
 
 def blocks():
@@ -127,15 +128,17 @@ try:
                 if r.returncode != 0:
                     failures.append(f"{where}: the block exits {r.returncode}:\n{text}{r.stdout[-2000:]}{r.stderr[-2000:]}")
         elif lang == "latex":
-            with open(os.path.join(run_dir, "readme.tex"), "w", encoding="utf-8") as f:
+            tex = file or "readme.tex"
+            with open(os.path.join(run_dir, tex), "w", encoding="utf-8") as f:
                 f.write(text)
-            r = run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", "readme.tex"])
+            r = run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", tex])
             if r.returncode != 0:
                 failures.append(f"{where}: pdflatex fails:\n{r.stdout[-3000:]}")
         else:
             if not file:
                 failures.append(f"{where}: a {lang} block needs <!-- snippet: file NAME --> before it")
                 continue
+            os.makedirs(os.path.dirname(os.path.join(run_dir, file)), exist_ok=True)
             with open(os.path.join(run_dir, file), "w", encoding="utf-8") as f:
                 f.write(text)
             example = os.path.join(source_dir, "examples", file)

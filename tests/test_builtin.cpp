@@ -2,6 +2,8 @@
 // The built-in specs: every one reads and builds, and the paper's figures hold the data
 // the catalog computed before they became specs.
 #include "figures/builtin.hpp"
+#include "figures/catalog.hpp"
+#include "figures/describe.hpp"
 #include "figures/spec.hpp"
 #include "figures/spec_build.hpp"
 #include "pendulum/approximants.hpp"
@@ -121,3 +123,42 @@ TEST(Builtin, PaperFiguresHoldTheCoreLibrarysValues) {
 }
 
 }  // namespace
+
+TEST(Describe, EveryBuiltinFigureInWords) {
+    for (const auto& e : figures::catalog()) {
+        const auto built = figures::build(e);
+        const auto d = figures::describe(e, built);
+        EXPECT_EQ(d.alt.rfind(e.description(), 0), 0u) << e.id << ": " << d.alt;
+        std::size_t plots = 0;
+        for (const auto& p : built.panels) plots += p.frameless ? 0 : 1;
+        std::size_t against = 0;
+        for (std::size_t pos = 0; (pos = d.text.find(" against ", pos)) != std::string::npos; ++pos) ++against;
+        EXPECT_EQ(against, plots) << e.id << ": one 'Y against X' per plotted panel\n" << d.text;
+        if (built.panels.size() > 1) {
+            EXPECT_NE(d.text.find("Panel (b)"), std::string::npos) << e.id << "\n" << d.text;
+        }
+        // Spoken, not drawn: no markup, no Greek letters.
+        for (const char* drawn : {"<", "\u03d1", "\u03c0"}) EXPECT_EQ(d.text.find(drawn), std::string::npos) << e.id << "\n" << d.text;
+    }
+    // The facts a reader needs: axes and ranges, where the approximations leave the exact
+    // curve, where the paper's claims are crossed.
+    const struct {
+        const char* id;
+        const char* fact;
+    } facts[] = {
+        {"c1-lowest", "c1 against theta0, theta0 from 0 to pi"},
+        {"c1-lowest", "Leaving the exact curve by more than 1 % of the c1 axis: lowest order at theta0 = 0.5"},
+        {"period", "T/T0 against theta0"},
+        {"period", "relative error (%) from -20 to 2"},
+        {"period-error", "first crossed by lowest order at theta0 = 0.4"},
+        {"period-error", "on a logarithmic scale"},
+        {"trajectory-second", "Second order stays on the exact curve"},
+        {"swing", "An animation over 3 periods"},
+        {"phase-portrait", "against theta, theta from -pi to pi"},
+    };
+    for (const auto& f : facts) {
+        const auto& e = figures::find(f.id);
+        const auto d = figures::describe(e, figures::build(e));
+        EXPECT_NE((d.alt + "\n" + d.text).find(f.fact), std::string::npos) << f.id << ": no '" << f.fact << "' in\n" << d.text;
+    }
+}

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the command line: angle expressions, output tables and every kind of bad input.
+#include "cli/depfile.hpp"
 #include "cli/lists.hpp"
 #include "pendulum/angle.hpp"
 #include "cli/table.hpp"
@@ -11,6 +12,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
+#include <fstream>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -19,6 +22,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <unistd.h>
 
 using namespace pendulum;
 using std::numbers::pi;
@@ -388,4 +393,48 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
     const auto p = run_cli("eval --theta0 3.5");
     EXPECT_NE(p.err.find("between 0 and pi"), std::string::npos) << p.err;
     EXPECT_NE(p.err.find("3.5"), std::string::npos) << p.err;
+}
+
+TEST(Depfile, MakeEscapesWhatMakeAndNinjaRead) {
+    EXPECT_EQ(cli::make_escaped("figures/c1.pdf"), "figures/c1.pdf");
+    EXPECT_EQ(cli::make_escaped("my figs/a#1$.pdf"), "my\\ figs/a\\#1$$.pdf");
+    EXPECT_EQ(cli::make_escaped("a\\b"), "a\\b");
+    for (const char* bad : {"a\nb", "a\\ b", "a\\"}) EXPECT_THROW(cli::make_escaped(bad), std::invalid_argument) << bad;
+    EXPECT_EQ(cli::make_rule({"a b", "c"}, {"d", "e"}), "a\\ b \\\n c: \\\n  d \\\n  e\n\nd:\n\ne:\n");
+}
+
+TEST(Depfile, ListsEveryOutputAndInputAndFollowsTheSpecsStyle) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("pendulum-depfile-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "specs" / "out dir");
+    std::ofstream(dir / "house.toml") << "# a house style\nbase = \"slides\"\n";
+    std::ofstream(dir / "specs" / "a.toml") << "[figure]\nstyle = \"../house.toml\"\n[[panel]]\nplot = \"period\"\nmethods = [\"exact\"]\n";
+    auto r = run_cli("render specs/a.toml fig1 -f svg,pdf_tex -o 'specs/out dir' --depfile 'specs/out dir/a.d'", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string rule = test_support::slurp(dir / "specs" / "out dir" / "a.d");
+    const std::string head = rule.substr(0, rule.find(':'));
+    for (const char* target : {"specs/out\\ dir/a.svg", "specs/out\\ dir/a.pdf_tex", "specs/out\\ dir/a.pdf",
+                               "specs/out\\ dir/c1-lowest.svg", "specs/out\\ dir/c1-lowest.pdf_tex"}) {
+        EXPECT_NE(head.find(target), std::string::npos) << target << " not a target of\n" << rule;
+    }
+    for (const char* input : {"  specs/a.toml", "  house.toml", "/pendulum-figures"}) {
+        EXPECT_NE(rule.find(input), std::string::npos) << input << " not an input of\n" << rule;
+    }
+    // The spec's style file draws it (slides' sans serif), the built-in figure keeps paper's.
+    const std::string styled = test_support::slurp(dir / "specs" / "out dir" / "a.svg");
+    auto same = run_cli("render specs/a.toml -f svg -o - --theme house.toml", dir);
+    EXPECT_EQ(same.out, styled);
+    auto paper = run_cli("render specs/a.toml -f svg -o - --theme paper", dir);
+    EXPECT_NE(paper.out, styled);
+    // --depfile-target names the stamp; a missing style file is bad input naming the spec's key.
+    r = run_cli("render specs/a.toml -f svg -o 'specs/out dir' --depfile s.d --depfile-target s.d", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(test_support::slurp(dir / "s.d").substr(0, 5), "s.d: ");
+    fs::remove(dir / "house.toml");
+    r = run_cli("render specs/a.toml -f svg -o 'specs/out dir'", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("[figure] style = house.toml"), std::string::npos) << r.err;
+    EXPECT_EQ(run_cli("render fig1 -o - -f svg --depfile x.d", dir).status, 2);
+    fs::remove_all(dir);
 }

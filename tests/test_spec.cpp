@@ -218,3 +218,22 @@ TEST(Spec, PlotTableHasOneRowPerKind) {
 }
 
 }  // namespace
+
+TEST(Spec, StyleFileIsRelativeToTheSpec) {
+    const std::string panel = "\n[[panel]]\nplot = \"period\"\nmethods = [\"exact\"]\n";
+    EXPECT_EQ(figures::parse_spec("[figure]\nstyle = \"house.toml\"" + panel, "docs/figs/a.toml").style,
+              "docs/figs/house.toml");
+    EXPECT_EQ(figures::parse_spec("[figure]\nstyle = \"../house.toml\"" + panel, "docs/figs/a.toml").style,
+              "docs/house.toml");
+    EXPECT_EQ(figures::parse_spec("[figure]\nstyle = \"house.toml\"" + panel, "a.toml").style, "house.toml");
+    EXPECT_EQ(figures::parse_spec(panel, "a.toml").style, "");
+    for (const char* bad : {"\"slides\"", "\".toml\"", "3"}) {
+        try {
+            figures::parse_spec(std::string("[figure]\nstyle = ") + bad + panel, "a.toml");
+            ADD_FAILURE() << "style = " << bad << " accepted";
+        } catch (const figures::spec_error& e) {
+            EXPECT_NE(std::string(e.what()).find("a.toml:2:9:"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("style"), std::string::npos) << e.what();
+        }
+    }
+}

@@ -33,6 +33,8 @@ command add_show_command(CLI::App& app);
 command add_plot_command(CLI::App& app);
 /// data: a figure's data as CSV.
 command add_data_command(CLI::App& app);
+/// describe: a figure in words (alt text and a description).
+command add_describe_command(CLI::App& app);
 /// complete (hidden): the words of the shell completions, from the tables.
 command add_complete_command(CLI::App& app);
 

@@ -83,7 +83,8 @@ int main(int argc, char** argv) {
     const std::vector<cli::command> commands = {
         cli::add_eval_command(app),   cli::add_trajectory_command(app), cli::add_render_command(app),
         cli::add_list_command(app),   cli::add_claims_command(app),     cli::add_show_command(app),
-        cli::add_plot_command(app),   cli::add_data_command(app),     cli::add_complete_command(app),
+        cli::add_plot_command(app),   cli::add_data_command(app),     cli::add_describe_command(app),
+        cli::add_complete_command(app),
     };
 
     try {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // render: figures, built in or spec files, into files of the formats asked for.
 #include "cli/commands.hpp"
+#include "cli/depfile.hpp"
 #include "cli/format_help.hpp"
 #include "cli/options.hpp"
 #include "cli/render_figures.hpp"
@@ -15,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <filesystem>
+#include <stdexcept>
 #include <memory>
 #include <utility>
 
@@ -47,6 +50,50 @@ std::pair<int, int> parse_frames(const std::string& text, int count) {
     const int b = number(text.substr(dots + 2), count);
     if (a > b) throw usage_error("--frames '" + text + "': the first frame comes after the last");
     return {a - 1, b - 1};
+}
+
+/// The program's own file, as the kernel knows it: a new build of it is a new input.
+std::string program_file() {
+    std::error_code ec;
+    const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) throw std::runtime_error("cannot find the program's file for --depfile: " + ec.message());
+    return self.string();
+}
+
+/// The --depfile rule: every output of the render (or --depfile-target) depends on the spec
+/// files, the style files used and the program.
+std::string dependency_rule(const render_options& o,
+                            const std::vector<std::pair<std::string, std::vector<const figures::entry*>>>& groups,
+                            const std::vector<figures::figure_file>& stills,
+                            const std::vector<figures::animation_job>& animations,
+                            const std::vector<std::string>& formats, std::optional<double> at) {
+    std::vector<std::string> inputs;
+    const auto add = [&](const std::string& file) {
+        if (std::find(inputs.begin(), inputs.end(), file) == inputs.end()) inputs.push_back(file);
+    };
+    // Spec files are the ids ending in .toml (as selected_figures reads them); built-in
+    // figures are in the program.
+    for (const auto& id : o.ids) {
+        if (id.ends_with(".toml")) add(id);
+    }
+    if (o.theme.ends_with(".toml")) add(o.theme);
+    for (const auto& g : groups) {
+        if (!g.first.empty()) add(g.first);
+    }
+    add(program_file());
+    std::vector<std::string> targets;
+    if (!o.depfile_target.empty()) {
+        targets.push_back(o.depfile_target);
+    } else {
+        for (const auto& [path, what] : figures::render_outputs(stills, animations, formats, o.dir, at.has_value())) {
+            targets.push_back(path.lexically_normal().string());
+        }
+    }
+    try {
+        return make_rule(targets, inputs);
+    } catch (const std::invalid_argument& e) {
+        throw usage_error(std::string("--depfile: ") + e.what());
+    }
 }
 
 }  // namespace
@@ -92,15 +139,42 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
         if (o.dpi) sets.push_back("dpi=" + format_double(*o.dpi));
         sets.push_back("size_px=" + o.size);
     }
-    const plot::theme theme = chosen_theme(o.theme.empty() ? "paper" : o.theme, sets);
-    // Animations are for slides: theirs unless a theme is asked for.
-    const plot::theme moving_theme = o.theme.empty() ? chosen_theme("slides", sets) : theme;
-    const double dpi = o.dpi.value_or(theme.dpi);
-    const double moving_dpi = o.dpi.value_or(moving_theme.dpi);
-    for (const double d : {dpi, moving_dpi}) {
-        if (!(d >= plot::min_dpi && d <= plot::max_dpi)) {
-            throw usage_error("--dpi " + format_double(d) + ": must be between " + format_double(plot::min_dpi) +
-                              " and " + format_double(plot::max_dpi));
+    const unsigned workers = chosen_jobs(o.jobs);
+    // The themes of a style: --theme over the spec's style file over paper (slides for
+    // animations), with --set on top.
+    const auto style_of = [&](const std::string& style_file) {
+        const std::string still = !o.theme.empty() ? o.theme : !style_file.empty() ? style_file : "paper";
+        const plot::theme theme = chosen_theme(still, sets);
+        // Animations are for slides: theirs unless a theme or style file is asked for.
+        const plot::theme moving_theme = still == "paper" && o.theme.empty() ? chosen_theme("slides", sets) : theme;
+        const double dpi = o.dpi.value_or(theme.dpi);
+        const double moving_dpi = o.dpi.value_or(moving_theme.dpi);
+        for (const double d : {dpi, moving_dpi}) {
+            if (!(d >= plot::min_dpi && d <= plot::max_dpi)) {
+                throw usage_error("--dpi " + format_double(d) + ": must be between " + format_double(plot::min_dpi) +
+                                  " and " + format_double(plot::max_dpi));
+            }
+        }
+        return figures::render_style{
+            theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes, workers}, moving_theme,
+            plot::output_options{moving_dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes, workers}};
+    };
+    // The figures grouped by their style file (one group, the command line's, with --theme).
+    std::vector<std::pair<std::string, std::vector<const figures::entry*>>> groups;
+    for (const auto* e : chosen) {
+        const std::string style_file = o.theme.empty() ? e->spec.style : std::string();
+        auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == style_file; });
+        if (it == groups.end()) it = groups.insert(groups.end(), {style_file, {}});
+        it->second.push_back(e);
+    }
+    std::vector<figures::render_style> styles;
+    for (const auto& g : groups) {
+        try {
+            styles.push_back(style_of(g.first));
+        } catch (const std::invalid_argument& e) {
+            // A style file that cannot be read or has problems is the spec's to correct.
+            if (g.first.empty()) throw;
+            throw usage_error("figure '" + g.second.front()->id + "' ([figure] style = " + g.first + "): " + e.what());
         }
     }
     figures::build_options build;
@@ -111,38 +185,22 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
         }
         build.amplitudes = parse_amplitudes(o.theta0, figures::max_amplitudes_per_panel);
     }
-    const unsigned workers = chosen_jobs(o.jobs);
-    const figures::render_style style{
-        theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes, workers}, moving_theme,
-        plot::output_options{moving_dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes, workers}};
     if (o.dir == "-") {
         // One still figure in one format, to standard output.
         if (chosen.size() != 1 || formats.size() != 1 || o.paper_files || chosen.front()->spec.animation) {
             throw usage_error("-o - writes one still figure in one format to standard output");
         }
-        return write_stdout(figures::render_one(*chosen.front(), build, theme, formats.front(), plot::output_options{dpi}));
+        if (!o.depfile.empty()) throw usage_error("--depfile names the files a render writes, and -o - writes none");
+        const figures::render_style& style = styles.front();
+        return write_stdout(figures::render_one(*chosen.front(), build, style.still_theme, formats.front(),
+                                                plot::output_options{style.still.dpi}));
     }
     check_output_dir(o.dir);
-
-    std::vector<const figures::entry*> stills;
-    std::vector<const figures::entry*> animations;
-    for (const auto* e : chosen) (e->spec.animation ? animations : stills).push_back(e);
-    if ((!o.frames.empty() || !o.at.empty()) && animations.empty()) {
+    if ((!o.frames.empty() || !o.at.empty()) &&
+        std::none_of(chosen.begin(), chosen.end(), [](const auto* e) { return e->spec.animation.has_value(); })) {
         throw usage_error("--frames and --at apply to animations, and none was chosen (see 'list')");
     }
     if (!o.frames.empty() && !o.at.empty()) throw usage_error("give --frames or --at, not both");
-    if (o.paper_files && !animations.empty()) throw usage_error("--paper-files applies to still figures, not to animations");
-    for (const char* key : {"figure_width_cm", "figure_height_cm", "size_px"}) {
-        if (o.paper_files && theme.given.contains(key)) {
-            throw usage_error(std::string(key) + " sizes a whole figure, and --paper-files writes each panel to a file "
-                              "of its own, sized as in the paper's source: set panel_width_cm instead");
-        }
-    }
-
-    const std::vector<figures::figure_file> jobs = figures::files_for(stills, formats, o.dir, o.paper_files, build);
-    if (jobs.empty() && animations.empty()) {
-        throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
-    }
     std::optional<double> at;
     if (!o.at.empty()) {
         try {
@@ -155,16 +213,51 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
             throw usage_error("--at " + o.at + ": a time t/T must be finite and at most 1e6 in size");
         }
     }
-    // Rasters too large for Cairo or for memory are refused before any work, and every
-    // animation is checked before any file is written.
-    figures::check_raster_sizes(chosen, formats, build, style);
-    std::vector<figures::animation_job> moving;
-    for (const auto* e : animations) {
-        const auto plan = figures::plan_animation(*e, build);
-        const auto [first, last] = o.frames.empty() ? std::pair{0, plan.frames - 1} : parse_frames(o.frames, plan.frames);
-        moving.push_back({e, plan, first, last});
+
+    // Every group's files, checked together before any work.
+    std::vector<std::vector<figures::figure_file>> jobs(groups.size());
+    std::vector<std::vector<figures::animation_job>> moving(groups.size());
+    std::vector<figures::figure_file> all_jobs;
+    std::vector<figures::animation_job> all_moving;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const plot::theme& theme = styles[g].still_theme;
+        std::vector<const figures::entry*> stills;
+        for (const auto* e : groups[g].second) {
+            if (e->spec.animation) {
+                const auto plan = figures::plan_animation(*e, build);
+                const auto [first, last] =
+                    o.frames.empty() ? std::pair{0, plan.frames - 1} : parse_frames(o.frames, plan.frames);
+                moving[g].push_back({e, plan, first, last});
+            } else {
+                stills.push_back(e);
+            }
+        }
+        if (o.paper_files && !moving[g].empty()) {
+            throw usage_error("--paper-files applies to still figures, not to animations");
+        }
+        for (const char* key : {"figure_width_cm", "figure_height_cm", "size_px"}) {
+            if (o.paper_files && theme.given.contains(key)) {
+                throw usage_error(std::string(key) + " sizes a whole figure, and --paper-files writes each panel to a "
+                                  "file of its own, sized as in the paper's source: set panel_width_cm instead");
+            }
+        }
+        jobs[g] = figures::files_for(stills, formats, o.dir, o.paper_files, build);
+        // Rasters too large for Cairo or for memory are refused before any work.
+        figures::check_raster_sizes(groups[g].second, formats, build, styles[g]);
+        all_jobs.insert(all_jobs.end(), jobs[g].begin(), jobs[g].end());
+        all_moving.insert(all_moving.end(), moving[g].begin(), moving[g].end());
     }
-    figures::write_render(jobs, moving, formats, o.dir, build, style, at);
+    if (all_jobs.empty() && all_moving.empty()) {
+        throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
+    }
+    figures::check_distinct_outputs(all_jobs, all_moving, formats, o.dir, at.has_value());
+    const std::string depfile =
+        o.depfile.empty() ? std::string() : dependency_rule(o, groups, all_jobs, all_moving, formats, at);
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        figures::write_render(jobs[g], moving[g], formats, o.dir, build, styles[g], at);
+    }
+    // Written last and always: its time is the time of the run, so make can use it as a stamp.
+    if (!o.depfile.empty()) plot::write_atomically(o.depfile, depfile);
     return 0;
 }
 
@@ -209,6 +302,13 @@ command add_render_command(CLI::App& app) {
         }
         cmd->add_option("--tex-sizes", ro->tex_sizes, help)->type_name("HOW");
     }
+    cmd->add_option("--depfile", ro->depfile, "Write a dependency FILE in Make syntax (as gcc -MD): the outputs "
+                                                "depend on the spec files, the style files and the program; for "
+                                                "make and ninja (see the README)")
+        ->type_name("FILE")->check(non_empty);
+    cmd->add_option("--depfile-target", ro->depfile_target, "The dependency file's target instead of the outputs "
+                                                              "(as gcc -MT): a stamp file, for make")
+        ->type_name("NAME")->check(non_empty)->needs("--depfile");
     cmd->add_flag("--paper-files", ro->paper_files,
                      "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
     cmd->add_option("--jobs", ro->jobs, jobs_help)->type_name("N");

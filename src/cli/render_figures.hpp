@@ -28,6 +28,8 @@ struct render_options {
     std::optional<double> tex_font_size;  // the document's font size, for pdf_tex and eps_tex
     std::string tex_sizes = "relative";  // how pdf_tex and eps_tex size their text
     std::optional<int> jobs;              // worker threads; PENDULUM_FIGURES_JOBS or the usable CPUs when not given
+    std::string depfile;         // where to write the Make rule of the run's outputs and inputs; empty for none
+    std::string depfile_target;  // the rule's target instead of the outputs (a stamp file)
 };
 
 /// Checks the options of `o` other than the ids and renders the chosen figures; returns the exit code.

@@ -72,17 +72,12 @@ std::string render_one(const entry& e, const build_options& build, const plot::t
     return plot::render(figures::build(e, one), theme, format, output);
 }
 
-void check_distinct_outputs(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
-                            const std::vector<std::string>& formats, const std::filesystem::path& dir, bool at) {
-    // Every file the render writes, with what writes it.
-    std::map<std::filesystem::path, std::string> outputs;
-    const auto add = [&](const std::filesystem::path& path, const std::string& what) {
-        const auto [it, fresh] = outputs.emplace(path.lexically_normal(), what);
-        if (!fresh) {
-            throw bad_input("two outputs of this render are " + path.string() + ": " + it->second + " and " + what +
-                            "; give them different names (paper_file, or the spec file's name)");
-        }
-    };
+std::vector<std::pair<std::filesystem::path, std::string>> render_outputs(const std::vector<figure_file>& stills,
+                                                                      const std::vector<animation_job>& animations,
+                                                                      const std::vector<std::string>& formats,
+                                                                      const std::filesystem::path& dir, bool at) {
+    std::vector<std::pair<std::filesystem::path, std::string>> outputs;
+    const auto add = [&](const std::filesystem::path& path, const std::string& what) { outputs.emplace_back(path, what); };
     for (const auto& f : stills) {
         const std::string what = f.panel < 0 ? "figure '" + f.figure->id + "'"
                                              : "figure '" + f.figure->id + "' panel " + std::to_string(f.panel + 1);
@@ -110,6 +105,19 @@ void check_distinct_outputs(const std::vector<figure_file>& stills, const std::v
             }
             add(dir / (m.figure->id + "." + f), what);
             if (!row.graphics.empty()) add(dir / (m.figure->id + "." + std::string(row.graphics)), what);
+        }
+    }
+    return outputs;
+}
+
+void check_distinct_outputs(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
+                            const std::vector<std::string>& formats, const std::filesystem::path& dir, bool at) {
+    std::map<std::filesystem::path, std::string> seen;
+    for (const auto& [path, what] : render_outputs(stills, animations, formats, dir, at)) {
+        const auto [it, fresh] = seen.emplace(path.lexically_normal(), what);
+        if (!fresh) {
+            throw bad_input("two outputs of this render are " + path.string() + ": " + it->second + " and " + what +
+                            "; give them different names (paper_file, or the spec file's name)");
         }
     }
 }

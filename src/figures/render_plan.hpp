@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace figures {
@@ -53,6 +54,12 @@ struct animation_job {
     int first = 0;                  ///< the first frame to write
     int last = 0;                   ///< the last frame to write
 };
+
+/// Every file a render writes, in the order written, with what writes it (for messages).
+std::vector<std::pair<std::filesystem::path, std::string>> render_outputs(const std::vector<figure_file>& stills,
+                                                                      const std::vector<animation_job>& animations,
+                                                                      const std::vector<std::string>& formats,
+                                                                      const std::filesystem::path& dir, bool at);
 
 /// Throws bad_input, before any work, if two outputs of a render would be the same file:
 /// two panels with one paper_file, a spec's paper_file equal to a built-in's, a figure's

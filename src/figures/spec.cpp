@@ -38,7 +38,7 @@ std::string join_problems(const std::vector<spec_problem>& problems) {
 
 /// Keys every panel takes.
 constexpr std::string_view common_panel_keys = "plot title x_label y_label y_range paper_file line";
-constexpr std::string_view figure_keys = "columns panel_width_cm panel_aspect legend title description";
+constexpr std::string_view figure_keys = "columns panel_width_cm panel_aspect legend title description style";
 constexpr std::string_view pendulum_keys = "length_m g";
 constexpr std::string_view top_keys = "figure pendulum animation panel";
 constexpr std::string_view animation_keys = "fps periods duration_s speed clock";
@@ -469,6 +469,14 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
             if (auto v = r.choice(*t, "legend", legend_modes)) f.legend = *v;
             if (auto v = r.label(*t, "title")) f.title = *v;
             if (auto v = r.string(*t, "description")) f.description = *v;
+            if (auto v = r.string(*t, "style")) {
+                if (!v->ends_with(".toml") || v->size() == 5) {
+                    r.problem(*t->get("style"), "'style' names a style file NAME.toml, relative to the spec; "
+                                                "a built-in theme is chosen with --theme");
+                } else {
+                    f.style = (std::filesystem::path(file).parent_path() / *v).lexically_normal().string();
+                }
+            }
         } else {
             r.problem(*n, "'figure' must be a table: [figure]");
         }

@@ -133,6 +133,7 @@ struct figure_spec {
     legend_mode legend = legend_mode::first;    ///< which panels carry a legend
     std::string title;                          ///< TeX label drawn above the panels, and the documents' title
     std::string description;                    ///< one line of plain text for lists and alt text
+    std::string style;                          ///< its style file, relative to the working directory; empty for none
     std::optional<pendulum_spec> pendulum;      ///< physical units
     std::optional<animation_spec> animation;    ///< present: the figure is an animation
     std::vector<panel_spec> panels;             ///< at least one

@@ -57,12 +57,12 @@ _pendulum_figures() {
         --separatrix) COMPREPLY=($(compgen -W "true false" -- "$cur")); return ;;
         --legend) COMPREPLY=($(compgen -W "each first none" -- "$cur")); return ;;
         --harmonics|--orders|--trail|--y-range|--x-label|--y-label|--panel-title|--title|--size) return ;;
-        --theta0|--at|--order|--dpi|--samples|--periods|--range|--frames|--name|--harmonic|--length|--g|--tex-font-size) return ;;
+        --theta0|--omega0|--energy|--at|--order|--dpi|--samples|--periods|--range|--frames|--name|--harmonic|--length|--g|--tex-font-size) return ;;
     esac
     local options=""
     case $command in
-        eval) options="--theta0 --order --method --length --g --format --help --help-all" ;;
-        trajectory) options="--theta0 --method --order --at --samples --periods --format --help --help-all" ;;
+        eval) options="--theta0 --omega0 --energy --order --method --length --g --format --help --help-all" ;;
+        trajectory) options="--theta0 --omega0 --energy --time --length --g --method --order --at --samples --periods --format --help --help-all" ;;
         claims) options="--format --help --help-all" ;;
         list) options="--markdown --help --help-all" ;;
         show) options="--theme --help --help-all" ;;

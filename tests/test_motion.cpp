@@ -97,6 +97,17 @@ TEST(Motion, LibrationIsTheExactSolutionOfItsAmplitude) {
     EXPECT_DOUBLE_EQ(motion::from_energy(1.5).period_ratio(), exact_solution(2 * std::asin(std::sqrt(0.75))).period_ratio());
 }
 
+TEST(Motion, LibrationClockGivesTheSameMotion) {
+    for (const pendulum_state start : {pendulum_state{1.0, -1.5}, pendulum_state{-20.0, 1.0}, pendulum_state{7.0, 0.5}}) {
+        const motion m = motion::from_state(start);
+        for (double t : {0.0, 0.4, -3.0, 9.0}) {
+            EXPECT_NEAR(m.libration_center() + m.libration().theta(m.libration_clock(t)), m.theta(t), 1e-14)
+                << start.theta << " " << start.omega << " " << t;
+        }
+    }
+    EXPECT_THROW((void)motion::from_energy(2.0).libration_clock(0.0), domain_error);
+}
+
 TEST(Motion, RotationRisesAndItsRemainderIsPeriodic) {
     const motion m = motion::from_state({0.0, 2.2});
     const double T = m.period();

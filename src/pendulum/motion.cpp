@@ -208,6 +208,17 @@ const exact_solution& motion::libration() const {
     return *libration_;
 }
 
+double motion::libration_clock(double w0_t) const {
+    (void)libration();
+    // Backwards, theta = -theta_lib(t + offset) = theta_lib(t + offset + 2 K).
+    return w0_t + offset_ + (mirror_ < 0 ? 2.0 * quarter_ : 0.0);
+}
+
+double motion::libration_center() const {
+    (void)libration();
+    return mirror_ * turns_ * two_pi_hi + mirror_ * turns_ * two_pi_lo;
+}
+
 double motion::forward_theta(double tau) const {
     switch (kind_) {
     case regime::libration: return libration_->theta(tau);
@@ -238,11 +249,14 @@ double motion::forward_velocity(double tau) const {
 
 double motion::theta(double w0_t) const {
     if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
+    // At the start the angle is what was given, not its round trip through the time offset.
+    if (w0_t == 0) return start_.theta;
     return mirror_ * (turns_ * two_pi_hi + forward_theta(w0_t + offset_) + turns_ * two_pi_lo);
 }
 
 double motion::velocity(double w0_t) const {
     if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
+    if (w0_t == 0) return start_.omega;
     return mirror_ * forward_velocity(w0_t + offset_);
 }
 

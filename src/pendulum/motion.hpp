@@ -80,6 +80,13 @@ public:
     /// The libration's exact solution (released at its amplitude); throws as amplitude() does.
     const exact_solution& libration() const;
 
+    /// A libration's own clock at time w0 t: the time since it was at its amplitude +theta0,
+    /// where the paper's solutions start (theta = center + libration().theta(clock)); throws as
+    /// amplitude() does.
+    double libration_clock(double w0_t) const;
+    /// The multiple of 2 pi a libration swings about; throws as amplitude() does.
+    double libration_center() const;
+
     /// theta at time w0 t, unwrapped (continuous in t).
     double theta(double w0_t) const;
     /// theta'/w0 at time w0 t.

@@ -67,7 +67,7 @@ _pendulum_figures() {
         list) options="--markdown --help --help-all" ;;
         show) options="--theme --help --help-all" ;;
         render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --help --help-all" ;;
-        plot) options="--theta0 --methods --range --time --harmonic --harmonics --orders --y --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --help --help-all" ;;
+        plot) options="--theta0 --energy --omega0 --methods --range --time --harmonic --harmonics --orders --y --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --help --help-all" ;;
         data) options="-o --output --theta0 --help --help-all" ;;
     esac
     if [[ $cur == -* ]]; then

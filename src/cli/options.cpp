@@ -103,9 +103,9 @@ std::vector<start_option> parse_starts(const std::string& theta0, const std::str
         return starts;
     }
     if (omega0.empty()) {
-        for (const auto& a : parse_amplitude_values(theta0)) {
-            starts.push_back({"theta0 = " + format_amplitude(a), pendulum::motion::from_amplitude(a)});
-        }
+        for_each_amplitude(theta0, [&](const std::string& item, const pendulum::amplitude& a) {
+            starts.push_back({"--theta0 " + shown_text(item), pendulum::motion::from_amplitude(a)});
+        });
         return starts;
     }
     const auto angles = parse_values(theta0, "--theta0", true);

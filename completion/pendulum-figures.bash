@@ -57,17 +57,17 @@ _pendulum_figures() {
         --separatrix) COMPREPLY=($(compgen -W "true false" -- "$cur")); return ;;
         --legend) COMPREPLY=($(compgen -W "each first none" -- "$cur")); return ;;
         --harmonics|--orders|--trail|--y-range|--x-label|--y-label|--panel-title|--title|--size) return ;;
-        --theta0|--at|--order|--dpi|--samples|--periods|--range|--frames|--name|--harmonic|--length|--g|--tex-font-size|--jobs|--columns) return ;;
+        --theta0|--omega0|--energy|--at|--order|--dpi|--samples|--periods|--range|--frames|--name|--harmonic|--length|--g|--tex-font-size|--jobs|--columns) return ;;
     esac
     local options=""
     case $command in
-        eval) options="--theta0 --order --method --length --g --format --columns --help --help-all" ;;
-        trajectory) options="--theta0 --method --order --at --samples --periods --format --help --help-all" ;;
+        eval) options="--theta0 --omega0 --energy --order --method --length --g --format --columns --help --help-all" ;;
+        trajectory) options="--theta0 --omega0 --energy --time --length --g --method --order --at --samples --periods --format --help --help-all" ;;
         claims) options="--format --help --help-all" ;;
         list) options="--markdown --help --help-all" ;;
         show) options="--theme --help --help-all" ;;
         render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --jobs --help --help-all" ;;
-        plot) options="--theta0 --methods --range --time --harmonic --harmonics --orders --y --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --help --help-all" ;;
+        plot) options="--theta0 --energy --omega0 --methods --range --time --harmonic --harmonics --orders --y --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --help --help-all" ;;
         data) options="-o --output --theta0 --help --help-all" ;;
         describe) options="--alt --help --help-all" ;;
     esac

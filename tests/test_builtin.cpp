@@ -26,7 +26,7 @@ using namespace figures;
 figure_spec parsed(const builtin_spec& b) { return parse_spec(b.text, std::string(b.id) + ".toml"); }
 
 TEST(Builtin, EverySpecReadsAndBuilds) {
-    ASSERT_EQ(builtin_specs().size(), 14u);
+    ASSERT_EQ(builtin_specs().size(), 15u);
     for (const auto& b : builtin_specs()) {
         const auto spec = parsed(b);
         EXPECT_EQ(spec.id, b.id);

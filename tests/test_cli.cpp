@@ -6,6 +6,7 @@
 #include "cli/table.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
+#include "pendulum/motion.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
@@ -306,12 +307,20 @@ TEST(Cli, EvalJson) {
     EXPECT_THROW(parse_json_table(r.out + "]"), std::runtime_error);
 }
 
+/// The lines of a command's table, checked: exit 0, the header and `rows` rows (else empty).
+std::vector<std::string> table_lines(const std::string& args, const std::string& header, std::size_t rows) {
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.status, 0) << args << ": " << r.err;
+    auto l = lines(r.out);
+    EXPECT_EQ(l.size(), rows + 1) << args;
+    if (l.size() != rows + 1) return {};
+    EXPECT_EQ(l[0], header) << args;
+    return l;
+}
+
 TEST(Cli, TrajectoryMethodsAtTheSamePhysicalTime) {
-    const auto r = run_cli("trajectory --theta0 9pi/10 --method second --at 0,0.25,0.5");
-    ASSERT_EQ(r.status, 0) << r.err;
-    const auto l = lines(r.out);
-    ASSERT_EQ(l.size(), 4u);
-    EXPECT_EQ(l[0], "t_over_T,theta");
+    const auto l = table_lines("trajectory --theta0 9pi/10 --method second --at 0,0.25,0.5", "t_over_T,theta", 3);
+    ASSERT_FALSE(l.empty());
     const exact_solution e(parse_amplitude("9pi/10"));
     const auto s = second_order(9 * pi / 10);
     EXPECT_EQ(numbers(l[2])[1], s.theta(0.25 * 4 * e.quarter_period()));
@@ -331,6 +340,45 @@ TEST(Cli, TrajectoryMethodsAtTheSamePhysicalTime) {
     const auto o = run_cli("trajectory --theta0 1 --method order --order 6 --at 0.1 --format json");
     EXPECT_EQ(o.status, 0) << o.err;
     EXPECT_NE(o.out.find("\"t_over_T\": 0.1"), std::string::npos);
+}
+
+TEST(Cli, StatesAndEnergiesInAllRegimes) {
+    const auto l = table_lines("eval --theta0 0 --omega0 1.9,2,2.2",
+                               "theta0,omega0,energy,regime,amplitude,period_exact,revolution_period", 3);
+    ASSERT_FALSE(l.empty());
+    const auto lib = motion::from_state({0.0, 1.9});
+    EXPECT_EQ(l[1], "0,1.9,1.805,libration," + format_double(lib.amplitude().radians()) + "," +
+                        format_double(lib.period_ratio()) + ",");
+    EXPECT_EQ(l[2], "0,2,2,separatrix,,,");
+    EXPECT_EQ(l[3], "0,2.2,2.4200000000000004,rotation,,," + format_double(motion::from_state({0.0, 2.2}).period_ratio()));
+
+    const auto m = run_cli("eval --energy 'pi/2' --method second");
+    ASSERT_EQ(m.status, 0) << m.err;
+    EXPECT_NE(m.out.find(",libration,"), std::string::npos) << m.out;
+
+    const auto bad = run_cli("eval --energy 2.5 --method second");
+    EXPECT_NE(bad.err.find("librations only"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("--method exact"), std::string::npos) << bad.err;
+    const auto negative = run_cli("eval --energy -0.5");
+    EXPECT_NE(negative.err.find("must be > 0"), std::string::npos) << negative.err;
+
+    // A rotation's angle rises by 2 pi per revolution; the start is the state as given.
+    const auto tl = table_lines("trajectory --theta0 0 --omega0 2.2 --at 0,1,2", "t_over_T,theta,omega", 3);
+    ASSERT_FALSE(tl.empty());
+    EXPECT_EQ(numbers(tl[1]), (std::vector<double>{0, 0, 2.2}));
+    EXPECT_NEAR(numbers(tl[2])[1], 2 * pi, 1e-14);
+    EXPECT_NEAR(numbers(tl[3])[1], 4 * pi, 1e-14);
+
+    const auto sep = run_cli("trajectory --energy 2 --time t/T0 --at 1");
+    ASSERT_EQ(sep.status, 0) << sep.err;
+    EXPECT_EQ(lines(sep.out)[0], "t_over_T0,theta,omega");
+    EXPECT_NEAR(numbers(lines(sep.out)[1])[1], 4 * std::atan(std::exp(2 * pi)) - pi, 1e-15);
+    const auto nosep = run_cli("trajectory --energy 2 --at 1");
+    EXPECT_NE(nosep.err.find("--time t/T0"), std::string::npos) << nosep.err;
+
+    const auto sec = run_cli("trajectory --theta0 0 --omega0 1 --time t/s --length 9.80665 --at 6.283185307179586");
+    ASSERT_EQ(sec.status, 0) << sec.err;
+    EXPECT_NEAR(numbers(lines(sec.out)[1])[1], motion::from_state({0.0, 1.0}).theta(2 * pi), 1e-14);
 }
 
 TEST(Cli, HelpTeaches) {
@@ -379,6 +427,20 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
         "trajectory --theta0 1 --at 0.1 --samples 3",
         "trajectory --theta0 1,2 --at 0.1",
         "trajectory --theta0 pi --at 0.1",
+        "eval --energy -1",
+        "eval --energy 0",
+        "eval --energy 1 --theta0 1",
+        "eval --omega0 1",
+        "eval --theta0 0 --omega0 0",
+        "eval --theta0 0,1 --omega0 1,2,3",
+        "eval --energy 2.5 --method second",
+        "eval --energy 2 --order 3",
+        "trajectory --theta0 0 --omega0 2.2 --method second --at 0.1",
+        "trajectory --energy 2 --at 0.1",
+        "trajectory --energy 1 --time t/x --at 0.1",
+        "trajectory --energy 1 --time t/s --at 0.1",
+        "trajectory --energy 1 --length 1 --at 0.1",
+        "trajectory --theta0 0 --omega0 1,2 --at 0.1",
     };
     for (const char* args : cases) {
         const auto r = run_cli(args);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Figure specs: what a good spec reads as, and one message per problem for bad ones.
 #include "figures/spec.hpp"
+#include "figures/spec_build.hpp"
 
 #include <gtest/gtest.h>
 
@@ -237,3 +238,60 @@ TEST(Spec, StyleFileIsRelativeToTheSpec) {
         }
     }
 }
+
+namespace {
+
+using figures::build_figure;
+
+TEST(SpecStarts, PhaseOfEnergiesInAllRegimesWrapsAtTheEdges) {
+    const auto f = parse_spec("[[panel]]\nplot = \"phase\"\nenergy = [0.5, 2, \"2.5\"]\nseparatrix = false\n", "p.toml");
+    const auto& p = f.panels.front();
+    ASSERT_EQ(p.starts.size(), 3u);
+    EXPECT_EQ(p.starts[1].motion.kind(), pendulum::regime::separatrix);
+    EXPECT_EQ(p.starts[2].motion.kind(), pendulum::regime::rotation);
+    ASSERT_EQ(p.methods.size(), 1u);  // exact, the one method for every regime
+    const auto fig = build_figure(f);
+    const auto& panel = fig.panels.front();
+    EXPECT_EQ(panel.x.min, -pi);
+    EXPECT_EQ(panel.x.max, pi);
+    // The libration's closed orbit, then two branches each for the separatrix and the rotation,
+    // the second without a legend entry; every branch runs from -pi to pi without turning back,
+    // so nothing is drawn across the panel.
+    ASSERT_EQ(panel.data.size(), 5u);
+    EXPECT_NE(panel.data[0].label.markup.find("libration"), std::string::npos);
+    EXPECT_NE(panel.data[3].label.markup.find("rotation"), std::string::npos);
+    EXPECT_TRUE(panel.data[4].label.markup.empty());
+    for (std::size_t i = 1; i < 5; ++i) {
+        const auto& s = panel.data[i];
+        EXPECT_EQ(s.x.front(), -pi);
+        EXPECT_EQ(s.x.back(), pi);
+        for (std::size_t k = 1; k < s.x.size(); ++k) EXPECT_GT(s.x[k], s.x[k - 1]);
+        // Energy: (theta'/w0)^2/2 + 1 - cos(theta) = E.
+        const double E = i < 3 ? 2.0 : 2.5;
+        for (std::size_t k = 0; k < s.x.size(); k += 37) {
+            EXPECT_NEAR(s.y[k] * s.y[k] / 2 + 1 - std::cos(s.x[k]), E, 1e-13);
+        }
+    }
+}
+
+TEST(SpecStarts, BadStartsSayWhatWorks) {
+    EXPECT_NE(problems_of("[[panel]]\nplot = \"phase\"\nenergy = [2.5]\nmethods = [\"lowest\"]\n").find("librations only"),
+              std::string::npos);
+    EXPECT_NE(problems_of("[[panel]]\nplot = \"phase\"\nenergy = [-1]\n").find("must be > 0"), std::string::npos);
+    EXPECT_NE(problems_of("[[panel]]\nplot = \"phase\"\nomega0 = [1]\n").find("needs theta0"), std::string::npos);
+    EXPECT_NE(problems_of("[[panel]]\nplot = \"trajectory\"\nenergy = 2\n").find("t/T0"), std::string::npos);
+    EXPECT_NE(problems_of("[[panel]]\nplot = \"trajectory\"\nenergy = [1, 3]\n").find("one start"), std::string::npos);
+    EXPECT_EQ(problems_of("[[panel]]\nplot = \"trajectory\"\nenergy = 2\ntime = \"t/T0\"\n"), "accepted");
+    EXPECT_EQ(problems_of("[[panel]]\nplot = \"trajectory\"\ntheta0 = 0\nomega0 = 1.5\nmethods = [\"exact\", \"second\"]\n"),
+              "accepted");
+}
+
+TEST(SpecStarts, TrajectoryOfARotationRises) {
+    const auto f = parse_spec("[[panel]]\nplot = \"trajectory\"\ntheta0 = 0\nomega0 = 2.2\nrange = [0, 2]\n", "t.toml");
+    const auto fig = build_figure(f);
+    const auto& s = fig.panels.front().data.front();
+    for (std::size_t k = 1; k < s.y.size(); ++k) EXPECT_GT(s.y[k], s.y[k - 1]);
+    EXPECT_NEAR(s.y.back(), 4 * pi, 1e-13);
+}
+
+}  // namespace

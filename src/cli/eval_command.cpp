@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,6 +36,8 @@ void warn_breakdown(const amplitude& theta0, const std::vector<int>& levels) {
 
 struct eval_options {
     std::string theta0;
+    std::string omega0;
+    std::string energy;
     std::vector<std::string> orders;
     std::vector<std::string> methods;
     std::string format = "csv";
@@ -74,20 +77,113 @@ std::pair<std::vector<const eval_column*>, bool> chosen_columns(const eval_optio
     return {fixed, seconds};
 }
 
-/// Writes eval's table row by row: every input is checked first (nothing is written for
-/// bad input), then each amplitude's row goes out as it is computed.
-void eval_stream(std::ostream& out, const eval_options& o) {
-    const auto format = parse_table_format(o.format);
-    const auto amplitudes = parse_amplitude_values(o.theta0);
-    const std::vector<int> orders = parse_orders(list_items(o.orders));
+/// The methods of --method, each once.
+std::vector<method_choice> parse_methods(const std::vector<std::string>& given) {
     std::vector<method_choice> methods;
-    for (const auto& text : list_items(o.methods)) {
+    for (const auto& text : list_items(given)) {
         if (text.empty()) throw usage_error("--method: empty value; see 'list' for the methods");
         const auto m = parse_method_option("--method", text);
         if (std::none_of(methods.begin(), methods.end(), [&](const method_choice& c) { return c.text() == m.text(); })) {
             methods.push_back(m);
         }
     }
+    return methods;
+}
+
+/// T0 in seconds for --length and --g; 0 without --length.
+double small_period_seconds(const eval_options& o) {
+    if (!o.length) return 0.0;
+    if (!(*o.length > 0 && *o.length <= 1e6)) {
+        throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
+    }
+    if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
+    return 2 * std::acos(-1.0) * std::sqrt(*o.length / o.g);
+}
+
+/// The highest level of the iteration that --order and --method order:N ask for (-1: none).
+int highest_level(const std::vector<int>& orders, const std::vector<method_choice>& methods) {
+    int highest = -1;
+    for (int n : orders) highest = std::max(highest, n);
+    for (const auto& m : methods) {
+        if (m.row->role == method_role::iterated) highest = std::max(highest, m.n);
+    }
+    return highest;
+}
+
+/// The periods of the --order and --method columns at an amplitude; the levels of the
+/// iteration without a period (their fields are empty) go into `broken`.
+std::vector<double> method_periods(const amplitude& theta0, const std::vector<int>& orders,
+                                   const std::vector<method_choice>& methods, int highest, std::vector<int>& broken) {
+    const auto levels = highest >= 0 ? iterated_sequence(theta0, highest) : std::vector<fourier_solution>{};
+    broken.clear();
+    const auto level_period = [&](int n) {
+        const auto& level = levels[static_cast<std::size_t>(n)];
+        if (!level.exists() && std::find(broken.begin(), broken.end(), n) == broken.end()) broken.push_back(n);
+        return level.period_ratio();
+    };
+    std::vector<double> periods;
+    for (int n : orders) periods.push_back(level_period(n));
+    for (const auto& m : methods) {
+        periods.push_back(m.row->role == method_role::iterated ? level_period(m.n) : method_period(m, theta0));
+    }
+    return periods;
+}
+
+/// The columns of eval for starts (states or energies), before --order, --method and T_s.
+constexpr const char* start_columns[] = {"theta0", "omega0", "energy", "regime", "amplitude", "period_exact",
+                                         "revolution_period"};
+
+/// eval for states and energies: regime, energy, amplitude or revolution period per start.
+void eval_starts(std::ostream& out, const eval_options& o, const std::vector<int>& orders,
+                 const std::vector<method_choice>& methods, double small_period_s) {
+    if (!o.columns.empty()) {
+        throw usage_error("--columns chooses among the columns of amplitudes (--theta0 alone); with --omega0 or "
+                          "--energy every column is written");
+    }
+    const auto format = parse_table_format(o.format);
+    const auto starts = parse_starts(o.theta0, o.omega0, o.energy);
+    for (const auto& start : starts) {
+        for (const auto& m : methods) check_method_applies(m, start);
+        if (!orders.empty() && start.motion.kind() != regime::libration) {
+            check_method_applies(parse_method("order:" + std::to_string(orders.front())), start);
+        }
+    }
+    std::vector<std::string> columns(std::begin(start_columns), std::end(start_columns));
+    for (int n : orders) columns.push_back("period_order" + std::to_string(n));
+    for (const auto& m : methods) columns.push_back("period_" + m.text());
+    if (o.length) columns.push_back("T_s");
+    const int highest = highest_level(orders, methods);
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    table_writer writer(out, columns, format);
+    for (const auto& start : starts) {
+        const auto& m = start.motion;
+        const bool libration = m.kind() == regime::libration;
+        const auto ratio = m.has_period() ? m.period_ratio() : none;
+        std::vector<field> row{m.start().theta, m.start().omega, m.energy(), std::string(row_of(m.kind()).name),
+                               libration ? m.amplitude().radians() : none, libration ? ratio : none,
+                               m.kind() == regime::rotation ? ratio : none};
+        std::vector<int> broken;
+        if (libration) {
+            for (double x : method_periods(m.amplitude(), orders, methods, highest, broken)) row.emplace_back(x);
+        }
+        if (o.length) row.emplace_back(small_period_s * ratio);
+        writer.record(row);
+        if (!broken.empty()) {
+            writer.flush();  // the warning follows its row
+            warn_breakdown(m.amplitude(), broken);
+        }
+    }
+    writer.finish();
+}
+
+void eval_stream(std::ostream& out, const eval_options& o) {
+    const auto format = parse_table_format(o.format);
+    const std::vector<int> orders = parse_orders(list_items(o.orders));
+    const std::vector<method_choice> methods = parse_methods(o.methods);
+    const double small_period_s = small_period_seconds(o);
+    if (!o.omega0.empty() || !o.energy.empty()) return eval_starts(out, o, orders, methods, small_period_s);
+    if (o.theta0.empty()) throw usage_error("give --theta0 (amplitudes, or with --omega0 states) or --energy");
+    const auto amplitudes = parse_amplitude_values(o.theta0);
     const auto [fixed, seconds] = chosen_columns(o);
     // Only the solutions the chosen columns read are computed.
     unsigned needs = seconds ? static_cast<unsigned>(need_exact) : 0u;
@@ -96,37 +192,18 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     for (const auto* c : fixed) columns.emplace_back(c->name);
     for (int n : orders) columns.push_back("period_order" + std::to_string(n));
     for (const auto& m : methods) columns.push_back("period_" + m.text());
-    double small_period_s = 0;
-    if (o.length) {
-        if (!(*o.length > 0 && *o.length <= 1e6)) {
-            throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
-        }
-        if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
-        small_period_s = 2 * std::acos(-1.0) * std::sqrt(*o.length / o.g);
-        if (seconds) columns.emplace_back(seconds_column);
-    }
+    if (seconds) columns.emplace_back(seconds_column);
     // The iteration is computed once per amplitude, to the highest level asked for, and
     // every --order and --method order:N column is read off that one sequence.
-    int highest = -1;
-    for (int n : orders) highest = std::max(highest, n);
-    for (const auto& m : methods) {
-        if (m.row->role == method_role::iterated) highest = std::max(highest, m.n);
-    }
+    const int highest = highest_level(orders, methods);
     table_writer writer(out, columns, format);
     std::vector<double> row;
+    std::vector<int> broken;
     for (const auto& value : amplitudes) {
         const eval_point point(value, needs);
-        const auto levels = highest >= 0 ? iterated_sequence(value, highest) : std::vector<fourier_solution>{};
-        std::vector<int> broken;
-        const auto level_period = [&](int n) {
-            const auto& level = levels[static_cast<std::size_t>(n)];
-            if (!level.exists() && std::find(broken.begin(), broken.end(), n) == broken.end()) broken.push_back(n);
-            return level.period_ratio();
-        };
         row.clear();
         for (const auto* c : fixed) row.push_back(c->value(point));
-        for (int n : orders) row.push_back(level_period(n));
-        for (const auto& m : methods) row.push_back(m.row->role == method_role::iterated ? level_period(m.n) : method_period(m, value));
+        for (double x : method_periods(value, orders, methods, highest, broken)) row.push_back(x);
         if (seconds) row.push_back(small_period_s * point.exact->period_ratio());
         writer.row(row);
         if (!broken.empty()) {
@@ -143,8 +220,14 @@ command add_eval_command(CLI::App& app) {
     auto ev = std::make_shared<eval_options>();
     auto* cmd = app.add_subcommand(
         "eval", "Print periods T/T0 and Fourier coefficients, exact and approximate, per amplitude.");
-    cmd->add_option("--theta0", ev->theta0, "Amplitudes, a comma-separated LIST of angles")
-        ->required()
+    cmd->add_option("--theta0", ev->theta0,
+                    "Amplitudes, a comma-separated LIST of angles; with --omega0 the start angles of states")
+        ->type_name("LIST")->check(non_empty);
+    cmd->add_option("--omega0", ev->omega0,
+                    "Initial velocities theta'/w0 of states started at --theta0, a LIST (any sign)")
+        ->type_name("LIST")->check(non_empty);
+    cmd->add_option("--energy", ev->energy,
+                    "Energies E/(m g L) of launches from the bottom, a LIST (2 is the separatrix)")
         ->type_name("LIST")->check(non_empty);
     cmd->add_option("--order", ev->orders,
                      "Add a column period_orderN for the iteration to order N (0.." +
@@ -172,8 +255,15 @@ command add_eval_command(CLI::App& app) {
                  "Close to pi (from pi - 6.995e-4) some levels of the iteration have lambda = (w/w0)^2 < 0, "
                  "so no period: at pi - 1e-6 the orders 6, 8, 16 and 17. That field is left empty (null in "
                  "JSON), a warning on standard error names the amplitude and the orders, and the exit status "
-                 "stays 0: the table is complete, the value does not exist.\n\n"
+                 "stays 0: the table is complete, the value does not exist.\n\n" + start_help +
+                 "\n\nWith --omega0 or --energy the columns are: theta0 and omega0 (the start), energy, regime "
+                 "(libration, separatrix or rotation), amplitude and period_exact (T/T0, librations only), "
+                 "revolution_period (T_rev/T0, rotations only); a field that does not exist for the regime is "
+                 "empty (null in JSON). --order and --method apply to librations only: on another regime they "
+                 "are an error.\n\n"
                  "Examples:\n"
+                 "  pendulum-figures eval --theta0 0 --omega0 1.9,2,2.2\n"
+                 "  pendulum-figures eval --energy 0.5,1.5,2,2.5\n"
                  "  pendulum-figures eval --theta0 'pi/2,9pi/10' --order 12\n"
                  "  pendulum-figures eval --theta0 0.99pi --order 0..40\n"
                  "  pendulum-figures eval --theta0 170deg --method kidd-fogg,lima-arun,ganley,agm:2\n"

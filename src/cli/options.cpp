@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
+#include <utility>
 #include <unistd.h>
 
 namespace pendulum::cli {
@@ -78,6 +80,86 @@ bool read_line(std::istream& in, std::string& line) {
         // Past the limit the caller refuses the line: reading on could take forever (/dev/zero).
         if (line.size() > max_list_line_bytes) return true;
     }
+}
+
+const char* const start_help =
+    "A start is an amplitude (--theta0 alone: released at rest), a state (--theta0 ANGLE with --omega0 W, the "
+    "initial velocity theta'/w0, any angle and either sign) or an energy (--energy E in units of m g L from the "
+    "bottom, launched from the bottom forwards). E < 2 is a libration, E = 2 the separatrix (the top is reached "
+    "only as t -> infinity: no period), E > 2 a rotation over the top (its period is one revolution, T_rev).";
+
+namespace {
+
+/// The values of a list option of expressions (angles, with deg, or plain numbers), as typed.
+std::vector<std::pair<std::string, double>> parse_values(const std::string& given, const std::string& option,
+                                                         bool angle) {
+    std::vector<std::pair<std::string, double>> values;
+    for_each_item(given, option, [&](const std::string& item) {
+        try {
+            values.emplace_back(item, angle ? parse_angle(item) : parse_expression(item));
+        } catch (const std::invalid_argument& e) {
+            throw usage_error(option + " '" + shown_text(item.substr(0, 80)) + "': " + e.what());
+        }
+    });
+    return values;
+}
+
+start_option start_of(std::string text, const std::function<pendulum::motion()>& make) {
+    try {
+        return {text, make()};
+    } catch (const domain_error& e) {
+        throw usage_error(text + ": " + e.what());
+    }
+}
+
+}  // namespace
+
+std::vector<start_option> parse_starts(const std::string& theta0, const std::string& omega0, const std::string& energy) {
+    if (!energy.empty() && (!theta0.empty() || !omega0.empty())) {
+        throw usage_error("--energy launches from the bottom: give either --energy E or --theta0 ANGLE (with --omega0 W "
+                          "for a state), not both");
+    }
+    if (energy.empty() && theta0.empty()) {
+        throw usage_error(omega0.empty() ? "give --theta0 (an amplitude, or with --omega0 a state) or --energy"
+                                         : "--omega0 needs the start angle --theta0 too (--theta0 0 launches from the bottom)");
+    }
+    std::vector<start_option> starts;
+    if (!energy.empty()) {
+        for (const auto& [text, e] : parse_values(energy, "--energy", false)) {
+            starts.push_back(start_of("energy = " + text, [e = e] { return pendulum::motion::from_energy(e); }));
+        }
+        return starts;
+    }
+    if (omega0.empty()) {
+        for_each_amplitude(theta0, [&](const std::string& item, const pendulum::amplitude& a) {
+            starts.push_back({"--theta0 " + shown_text(item), pendulum::motion::from_amplitude(a)});
+        });
+        return starts;
+    }
+    const auto angles = parse_values(theta0, "--theta0", true);
+    const auto speeds = parse_values(omega0, "--omega0", false);
+    if (angles.size() != speeds.size() && angles.size() != 1 && speeds.size() != 1) {
+        throw usage_error("--theta0 has " + std::to_string(angles.size()) + " values and --omega0 " +
+                          std::to_string(speeds.size()) + ": give as many of each, or one of either");
+    }
+    const std::size_t count = std::max(angles.size(), speeds.size());
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto& [angle_text, angle] = angles[angles.size() == 1 ? 0 : i];
+        const auto& [speed_text, speed] = speeds[speeds.size() == 1 ? 0 : i];
+        starts.push_back(start_of("theta0 = " + angle_text + ", omega0 = " + speed_text, [angle = angle, speed = speed] {
+            return pendulum::motion::from_state({angle, speed});
+        }));
+    }
+    return starts;
+}
+
+void check_method_applies(const method_choice& method, const start_option& start) {
+    const auto kind = start.motion.kind();
+    if (method.is_exact() || kind == regime::libration) return;
+    const auto& row = row_of(kind);
+    throw usage_error("--method " + method.text() + " describes librations only (E < 2), but " + start.text +
+                      " is a " + std::string(row.name) + " (E = " + format_double(start.motion.energy()) +
+                      "): use --method exact, or a start with E < 2");
 }
 
 method_choice parse_method_option(const std::string& option, const std::string& text) {

@@ -9,6 +9,7 @@
 #include "figures/spec.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/motion.hpp"
 #include "plot/theme.hpp"
 
 #include <CLI/CLI.hpp>
@@ -99,6 +100,24 @@ std::vector<pendulum::amplitude> parse_amplitude_values(const std::string& given
 /// `most` is bad input (the reading stops there).
 std::vector<figures::amplitude> parse_amplitudes(const std::string& given,
                                                  std::size_t most = std::numeric_limits<std::size_t>::max());
+
+/// A start given on the command line, as typed, and its exact motion.
+struct start_option {
+    std::string text;        ///< "theta0 = 0, omega0 = 1.9" or "energy = 2.5"
+    pendulum::motion motion; ///< the motion from it
+};
+
+/// What the help of the commands that take starts says about them.
+extern const char* const start_help;
+
+/// The starts of --theta0 ANGLE with --omega0 W (states, paired item by item; a single item on
+/// either side goes with each item of the other) or of --energy E (launches from the bottom);
+/// bad input, both or neither of --theta0 and --energy, is a usage_error saying what works.
+std::vector<start_option> parse_starts(const std::string& theta0, const std::string& omega0, const std::string& energy);
+
+/// Throws a usage_error unless `method` applies to the start: the paper's approximants and
+/// the iteration describe librations only (E < 2).
+void check_method_applies(const method_choice& method, const start_option& start);
 
 /// Parses a method name (NAME or NAME:N) for the option `option`.
 method_choice parse_method_option(const std::string& option, const std::string& text);

@@ -40,6 +40,10 @@ struct key_option {
 /// keys a spec file alone sets (paper_file, line, columns, panel sizes: see --set) do not.
 constexpr key_option key_options[] = {
     {"theta0", false, "--theta0", "LIST", value_kind::list, "Amplitudes, a comma-separated LIST (one for trajectory)"},
+    {"energy", false, "--energy", "LIST", value_kind::list,
+     "Phase and trajectory plots: energies E/(m g L) of launches from the bottom (2 is the separatrix)"},
+    {"omega0", false, "--omega0", "LIST", value_kind::list,
+     "Phase and trajectory plots: initial velocities theta'/w0 of states started at --theta0"},
     {"methods", false, "--methods", "LIST", value_kind::list, "Methods, a comma-separated LIST (see 'list')"},
     {"range", false, "--range", "A,B", value_kind::range, "x range a,b: times, or amplitudes as angles"},
     {"time", false, "--time", "UNIT", value_kind::text, "Time axis of a trajectory: t/T (default), t/T0 or t/s"},
@@ -216,7 +220,9 @@ command add_plot_command(CLI::App& app) {
                      "Examples:\n"
                      "  pendulum-figures plot trajectory --theta0 170deg --methods exact,harmonic,order:6 --range 0,3\n"
                      "  pendulum-figures plot period --methods exact,kidd-fogg,agm:2 --y error-log -f png\n"
-                     "  pendulum-figures plot phase --theta0 'pi/3,2pi/3,0.99pi' --methods exact,first");
+                     "  pendulum-figures plot phase --theta0 'pi/3,2pi/3,0.99pi' --methods exact,first\n"
+                     "  pendulum-figures plot phase --energy 0.5,1.5,2,2.5,3 --angle-unit deg\n"
+                     "  pendulum-figures plot trajectory --theta0 0 --omega0 2.2");
 
     return {cmd, [po] { return run_plot(*po); }};
 }

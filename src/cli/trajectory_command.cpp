@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// trajectory: theta(t) of one amplitude, exact or approximate, at times t/T.
+// trajectory: theta(t) of one start (amplitude, state or energy), exact or approximate.
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/report.hpp"
@@ -7,12 +7,16 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/motion.hpp"
+#include "pendulum/phase.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +29,11 @@ constexpr double max_periods = 1e6;
 
 struct trajectory_options {
     std::string theta0;
+    std::string omega0;
+    std::string energy;
+    std::string time;
+    std::optional<double> length;  // metres, for --time t/s
+    double g = 9.80665;
     std::string method = "exact";
     std::string order;
     std::string at;
@@ -33,12 +42,56 @@ struct trajectory_options {
     std::string format = "csv";
 };
 
+/// A unit of time for --time: its name, its column and w0 t per unit.
+struct time_unit_row {
+    std::string_view name;         ///< as --time takes it
+    std::string_view column;       ///< the table's first column
+    std::string_view description;  ///< for --help
+    /// w0 t per unit of time for a motion (T0 in seconds given, 0 without --length).
+    double (*scale)(const motion& m, double small_period_s);
+};
+
+constexpr time_unit_row time_units[] = {
+    {"t/T", "t_over_T", "periods T of the exact motion (T_rev for a rotation; none at the separatrix)",
+     [](const motion& m, double) { return m.period(); }},
+    {"t/T0", "t_over_T0", "small-amplitude periods T0 = 2 pi/w0", [](const motion&, double) { return 2 * std::numbers::pi; }},
+    {"t/s", "t_s", "seconds, for a pendulum of --length L (and --g)",
+     [](const motion&, double small_period_s) { return 2 * std::numbers::pi / small_period_s; }},
+};
+
+const time_unit_row& parse_time_unit(const std::string& text) {
+    std::string names;
+    for (const auto& row : time_units) {
+        if (row.name == text) return row;
+        names += (names.empty() ? "" : ", ") + std::string(row.name);
+    }
+    throw usage_error("--time '" + shown_text(text) + "': the units of time are " + names);
+}
+
 /// Writes trajectory's table row by row; every input is checked before the first row.
 void trajectory_stream(std::ostream& out, const trajectory_options& o, bool order_given, bool periods_given) {
     const auto format = parse_table_format(o.format);
-    const auto amplitudes = parse_amplitudes(o.theta0);
-    if (amplitudes.size() != 1) throw usage_error("--theta0 takes one amplitude for trajectory");
-    const amplitude theta0 = amplitudes.front().theta0();
+    const auto starts = parse_starts(o.theta0, o.omega0, o.energy);
+    if (starts.size() != 1) throw usage_error("trajectory takes one start: one --theta0 (and --omega0) or --energy");
+    const start_option& start = starts.front();
+    const motion& m = start.motion;
+    // An amplitude alone keeps the paper's table: t/T and theta; a state also prints theta'/w0.
+    const bool state = !o.omega0.empty() || !o.energy.empty();
+    const time_unit_row& unit = parse_time_unit(o.time.empty() ? "t/T" : o.time);
+    if (!m.has_period() && unit.name == "t/T") {
+        throw usage_error(start.text + " is on the separatrix (E = 2): it has no period T; give --time t/T0 or --time t/s");
+    }
+    double small_period_s = 0;
+    if (unit.name == "t/s") {
+        if (!o.length) throw usage_error("--time t/s needs the pendulum's --length L in metres (and --g, default 9.80665)");
+        if (!(*o.length > 0 && *o.length <= 1e6)) {
+            throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
+        }
+        if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
+        small_period_s = 2 * std::numbers::pi * std::sqrt(*o.length / o.g);
+    } else if (o.length) {
+        throw usage_error("--length goes with --time t/s, not --time " + std::string(unit.name));
+    }
     std::string method_text = o.method;
     if (o.method == "order") {
         if (!order_given) throw usage_error("--method order needs --order N (or write --method order:N)");
@@ -50,6 +103,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     if (!method.has_motion()) {
         throw usage_error("--method " + method.text() + " gives a period only, not a law of motion; see 'list'");
     }
+    check_method_applies(method, start);
     if (o.at.empty() == (o.samples == 0)) {
         throw usage_error("give either --at LIST or --samples N (with --periods P)");
     }
@@ -64,7 +118,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
             }
             // t/T is multiplied by the period: a huge one overflows.
             if (!(std::fabs(times.back()) <= max_periods)) {
-                throw usage_error("--at '" + item + "': a time t/T must be finite and at most " +
+                throw usage_error("--at '" + item + "': a time " + std::string(unit.name) + " must be finite and at most " +
                                   format_double(max_periods) + " in size");
             }
         }
@@ -79,19 +133,35 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
         }
     }
 
-    const exact_solution exact(theta0);
     const bool is_exact = method.is_exact();
+    const amplitude theta0 = m.kind() == regime::libration ? m.amplitude() : amplitude(1.0);
     const fourier_solution approx = is_exact ? fourier_solution{} : method_solution(method, theta0);
     if (!is_exact && !approx.exists()) {
-        throw usage_error("--theta0 " + amplitudes.front().text + ": the iteration has no period at order " +
-                          std::to_string(method.n) + " there (lambda = (w/w0)^2 < 0: the scheme itself breaks down " +
-                          "near pi); choose another order, or an amplitude further from pi");
+        throw usage_error(start.text + ": the iteration has no period at order " + std::to_string(method.n) +
+                          " there (lambda = (w/w0)^2 < 0: the scheme itself breaks down near pi); choose another order, "
+                          "or an amplitude further from pi");
     }
 
-    const double period = 4.0 * exact.quarter_period();  // exact T in units of 1/w0
-    table_writer writer(out, {"t_over_T", "theta"}, format);
+    const double scale = unit.scale(m, small_period_s);  // w0 t per unit of time
+    const bool paper_table = !state && unit.name == "t/T";
+    std::vector<std::string> columns{std::string(unit.column), "theta"};
+    if (state) columns.emplace_back("omega");
+    table_writer writer(out, columns, format);
     const auto write = [&](double s) {
-        writer.row({s, is_exact ? exact.theta_at_fraction(s) : approx.theta(s * period)});
+        const double t = s * scale;
+        if (paper_table) {
+            // The amplitude's own table, reduced by the exact period's symmetries.
+            writer.row({s, is_exact ? m.libration().theta_at_fraction(s) : approx.theta(t)});
+        } else if (is_exact) {
+            std::vector<double> row{s, m.theta(t)};
+            if (state) row.push_back(m.velocity(t));
+            writer.row(row);
+        } else {
+            const double clock = m.libration_clock(t);
+            std::vector<double> row{s, m.libration_center() + approx.theta(clock)};
+            if (state) row.push_back(velocity(approx, clock));
+            writer.row(row);
+        }
     };
     if (o.at.empty()) {
         // Sample times computed as they are written: ten million rows need no memory.
@@ -107,8 +177,21 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
 command add_trajectory_command(CLI::App& app) {
     auto tr = std::make_shared<trajectory_options>();
     auto* cmd = app.add_subcommand(
-        "trajectory", "Print theta(t) for one amplitude, exact or approximate, at times t/T.");
-    cmd->add_option("--theta0", tr->theta0, "Amplitude, one angle")->required()->type_name("ANGLE")->check(non_empty);
+        "trajectory", "Print theta(t) for one start (amplitude, state or energy), exact or approximate.");
+    cmd->add_option("--theta0", tr->theta0, "Amplitude, one angle; with --omega0 the start angle of a state")
+        ->type_name("ANGLE")->check(non_empty);
+    cmd->add_option("--omega0", tr->omega0, "Initial velocity theta'/w0 of a state started at --theta0 (any sign)")
+        ->type_name("W")->check(non_empty);
+    cmd->add_option("--energy", tr->energy, "Energy E/(m g L) of a launch from the bottom (2 is the separatrix)")
+        ->type_name("E")->check(non_empty);
+    std::string units;
+    for (const auto& row : time_units) {
+        units += (units.empty() ? "" : "; ") + std::string(row.name) + ": " + std::string(row.description);
+    }
+    cmd->add_option("--time", tr->time, "Unit of the times of --at, --samples and --periods (default t/T): " + units)
+        ->type_name("t/T|t/T0|t/s");
+    cmd->add_option("--length", tr->length, "Pendulum length in metres, for --time t/s")->type_name("L");
+    cmd->add_option("--g", tr->g, "Gravity in m/s^2 for --length (default 9.80665)")->type_name("G");
     cmd->add_option("--method", tr->method,
                      "A method with a law of motion: exact (default), harmonic, lowest, first, second, "
                      "polynomial, or order:N (or order with --order N); see 'list'")
@@ -116,19 +199,25 @@ command add_trajectory_command(CLI::App& app) {
     auto* order_opt = cmd->add_option("--order", tr->order, "Order N of --method order (0.." +
                                                                 std::to_string(max_order) + ")")
                           ->type_name("N");
-    cmd->add_option("--at", tr->at, "Times t/T, a comma-separated list (T is the exact period)")
+    cmd->add_option("--at", tr->at, "Times in the unit of --time (default t/T, T the exact period), a comma-separated list")
         ->type_name("LIST")->check(non_empty);
     cmd->add_option("--samples", tr->samples, "Number of equally spaced times from 0 to --periods")
         ->type_name("N");
     auto* periods_opt =
-        cmd->add_option("--periods", tr->periods, "Time span in exact periods T (default 1)")
+        cmd->add_option("--periods", tr->periods, "Time span in the unit of --time (default 1 period T)")
             ->type_name("P");
     cmd->add_option("--format", tr->format, "Output format: csv (default) or json")
         ->type_name("csv|json");
     cmd->footer(std::string("\n") + angle_help +
+                 "\n\n" + start_help +
                  "\n\nColumns: t_over_T, theta (radians). Every method is evaluated at the same "
-                 "physical time t = (t/T) T, with T the exact period.\n\n"
+                 "physical time t = (t/T) T, with T the exact period. With --time the first column is t_over_T0 "
+                 "or t_s; a state or energy adds omega (theta'/w0), and theta is unwrapped: a rotation's angle "
+                 "keeps rising. The approximants describe librations only: on a rotation or the separatrix "
+                 "they are an error.\n\n"
                  "Examples:\n"
+                 "  pendulum-figures trajectory --theta0 0 --omega0 2.2 --samples 5\n"
+                 "  pendulum-figures trajectory --energy 2 --time t/T0 --at 0,0.5,1\n"
                  "  pendulum-figures trajectory --theta0 9pi/10 --method second --samples 201 --periods 2\n"
                  "  pendulum-figures trajectory --theta0 pi/2 --method order --order 8 --at 0,0.125,0.25");
 

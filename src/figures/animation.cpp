@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -15,12 +16,17 @@ namespace figures {
 
 namespace {
 
-/// The first amplitude of the (overridden) panels: its exact period is the animation's unit.
-double reference_amplitude(const std::vector<panel_spec>& panels) {
+/// The animation's unit of time: the exact period of the first amplitude or start of the
+/// (overridden) panels (a start on the separatrix, which has none: T0).
+double reference_period(const std::vector<panel_spec>& panels) {
     for (const auto& p : panels) {
-        if (!p.theta0.empty()) return p.theta0.front().value;
+        if (!p.theta0.empty()) return 4 * pendulum::exact_solution(p.theta0.front().value).quarter_period();
+        if (!p.starts.empty()) {
+            const auto& m = p.starts.front().motion;
+            return m.has_period() ? m.period() : 2 * std::numbers::pi;
+        }
     }
-    throw bad_input("an animation needs a panel with theta0 (a pendulum, trajectory or phase panel)");
+    throw bad_input("an animation needs a panel with theta0 or a start (a pendulum, trajectory or phase panel)");
 }
 
 std::string clock_text(const animation_plan& plan, double w0_t) {
@@ -44,8 +50,7 @@ animation_plan plan_animation(const entry& e, const build_options& options) {
     const double length = plan.physical ? e.spec.pendulum->length_m : 1.0;
     const double g = plan.physical ? e.spec.pendulum->g : 9.80665;
     plan.seconds_per_unit = std::sqrt(length / g);
-    const pendulum::exact_solution exact(reference_amplitude(panels_of(e, options)));
-    plan.reference_period = 4 * exact.quarter_period();
+    plan.reference_period = reference_period(panels_of(e, options));
     const double span = a.duration_s ? *a.duration_s / plan.seconds_per_unit : a.periods.value_or(1.0) * plan.reference_period;
     // Playback: `speed` seconds of the pendulum's time per second shown.
     const double shown_s = span * plan.seconds_per_unit / a.speed;

@@ -35,6 +35,7 @@ constexpr row order[] = {
     {"period", "fig7", "Fig. 7"},             {"convergence", "", "new"},
     {"period-formulas", "", "new"},           {"period-error", "", "new"},
     {"phase-portrait", "", "new"},            {"spectrum", "", "new"},
+    {"regimes", "", "new"},
     {"swing", "", "animation"},               {"separatrix", "", "animation"},
 };
 

@@ -5,6 +5,7 @@
 #include "figures/panel_support.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/motion.hpp"
 #include "pendulum/phase.hpp"
 
 #include <algorithm>
@@ -18,6 +19,83 @@ using plot::line_style;
 using plot::marker_style;
 using std::numbers::pi;
 
+namespace {
+
+/// Orbits are lines: five dash patterns, then the same a little wider.
+plot::series orbit_series(std::size_t i, const plot::label& label) {
+    static const line_style lines[] = {line_style::solid, line_style::dashed, line_style::dotted, line_style::dash_dot,
+                                       line_style::dash_dot_dot};
+    series_style st = amplitude_style(i, label);
+    st.line = lines[i % 5];
+    st.marker = marker_style::none;
+    plot::series s = series_of(st);
+    if (i >= 5) s.width_scale = 1.8;
+    return s;
+}
+
+/// Samples of the series' curve that set the limits and place the legend.
+void sample_curve(plot::series& s, double lo, double hi) {
+    for (double t : grid(lo, hi, 400)) {
+        const auto [x, y] = s.curve->at(t);
+        s.x.push_back(x);
+        s.y.push_back(y);
+    }
+}
+
+/// theta reduced to [-pi, pi]: the phase plane of the starts is one turn wide.
+double wrapped(double theta) { return std::remainder(theta, 2 * pi); }
+
+/// The orbits of energies and states: a libration's closed orbit (its approximants' too),
+/// and above the separatrix theta'/w0 = +-sqrt(4 cos^2(theta/2) - 2 (2 - E)) as a function of
+/// theta over [-pi, pi], so that a rotating orbit leaves at one edge and comes back at the
+/// other with no line across. An energy draws both directions, a state its own.
+void add_start_orbits(plot::panel& panel, const panel_spec& p, double angle) {
+    for (std::size_t i = 0; i < p.starts.size(); ++i) {
+        const auto& start = p.starts[i];
+        const auto& m = start.motion;
+        const std::string regime(pendulum::row_of(m.kind()).name);
+        for (std::size_t j = 0; j < p.methods.size(); ++j) {
+            const auto& method = p.methods[j];
+            const bool by_start = p.methods.size() == 1 && !method.style && !method.marker && method.label.empty();
+            plot::series s = by_start ? orbit_series(i, start.label + ", " + regime)
+                                      : series_of(style_of(method, static_cast<int>(p.methods.size() == 1 ? i : j)));
+            if (!by_start && i > 0) s.label = plot::label{};
+            if (m.kind() == pendulum::regime::libration) {
+                if (is_exact(method)) {
+                    s.curve = plot::parametric_curve(0, 1, [e = m.libration(), angle](double t) {
+                        return std::pair{angle * e.theta_at_fraction(t), pendulum::velocity_at_fraction(e, t)};
+                    }, 8);
+                } else {
+                    s.curve = plot::parametric_curve(
+                        0, 1, [sol = pendulum::method_solution(method.method, m.amplitude()), period = m.period(), angle](double t) {
+                            return std::pair{angle * sol.theta(t * period), pendulum::velocity(sol, t * period)};
+                        }, 8);
+                }
+                sample_curve(s, 0, 1);
+                panel.data.push_back(std::move(s));
+                continue;
+            }
+            const double gap = m.energy_gap();
+            const auto branch = [gap, angle](double sign) {
+                return plot::function_curve(-pi * angle, pi * angle, [gap, angle, sign](double x) {
+                    const double c = std::cos(0.5 * x / angle);
+                    return sign * std::sqrt(std::max(0.0, 4 * c * c - 2 * gap));
+                });
+            };
+            const double direction = m.start().omega < 0 ? -1.0 : 1.0;
+            for (double sign : start.energy ? std::vector<double>{1.0, -1.0} : std::vector<double>{direction}) {
+                plot::series b = s;
+                if (sign < 0 && start.energy) b.label = plot::label{};
+                b.curve = branch(sign);
+                sample_curve(b, -pi * angle, pi * angle);
+                panel.data.push_back(std::move(b));
+            }
+        }
+    }
+}
+
+}  // namespace
+
 plot::panel phase_panel(const panel_context&, const panel_spec& p) {
     plot::panel panel;
     const double angle = p.degrees ? 180 / pi : 1.0;
@@ -25,6 +103,12 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
     panel.x.ticks = p.degrees ? plot::tick_kind::degrees : plot::tick_kind::multiples_of_pi;
     panel.x.max_ticks = 5;
     panel.y.label = "d<i>\u03d1</i>/d(<i>\u03c9</i><sub>0</sub><i>t</i>)";
+    if (!p.starts.empty()) {
+        // One turn, -pi to pi: rotating orbits leave at one edge and come back at the other.
+        panel.x.min = -pi * angle;
+        panel.x.max = pi * angle;
+        add_start_orbits(panel, p, angle);
+    }
     const auto s_grid = grid(0, 1, 400);
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
         const amplitude& a = p.theta0[i];
@@ -97,6 +181,21 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
 
 void add_phase_frame(plot::panel& panel, const panel_context&, const panel_spec& p, double w0_t) {
     const double angle = p.degrees ? 180 / pi : 1.0;
+    for (std::size_t i = 0; i < p.starts.size(); ++i) {
+        const auto& m = p.starts[i].motion;
+        for (std::size_t j = 0; j < p.methods.size(); ++j) {
+            plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(p.methods.size() == 1 ? i : j)));
+            if (is_exact(p.methods[j])) {
+                dot.x = {angle * wrapped(m.theta(w0_t))};
+                dot.y = {m.velocity(w0_t)};
+            } else {
+                const auto sol = pendulum::method_solution(p.methods[j].method, m.amplitude());
+                dot.x = {angle * sol.theta(m.libration_clock(w0_t))};
+                dot.y = {pendulum::velocity(sol, m.libration_clock(w0_t))};
+            }
+            panel.data.push_back(std::move(dot));
+        }
+    }
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
         const pendulum::exact_solution exact(p.theta0[i].theta0());
         for (std::size_t j = 0; j < p.methods.size(); ++j) {

@@ -5,6 +5,8 @@
 #include "figures/panel_support.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/motion.hpp"
+#include "pendulum/phase.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +20,74 @@ using plot::line_style;
 using plot::marker_style;
 using std::numbers::pi;
 
+namespace {
+
+/// w0 t per unit of a start's time axis, and the axis label: the motion's own period T (a
+/// rotation's revolution), T0, or seconds.
+std::pair<double, std::string> start_time_unit(const figure_spec& spec, const panel_spec& p, const pendulum::motion& m) {
+    if (p.time == time_unit::small_period) return {2 * pi, "<i>t</i>/<i>T</i><sub>0</sub>"};
+    if (p.time == time_unit::seconds) return {1 / seconds_per_radian(spec), "<i>t</i> (s)"};
+    return {m.period(), m.kind() == pendulum::regime::rotation ? "<i>t</i>/<i>T</i><sub>rev</sub>" : "<i>t</i>/<i>T</i>"};
+}
+
+/// The time cursor of an animated trajectory: a faint vertical line at x.
+plot::series time_cursor(double x) {
+    plot::series cursor;
+    cursor.x = {x, x};
+    cursor.y = {-1e5, 1e5};
+    cursor.autoscale = false;
+    cursor.alpha = 0.5;
+    cursor.width_scale = 0.6;
+    return cursor;
+}
+
+/// theta(w0 t) of a method for a start: the exact motion, unwrapped, or an approximant of a
+/// libration on the libration's own clock.
+std::function<double(double)> start_theta(const method_spec& m, const pendulum::motion& motion) {
+    if (is_exact(m)) return [motion](double w0_t) { return motion.theta(w0_t); };
+    return [motion, solution = pendulum::method_solution(m.method, motion.amplitude())](double w0_t) {
+        return motion.libration_center() + solution.theta(motion.libration_clock(w0_t));
+    };
+}
+
+/// A trajectory of one start (energy or state): theta(t) unwrapped, a rotation's angle rising.
+plot::panel start_trajectory_panel(const panel_context& c, const panel_spec& p) {
+    const motion_start& start = p.starts.front();
+    const auto [unit, x_label] = start_time_unit(c.spec, p, start.motion);
+    // Default: one period of the motion (T0 on the separatrix), in the axis' unit.
+    const double one = (start.motion.has_period() ? start.motion.period() : 2 * pi) / unit;
+    const double lo = p.range ? (*p.range)[0] : 0.0;
+    const double hi = p.range ? (*p.range)[1] : one;
+    const double cycles = (hi - lo) * unit / (start.motion.has_period() ? start.motion.period() : 2 * pi);
+    plot::panel panel;
+    panel.label = start.label + ", " + std::string(pendulum::row_of(start.motion.kind()).name);
+    panel.x.label = x_label;
+    panel.x.min = lo;
+    panel.x.max = hi;
+    panel.x.max_ticks = c.width_cm < 5 ? 3 : 5;
+    panel.y.label = "<i>\u03d1</i>";
+    panel.y.ticks = p.degrees ? plot::tick_kind::degrees : plot::tick_kind::multiples_of_pi;
+    panel.y.max_ticks = 7;
+    panel.y.round_limits = true;
+    panel.y.margin = 0.002;
+    const double angle = p.degrees ? 180 / pi : 1.0;
+    const int pieces = std::clamp(static_cast<int>(std::lround(8 * cycles)), 8, 4000);
+    const int circles = std::clamp(static_cast<int>(std::lround(24 * cycles)), 2, 2400);
+    for (std::size_t i = 0; i < p.methods.size(); ++i) {
+        const auto& m = p.methods[i];
+        const auto theta = [f = start_theta(m, start.motion), unit = unit, angle](double x) { return angle * f(x * unit); };
+        panel.data.push_back(make_series(style_of(m, static_cast<int>(i)), grid(lo, hi, is_exact(m) ? circles : 300), theta));
+        panel.data.back().curve =
+            plot::parametric_curve(lo, hi, [theta](double x) { return std::pair{x, theta(x)}; }, pieces);
+        panel.data.back().sets_limits = is_exact(m);
+    }
+    return panel;
+}
+
+}  // namespace
+
 plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
+    if (!p.starts.empty()) return start_trajectory_panel(c, p);
     const amplitude& a = p.theta0.front();
     const pendulum::exact_solution exact(a.theta0());
     const double period = 4 * exact.quarter_period();  // T in units of 1/w0
@@ -81,18 +150,22 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
 
 void add_trajectory_frame(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t) {
     const double angle = p.degrees ? 180 / pi : 1.0;
+    for (const auto& start : p.starts) {
+        const double x_now = w0_t / start_time_unit(c.spec, p, start.motion).first;
+        panel.data.push_back(time_cursor(x_now));
+        for (std::size_t j = 0; j < p.methods.size(); ++j) {
+            plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(j)));
+            dot.x = {x_now};
+            dot.y = {angle * start_theta(p.methods[j], start.motion)(w0_t)};
+            panel.data.push_back(std::move(dot));
+        }
+    }
     for (const auto& a : p.theta0) {
         const pendulum::exact_solution exact(a.theta0());
         const double period = 4 * exact.quarter_period();
         // The time cursor.
         const double x_now = w0_t / period * time_unit_of(c.spec, p, exact).first;
-        plot::series cursor;
-        cursor.x = {x_now, x_now};
-        cursor.y = {-1e3, 1e3};
-        cursor.autoscale = false;
-        cursor.alpha = 0.5;
-        cursor.width_scale = 0.6;
-        panel.data.push_back(std::move(cursor));
+        panel.data.push_back(time_cursor(x_now));
         for (std::size_t j = 0; j < p.methods.size(); ++j) {
             plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(j)));
             dot.x = {x_now};

@@ -11,11 +11,11 @@ namespace figures {
 namespace {
 
 constexpr std::array<plot_row, 7> plots = {{
-    {"trajectory", "time", "theta(t)", "theta0 methods time range angle_unit",
-     "the law of motion theta(t) at one amplitude", amplitude_policy::one_per_panel, range_kind::times, true, false,
+    {"trajectory", "time", "theta(t)", "theta0 energy omega0 methods time range angle_unit",
+     "the law of motion theta(t) at one amplitude, energy or state", amplitude_policy::one_per_panel, range_kind::times, true, false,
      trajectory_panel, add_trajectory_frame},
-    {"phase", "theta", "theta'/w0", "theta0 methods separatrix angle_unit",
-     "orbits in the phase plane, one per amplitude", amplitude_policy::list, range_kind::none, true, false,
+    {"phase", "theta", "theta'/w0", "theta0 energy omega0 methods separatrix angle_unit",
+     "orbits in the phase plane, one per amplitude, energy or state", amplitude_policy::list, range_kind::none, true, false,
      phase_panel, add_phase_frame},
     {"period", "theta0", "T/T0", "methods range y angle_unit",
      "the period against the amplitude: value, error in %, or log |error|", amplitude_policy::none,

@@ -2,6 +2,7 @@
 #include "figures/spec.hpp"
 
 #include "figures/input_file.hpp"
+#include "figures/panel_support.hpp"
 #include "figures/toml_reader.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/angle.hpp"
@@ -242,6 +243,98 @@ void check_costs(reader& r, const toml::table& t, const figure_spec& f, const pa
     }
 }
 
+/// The items of a key that takes one value or a list.
+std::vector<const toml::node*> items_of(const toml::node& n) {
+    std::vector<const toml::node*> items;
+    if (const auto* a = n.as_array()) {
+        for (const auto& e : *a) items.push_back(&e);
+    } else {
+        items.push_back(&n);
+    }
+    return items;
+}
+
+/// The starts of a panel: energy = [...] (launches from the bottom) or theta0 = [...] with
+/// omega0 = [...] (states, paired item by item, one item on either side going with each of the
+/// other), checked against the panel's methods: the approximants describe librations only.
+void read_starts(reader& r, const toml::table& t, const plot_row& plot, panel_spec& p) {
+    const toml::node* energy = t.get("energy");
+    const toml::node* theta0 = t.get("theta0");
+    const toml::node* omega0 = t.get("omega0");
+    const auto add = [&](const toml::node& where, std::string label, bool is_energy, auto make) {
+        try {
+            p.starts.push_back({std::move(label), make(), is_energy});
+        } catch (const pendulum::domain_error& e) {
+            r.problem(where, e.what());
+        }
+    };
+    if (energy) {
+        if (theta0 || omega0) {
+            r.problem(*energy, "'energy' launches from the bottom: give either energy or theta0 with omega0, not both");
+            return;
+        }
+        for (const toml::node* e : items_of(*energy)) {
+            if (auto v = r.expression(*e, "energy", false)) {
+                add(*e, "<i>E</i> = " + typeset_angle(v->first), true,
+                    [x = v->second] { return pendulum::motion::from_energy(x); });
+            }
+        }
+    } else if (!theta0) {
+        r.problem(*omega0, "'omega0' needs theta0, the start angles (theta0 = 0 launches from the bottom)");
+        return;
+    } else {
+        std::vector<std::pair<std::string, double>> angles;
+        std::vector<std::pair<std::string, double>> speeds;
+        for (const toml::node* e : items_of(*theta0)) {
+            if (auto v = r.expression(*e, "theta0", true)) angles.push_back(*v);
+        }
+        for (const toml::node* e : items_of(*omega0)) {
+            if (auto v = r.expression(*e, "omega0", false)) speeds.push_back(*v);
+        }
+        if (angles.empty() || speeds.empty()) return;
+        if (angles.size() != speeds.size() && angles.size() != 1 && speeds.size() != 1) {
+            r.problem(*omega0, "theta0 has " + std::to_string(angles.size()) + " values and omega0 " +
+                                   std::to_string(speeds.size()) + ": give as many of each, or one of either");
+            return;
+        }
+        for (std::size_t i = 0; i < std::max(angles.size(), speeds.size()); ++i) {
+            const auto& [angle_text, angle] = angles[angles.size() == 1 ? 0 : i];
+            const auto& [speed_text, speed] = speeds[speeds.size() == 1 ? 0 : i];
+            add(*omega0,
+                std::string(theta0_markup) + " = " + typeset_angle(angle_text) + ", <i>\u03c9</i><sub>0</sub> = " +
+                    typeset_angle(speed_text),
+                false, [angle = angle, speed = speed] { return pendulum::motion::from_state({angle, speed}); });
+        }
+    }
+    const toml::node& where = energy ? *energy : *omega0;
+    if (plot.amplitudes != amplitude_policy::list && p.starts.size() > 1) {
+        r.problem(where, "a " + std::string(plot.name) + " panel takes one start");
+    }
+    if (p.starts.size() > max_amplitudes_per_panel) {
+        r.problem(where, "a panel takes at most " + std::to_string(max_amplitudes_per_panel) + " starts");
+    }
+}
+
+/// The approximants describe librations only, and the separatrix has no period T to measure
+/// time in: each start is checked against the panel's methods and time unit.
+void check_starts(reader& r, const toml::table& t, const panel_spec& p) {
+    for (const auto& start : p.starts) {
+        const auto& row = pendulum::row_of(start.motion.kind());
+        const std::string what = plain_text(start.label) + " is a " + std::string(row.name) + " (E = " +
+                                 pendulum::format_double(start.motion.energy()) + ")";
+        for (const auto& m : p.methods) {
+            if (m.method.is_exact() || start.motion.kind() == pendulum::regime::libration) continue;
+            r.problem(t.get("methods") ? r.at(t.get("methods")->source()) : p.where,
+                      "method '" + m.method.text() + "' describes librations only (E < 2), but " + what +
+                          ": use methods = [\"exact\"], or a start with E < 2");
+        }
+        if (p.plot->range == range_kind::times && p.time == time_unit::period && !start.motion.has_period()) {
+            r.problem(t.get("time") ? r.at(t.get("time")->source()) : p.where,
+                      what + ": it has no period T; give time = \"t/T0\" or \"t/s\"");
+        }
+    }
+}
+
 std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figure_spec& f) {
     panel_spec p;
     p.where = r.at(t.source());
@@ -269,8 +362,11 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
     r.check_keys(t, keys, "a " + std::string(plot->name) + " panel", all_panel_keys(),
                  "does not apply to plot '" + std::string(plot->name) + "'");
 
-    // Amplitudes: one for a trajectory, a list for the plots that draw several.
-    if (contains(keys, "theta0")) {
+    // Amplitudes: one for a trajectory, a list for the plots that draw several; or starts,
+    // energies or states, where the plot takes them.
+    if (contains(keys, "energy") && (t.get("energy") || t.get("omega0"))) {
+        read_starts(r, t, *plot, p);
+    } else if (contains(keys, "theta0")) {
         const toml::node* n = t.get("theta0");
         if (!n) {
             r.problem(p.where, "a " + std::string(plot->name) + " panel needs theta0");
@@ -289,7 +385,12 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
     }
     if (contains(keys, "methods")) {
         const toml::node* n = t.get("methods");
-        if (!n) {
+        if (!n && !p.starts.empty()) {
+            // Energies and states: the exact motion, the one method for every regime.
+            method_spec exact;
+            exact.method = pendulum::parse_method("exact");
+            p.methods.push_back(exact);
+        } else if (!n) {
             r.problem(p.where, "a " + std::string(plot->name) + " panel needs methods, e.g. [\"exact\", \"lowest\"]");
         } else if (const auto* a = n->as_array(); !a || a->empty()) {
             r.problem(*n, "'methods' must be a non-empty list, e.g. [\"exact\", \"lowest\"]");
@@ -389,6 +490,7 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
         }
     }
     check_costs(r, t, f, p);
+    check_starts(r, t, p);
     return p;
 }
 

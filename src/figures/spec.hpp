@@ -4,6 +4,7 @@
 #include "figures/errors.hpp"
 #include "figures/plots.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/motion.hpp"
 #include "plot/figure.hpp"
 #include "plot/theme.hpp"
 
@@ -56,6 +57,13 @@ struct amplitude {
     pendulum::amplitude theta0() const { return exact ? *exact : pendulum::amplitude(value); }
 };
 
+/// A start of the motion written in a spec: an energy, or a state (theta0 with omega0).
+struct motion_start {
+    std::string label;        ///< for the legend, Pango markup: "E = 2.5", "ϑ0 = 0, ω0 = 2.2"
+    pendulum::motion motion;  ///< its exact motion
+    bool energy = false;      ///< given as an energy: a phase panel draws its whole level set
+};
+
 /// A method of a panel, with the theme's style overridden where given.
 struct method_spec {
     pendulum::method_choice method;            ///< the method
@@ -88,6 +96,7 @@ struct panel_spec {
     const plot_row* plot = nullptr;              ///< what it plots (a row of plot_table())
     source_position where;                       ///< the [[panel]] header
     std::vector<amplitude> theta0;               ///< amplitudes, where the plot takes them
+    std::vector<motion_start> starts;            ///< or energies, or states (theta0 with omega0)
     std::vector<method_spec> methods;            ///< methods, where the plot takes them
     time_unit time = time_unit::period;          ///< trajectory and phase time unit
     std::optional<std::array<double, 2>> range;  ///< x range: times, or amplitudes in radians

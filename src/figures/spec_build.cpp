@@ -41,12 +41,14 @@ std::vector<panel_spec> panels_with(const figure_spec& spec, const build_options
                 panel_spec q = i < trajectories.size() ? *trajectories[i] : p;
                 if (i >= trajectories.size()) q.paper_file.clear();
                 q.theta0 = {o.amplitudes[i]};
+                q.starts.clear();
                 q.title.reset();
                 out.push_back(std::move(q));
             }
             continue;
         }
         panel_spec q = p;
+        if (p.plot->amplitudes != amplitude_policy::none) q.starts.clear();
         if (p.plot->amplitudes == amplitude_policy::list) {
             q.theta0 = o.amplitudes;
         } else if (p.plot->amplitudes == amplitude_policy::one) {

@@ -179,6 +179,28 @@ public:
         return std::nullopt;
     }
 
+    /// An expression (an angle, with deg, where `is_angle`) given as a string or a number: its
+    /// text and value.
+    std::optional<std::pair<std::string, double>> expression(const toml::node& n, std::string_view key, bool is_angle) {
+        std::string text;
+        if (const auto* s = n.as_string()) {
+            text = s->get();
+        } else if (const auto* i = n.as_integer()) {
+            text = std::to_string(i->get());
+        } else if (const auto* f = n.as_floating_point()) {
+            text = pendulum::format_double(f->get());
+        } else {
+            problem(n, "'" + std::string(key) + "' must be a number or an expression such as \"pi/2\"");
+            return std::nullopt;
+        }
+        try {
+            return std::pair{text, is_angle ? pendulum::parse_angle(text) : pendulum::parse_expression(text)};
+        } catch (const std::invalid_argument& e) {
+            problem(n, "'" + std::string(key) + "': " + e.what());
+            return std::nullopt;
+        }
+    }
+
     /// An angle expression given as a string or a number.
     std::optional<amplitude> angle(const toml::node& n, std::string_view key, bool amplitude_range) {
         amplitude a;

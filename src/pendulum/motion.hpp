@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "pendulum/amplitude.hpp"
+#include "pendulum/exact.hpp"
+
+#include <optional>
+#include <string_view>
+
+namespace pendulum {
+
+/// The three kinds of motion of the simple pendulum, by energy E (per m g L, from the bottom).
+enum class regime {
+    libration,   ///< E < 2: swinging between two turning points
+    separatrix,  ///< E = 2: approaching the top, reached only as t -> infinity
+    rotation,    ///< E > 2: going over the top, round and round
+};
+
+/// A regime's name with its behaviour: the one row every list and message reads.
+struct regime_row {
+    regime kind;               ///< the regime
+    std::string_view name;     ///< "libration", "separatrix", "rotation"
+    std::string_view energy;   ///< its energies: "E < 2", ...
+    std::string_view period;   ///< what its period is: "period T", "no period", ...
+};
+
+/// The three regimes, in order of energy.
+const regime_row (&regime_rows())[3];
+
+/// The row of a regime.
+const regime_row& row_of(regime kind);
+
+/// A start of the motion: an angle and an angular velocity in units of w0.
+struct pendulum_state {
+    double theta = 0;  ///< the angle in radians, any real value (not reduced)
+    double omega = 0;  ///< theta'/w0, any sign
+};
+
+/// The exact motion theta'' + sin(theta) = 0 from any start, in all three regimes.
+///
+/// Time is w0 t. theta(t) is unwrapped: a rotation's angle keeps rising (or falling), and
+/// a libration swings about the multiple of 2 pi nearest its start. The moduli are kept with
+/// their complements, computed from the energy gap 2 - E (exact for a state through MPFR), so
+/// the motion stays accurate within 1e-12 of the separatrix on either side: libration
+/// k = sqrt(E/2), k' = sqrt((2 - E)/2); rotation k = sqrt(2/E), k' = sqrt((E - 2)/E).
+class motion {
+public:
+    /// The motion from a state (theta, omega); throws domain_error for a state that is not
+    /// finite or for the pendulum at rest at the bottom (energy 0).
+    static motion from_state(pendulum_state start);
+    /// The motion launched from the bottom (theta = 0) with energy E > 0, moving forward:
+    /// omega = sqrt(2 E). Throws domain_error naming the energy unless 0 < E < infinity.
+    static motion from_energy(double energy);
+    /// The libration released at rest from amplitude theta0 (the paper's start).
+    static motion from_amplitude(const pendulum::amplitude& theta0);
+
+    /// The regime of the motion.
+    regime kind() const { return kind_; }
+    /// The energy E per m g L (from the bottom), rounded once.
+    double energy() const { return energy_; }
+    /// The energy gap 2 - E, rounded once from its exact value (negative for a rotation).
+    double energy_gap() const { return gap_; }
+    /// The start (for from_energy: theta = 0, omega = sqrt(2 E) rounded).
+    pendulum_state start() const { return start_; }
+    /// The modulus k of the motion (libration sqrt(E/2), rotation sqrt(2/E), separatrix 1).
+    double modulus() const { return k_; }
+    /// The complementary modulus k' (0 at the separatrix).
+    double complementary_modulus() const { return kp_; }
+    /// True for libration and rotation: the separatrix has no period.
+    bool has_period() const { return kind_ != regime::separatrix; }
+    /// w0 T: the libration's period 4 K(k), or the rotation's revolution 2 k K(k); throws
+    /// domain_error at the separatrix, which has none.
+    double period() const;
+    /// The period over the small-amplitude period 2 pi / w0 (T/T0 or T_rev/T0); throws as
+    /// period() does.
+    double period_ratio() const;
+    /// The libration's amplitude (its turning point, in (0, pi)); throws domain_error for the
+    /// other regimes, naming the regime.
+    pendulum::amplitude amplitude() const;
+    /// The libration's exact solution (released at its amplitude); throws as amplitude() does.
+    const exact_solution& libration() const;
+
+    /// A libration's own clock at time w0 t: the time since it was at its amplitude +theta0,
+    /// where the paper's solutions start (theta = center + libration().theta(clock)); throws as
+    /// amplitude() does.
+    double libration_clock(double w0_t) const;
+    /// The multiple of 2 pi a libration swings about; throws as amplitude() does.
+    double libration_center() const;
+
+    /// theta at time w0 t, unwrapped (continuous in t).
+    double theta(double w0_t) const;
+    /// theta'/w0 at time w0 t.
+    double velocity(double w0_t) const;
+
+private:
+    motion() = default;
+    /// Sets the regime, moduli and time offset from the start, its energy and energy gap.
+    void prepare(double energy, double gap, double half_speed);
+    /// theta and theta'/w0 of the forward motion (omega >= 0 after mirroring) at w0 t.
+    double forward_theta(double tau) const;
+    double forward_velocity(double tau) const;
+
+    regime kind_ = regime::libration;
+    pendulum_state start_{};
+    double energy_ = 0;
+    double gap_ = 0;
+    double k_ = 0;
+    double kp_ = 0;
+    double quarter_ = 0;  ///< K(k)
+    double mirror_ = 1;   ///< -1 where the start moves backwards: theta = -forward(-start)
+    double turns_ = 0;    ///< the multiple of 2 pi nearest the mirrored start angle
+    double offset_ = 0;   ///< the forward motion's time at the start
+    std::optional<exact_solution> libration_;
+};
+
+/// The incomplete elliptic integral of the first kind F(psi | k) for the angle psi in [0, pi]
+/// given as atan2(s, c) (s >= 0, s and c not both 0), with the complementary modulus k':
+/// F = s R_F(c^2, c^2 + k'^2 s^2, s^2 + c^2), no cancellation next to k = 1.
+double elliptic_f(double s, double c, double kp);
+
+}  // namespace pendulum

@@ -19,7 +19,7 @@ root="$work/stage/usr/local"
 mkdir -p "$work/src/specs"
 cat >"$work/src/CMakeLists.txt" <<'CMAKE'
 cmake_minimum_required(VERSION 3.20)
-project(docs NONE)
+project(docs CXX)
 find_package(pendulum REQUIRED)
 pendulum_add_figures(TARGET figures ALL SPECS specs/period.toml c1-lowest FORMATS pdf_tex svg
                      OUTPUT_DIR figures OUTPUT_DIR_IGNORED_BELOW OUTPUTS_VARIABLE files)
@@ -27,7 +27,7 @@ CMAKE
 # The same without the deliberate mistake, which must stop the configuration.
 cat >"$work/src/CMakeLists.txt.good" <<'CMAKE'
 cmake_minimum_required(VERSION 3.20)
-project(docs NONE)
+project(docs CXX)
 find_package(pendulum REQUIRED)
 pendulum_add_figures(TARGET figures ALL SPECS specs/period.toml c1-lowest FORMATS pdf_tex svg
                      OUTPUT_DIR figures OUTPUTS_VARIABLE files)

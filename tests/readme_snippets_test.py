@@ -90,6 +90,10 @@ try:
     env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ["PATH"], PKG_CONFIG_PATH=pc_dirs[0],
                CMAKE_PREFIX_PATH=prefix, LC_ALL="C.UTF-8", HOME=work)
     env.pop("SOURCE_DATE_EPOCH", None)
+    # The snippets are what a user types at a shell, not a sub-make of make test:
+    # without this, make prints "Entering directory" and make[1] prefixes.
+    for name in ("MAKELEVEL", "MAKEFLAGS", "MFLAGS", "MAKEOVERRIDES", "MAKE_TERMOUT", "MAKE_TERMERR"):
+        env.pop(name, None)
 
     def run(args, **kw):
         return subprocess.run(args, cwd=run_dir, env=env, capture_output=True, text=True, timeout=600, **kw)

@@ -28,6 +28,7 @@ ifneq ($(shell command -v dpkg-buildflags 2>/dev/null),)
 DEB_BUILDFLAGS := DEB_BUILD_MAINT_OPTIONS=hardening=+all DEB_CXXFLAGS_MAINT_STRIP=-g dpkg-buildflags --get
 CMAKE_FLAGS += "-DCMAKE_CXX_FLAGS=$(shell $(DEB_BUILDFLAGS) CPPFLAGS) $(shell $(DEB_BUILDFLAGS) CXXFLAGS)"
 CMAKE_FLAGS += "-DCMAKE_EXE_LINKER_FLAGS=$(shell $(DEB_BUILDFLAGS) LDFLAGS)"
+CMAKE_FLAGS += "-DCMAKE_MODULE_LINKER_FLAGS=$(shell $(DEB_BUILDFLAGS) LDFLAGS)"
 CMAKE_FLAGS += -DCMAKE_INSTALL_LIBDIR=lib/$(shell dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null)
 endif
 
@@ -96,7 +97,8 @@ test: build
 SANITIZE := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 check-sanitizers: deps
 	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_BUILD_BENCH=OFF \
-	  -DCMAKE_CXX_FLAGS="$(SANITIZE) -O1" -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE)"
+	  -DCMAKE_CXX_FLAGS="$(SANITIZE) -O1" -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE)" \
+	  -DCMAKE_MODULE_LINKER_FLAGS="$(SANITIZE)"
 	cmake --build build-asan -j $(JOBS)
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp:print_suppressions=0 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -E '^(Install|Fuzz)\.'

@@ -53,6 +53,9 @@ stage() {
     if [ -d "$root/usr/bin" ]; then
         strip --remove-section=.comment --remove-section=.note --strip-unneeded "$root"/usr/bin/*
     fi
+    # The video module likewise; a shared object is not executable (Debian policy 8.1).
+    find "$root" -type f -name '*.so' -exec strip --remove-section=.comment --remove-section=.note \
+         --strip-unneeded {} + -exec chmod 644 {} +
     find "$root" -type f -name '*.a' -exec strip --strip-debug --remove-section=.comment \
          --remove-section=.note '--remove-section=.gnu.lto_*' '--remove-section=.gnu.debuglto_*' \
          --enable-deterministic-archives {} +
@@ -64,7 +67,9 @@ stage libpendulum-dev dev
 
 cd "$work/src"
 mkdir -p debian/pendulum-figures/DEBIAN debian/libpendulum-dev/DEBIAN
-dpkg-shlibdeps -Tdebian/pendulum-figures.substvars debian/pendulum-figures/usr/bin/pendulum-figures
+# The program and its video module: the packages of FFmpeg's libraries come from the module.
+dpkg-shlibdeps -Tdebian/pendulum-figures.substvars debian/pendulum-figures/usr/bin/pendulum-figures \
+    $(find debian/pendulum-figures/usr/lib -name '*.so')
 for package in pendulum-figures libpendulum-dev; do
     root=debian/$package
     mkdir -p "$root/DEBIAN"

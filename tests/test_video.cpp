@@ -279,4 +279,32 @@ TEST(Video, StillFiguresAreBadInputBeforeAnyFile) {
     fs::remove_all(dir);
 }
 
+/// Every other run starts without FFmpeg's libraries: the program does not link them, and
+/// a video without the module is an error that says so, with nothing written.
+TEST(Video, LibrariesLoadWithTheModuleOnly) {
+    const auto needed = run_command("objdump -p '" + std::string(PENDULUM_EXE) + "' | grep NEEDED");
+    ASSERT_EQ(needed.status, 0);
+    for (const char* lib : {"libavcodec", "libavformat", "libswscale", "libavutil"}) {
+        EXPECT_EQ(needed.out.find(lib), std::string::npos) << lib << " is loaded by every run:\n" << needed.out;
+    }
+    const auto dir = temp_dir("video-no-module");
+    const fs::path program = dir / "bin" / "pendulum-figures";
+    fs::create_directories(program.parent_path());
+    fs::copy_file(PENDULUM_EXE, program);
+    const auto r = run_command("'" + program.string() + "' render swing --frames 1..2 -f mp4,png -o '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("the video module pendulum-figures-video.so is not installed (looked for " +
+                        (dir / "bin" / "pendulum-figures-video.so").string()),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(files_in(dir), std::set<std::string>{"bin"});
+    // Beside the program, it is found (as in the build tree).
+    fs::copy_file(fs::path(PENDULUM_EXE).parent_path() / "pendulum-figures-video.so",
+                  program.parent_path() / "pendulum-figures-video.so");
+    const auto found = run_command("'" + program.string() + "' render swing --frames 1..2 -f mp4 -o '" + dir.string() + "'");
+    EXPECT_EQ(found.status, 0) << found.err;
+    EXPECT_TRUE(fs::exists(dir / "swing.mp4"));
+    fs::remove_all(dir);
+}
+
 }  // namespace

@@ -1,271 +1,85 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Video through libavformat, libavcodec and libswscale: every handle owned, every status
-// checked, the libraries' log kept out of the terminal and put into the error instead.
+// Video files through the video module: found beside the program (a build tree) or in
+// LIBDIR/pendulum-figures/ (installed), loaded once, kept loaded.
 #include "plot/video.hpp"
 
 #include "plot/output.hpp"
+#include "plot/video_module.hpp"
 
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/dict.h>
-#include <libavutil/error.h>
-#include <libavutil/log.h>
-#include <libavutil/rational.h>
-#include <libswscale/swscale.h>
-}
+#include <dlfcn.h>
 
-#include <cmath>
-#include <cstdarg>
-#include <cstring>
 #include <mutex>
-#include <new>
 #include <stdexcept>
+#include <system_error>
 #include <vector>
+
+#ifndef PENDULUM_MODULE_DIR
+#define PENDULUM_MODULE_DIR "lib/pendulum-figures"
+#endif
 
 namespace plot {
 
 namespace {
 
-struct av_deleter {
-    void operator()(AVFormatContext* p) const {
-        if (p->pb && !(p->oformat->flags & AVFMT_NOFILE)) avio_closep(&p->pb);
-        avformat_free_context(p);
+/// Where the module may be: beside the program, then PREFIX/LIBDIR/pendulum-figures for a
+/// program in PREFIX/bin (an installed tree may be moved: nothing is absolute).
+std::vector<std::filesystem::path> module_places() {
+    std::error_code ec;
+    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) return {};
+    const std::filesystem::path dir = program.parent_path();
+    return {dir / video_module_file, dir.parent_path() / PENDULUM_MODULE_DIR / video_module_file};
+}
+
+/// Loads the module, or says where it looked and why it could not.
+const video_module& load() {
+    std::string tried;
+    for (const auto& place : module_places()) {
+        std::error_code ec;
+        if (!std::filesystem::exists(place, ec)) {
+            tried += (tried.empty() ? "" : ", ") + place.string();
+            continue;
+        }
+        // Kept loaded to the end: its frames and files may outlive any one video.
+        void* handle = dlopen(place.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle) throw std::runtime_error(std::string("cannot load the video module: ") + dlerror());
+        using entry = const video_module* (*)();
+        auto* get = reinterpret_cast<entry>(dlsym(handle, "pendulum_figures_video_module"));
+        const video_module* module = get ? get() : nullptr;
+        if (!module || module->version != video_module_version) {
+            throw std::runtime_error("cannot load the video module " + place.string() +
+                                     ": it is from another build of pendulum-figures");
+        }
+        return *module;
     }
-    void operator()(AVCodecContext* p) const { avcodec_free_context(&p); }
-    void operator()(AVPacket* p) const { av_packet_free(&p); }
-    void operator()(SwsContext* p) const { sws_freeContext(p); }
-    void operator()(AVDictionary* p) const { av_dict_free(&p); }
-};
-
-using format_ptr = std::unique_ptr<AVFormatContext, av_deleter>;
-using codec_ptr = std::unique_ptr<AVCodecContext, av_deleter>;
-using packet_ptr = std::unique_ptr<AVPacket, av_deleter>;
-using sws_ptr = std::unique_ptr<SwsContext, av_deleter>;
-
-/// An AVDictionary that frees itself; `get` is what the libraries' functions take.
-struct dictionary {
-    AVDictionary* d = nullptr;
-    dictionary() = default;
-    dictionary(const dictionary&) = delete;
-    dictionary& operator=(const dictionary&) = delete;
-    ~dictionary() { av_dict_free(&d); }
-    AVDictionary** get() { return &d; }
-};
-
-/// The last error the libraries logged on this thread: their messages go into ours.
-thread_local std::string last_logged;
-
-void keep_errors(void* avcl, int level, const char* fmt, std::va_list args) {
-    if (level > AV_LOG_ERROR) return;
-    char line[512];
-    int prefix = 0;
-    av_log_format_line2(avcl, level, fmt, args, line, sizeof line, &prefix);
-    std::string text = line;
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-    if (!text.empty()) last_logged = text;
+    throw std::runtime_error(std::string("cannot write videos: the video module ") + video_module_file +
+                             " is not installed (looked for " + (tried.empty() ? "it" : tried) +
+                             "); install pendulum-figures again");
 }
 
-void quiet_libraries() {
-    static std::once_flag once;
-    std::call_once(once, [] { av_log_set_callback(keep_errors); });
-}
-
-/// "cannot write NAME: WHAT: the library's reason (its log's last error)".
-[[noreturn]] void fail(const std::string& shown, const std::string& what, int code) {
-    char reason[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, reason, sizeof reason);
-    std::string message = "cannot write " + shown + ": " + what + ": " + reason;
-    if (!last_logged.empty()) message += " (" + last_logged + ")";
-    last_logged.clear();
-    if (code == AVERROR(ENOMEM)) throw std::bad_alloc();
-    throw std::runtime_error(message);
-}
-
-void check(int code, const std::string& shown, const std::string& what) {
-    if (code < 0) fail(shown, what, code);
+/// The module, loaded on first use; a failure is thrown again on every use.
+const video_module& module() {
+    static const video_module* loaded = nullptr;
+    static std::mutex mutex;
+    std::lock_guard lock(mutex);
+    if (!loaded) loaded = &load();
+    return *loaded;
 }
 
 }  // namespace
 
-void video_frame::deleter::operator()(AVFrame* f) const { av_frame_free(&f); }
-
-std::pair<int, int> video_size(int width, int height) { return {width + width % 2, height + height % 2}; }
-
-std::pair<int, int> video_frame_rate(double fps) {
-    const AVRational q = av_d2q(fps, 1000000);
-    return {q.num, q.den};
-}
-
-struct video_encoder::state {
-    std::string shown;
-    int width = 0;         // of the frames drawn
-    int height = 0;
-    int coded_width = 0;   // of the video: even
-    int coded_height = 0;
-    format_ptr format;
-    codec_ptr codec;
-    AVStream* stream = nullptr;
-    packet_ptr packet;
-    std::int64_t next_pts = 0;
-    bool finished = false;
-    // Converters for the threads that call convert(): one each at a time, kept for reuse.
-    std::mutex pool_mutex;
-    std::vector<sws_ptr> pool;
-
-    /// Sends a frame (null: the end) and writes the packets that come out.
-    void encode(AVFrame* frame) {
-        check(avcodec_send_frame(codec.get(), frame), shown, "cannot encode a frame");
-        for (;;) {
-            const int r = avcodec_receive_packet(codec.get(), packet.get());
-            if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return;
-            check(r, shown, "cannot encode a frame");
-            // Every frame shows for one frame's time, the last one too.
-            if (packet->duration == 0) packet->duration = 1;
-            av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
-            packet->stream_index = stream->index;
-            check(av_interleaved_write_frame(format.get(), packet.get()), shown, "write error");
-        }
-    }
-};
+std::pair<int, int> video_frame_rate(double fps) { return module().frame_rate(fps); }
 
 video_encoder::video_encoder(const std::filesystem::path& path, const std::string& shown, video_kind kind,
                              int width, int height, double fps)
-    : state_(std::make_unique<state>()) {
-    quiet_libraries();
-    last_logged.clear();
-    state& s = *state_;
-    s.shown = shown;
-    s.width = width;
-    s.height = height;
-    std::tie(s.coded_width, s.coded_height) = video_size(width, height);
-    AVFormatContext* raw = nullptr;
-    check(avformat_alloc_output_context2(&raw, nullptr, kind.container, path.c_str()), shown,
-          std::string("libavformat cannot write ") + kind.container);
-    s.format.reset(raw);
-    // No library version, no random ids: the same frames, the same bytes.
-    s.format->flags |= AVFMT_FLAG_BITEXACT;
-    const AVCodec* encoder = avcodec_find_encoder_by_name(kind.encoder);
-    if (!encoder) {
-        throw std::runtime_error("cannot write " + shown + ": libavcodec has no " + kind.encoder +
-                                 " encoder (Debian's libavcodec59 has it)");
-    }
-    s.stream = avformat_new_stream(s.format.get(), nullptr);
-    s.codec.reset(avcodec_alloc_context3(encoder));
-    s.packet.reset(av_packet_alloc());
-    if (!s.stream || !s.codec || !s.packet) throw std::bad_alloc();
-    AVCodecContext* c = s.codec.get();
-    c->width = s.coded_width;
-    c->height = s.coded_height;
-    c->pix_fmt = AV_PIX_FMT_YUV420P;
-    const auto [num, den] = video_frame_rate(fps);
-    c->time_base = AVRational{den, num};
-    c->framerate = AVRational{num, den};
-    // A key frame every two seconds: players seek and loop without decoding much.
-    c->gop_size = std::max(1, static_cast<int>(std::lround(2 * fps)));
-    // BT.709 in limited range, said in the stream so that players convert it back alike.
-    c->color_primaries = AVCOL_PRI_BT709;
-    c->color_trc = AVCOL_TRC_BT709;
-    c->colorspace = AVCOL_SPC_BT709;
-    c->color_range = AVCOL_RANGE_MPEG;
-    c->chroma_sample_location = AVCHROMA_LOC_LEFT;
-    c->thread_count = kind.threads;
-    c->flags |= AV_CODEC_FLAG_BITEXACT;
-    if (s.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-    dictionary codec_options;
-    check(av_dict_parse_string(codec_options.get(), kind.codec_options, "=", ":", 0), shown, "bad encoder options");
-    check(avcodec_open2(c, encoder, codec_options.get()), shown, std::string("cannot open ") + kind.encoder);
-    if (av_dict_count(codec_options.d) > 0) {
-        throw std::logic_error(std::string(kind.encoder) + " took not every option of " + kind.codec_options);
-    }
-    check(avcodec_parameters_from_context(s.stream->codecpar, c), shown, "cannot set up the stream");
-    s.stream->time_base = c->time_base;
-    s.stream->avg_frame_rate = c->framerate;
-    if (const std::string date = pdf_creation_date(); !date.empty()) {
-        av_dict_set(&s.format->metadata, "creation_time", date.c_str(), 0);
-    }
-    check(avio_open(&s.format->pb, path.c_str(), AVIO_FLAG_WRITE), shown, "cannot open");
-    dictionary muxer_options;
-    check(av_dict_parse_string(muxer_options.get(), kind.muxer_options, "=", ":", 0), shown, "bad muxer options");
-    check(avformat_write_header(s.format.get(), muxer_options.get()), shown, "cannot start the file");
-    if (av_dict_count(muxer_options.d) > 0) {
-        throw std::logic_error(std::string(kind.container) + " took not every option of " + kind.muxer_options);
-    }
-}
+    : sink_(module().open(path, shown, kind, width, height, fps, pdf_creation_date())) {}
 
 video_encoder::~video_encoder() = default;
 
-video_frame video_encoder::convert(const argb_image& image) const {
-    const state& s = *state_;
-    if (image.width != s.width || image.height != s.height) {
-        throw std::logic_error("a video frame of " + std::to_string(image.width) + " x " +
-                               std::to_string(image.height) + " pixels, not " + std::to_string(s.width) + " x " +
-                               std::to_string(s.height));
-    }
-    // An odd side: the last column or row once more, as yuv420p needs even sides.
-    const unsigned char* pixels = image.data.data();
-    int stride = image.stride;
-    std::vector<unsigned char> padded;
-    if (s.coded_width != s.width || s.coded_height != s.height) {
-        stride = 4 * s.coded_width;
-        padded.resize(static_cast<std::size_t>(stride) * static_cast<std::size_t>(s.coded_height));
-        for (int y = 0; y < s.coded_height; ++y) {
-            const unsigned char* from = pixels + static_cast<std::size_t>(std::min(y, s.height - 1)) * image.stride;
-            unsigned char* to = padded.data() + static_cast<std::size_t>(y) * stride;
-            std::memcpy(to, from, 4 * static_cast<std::size_t>(s.width));
-            if (s.coded_width != s.width) std::memcpy(to + 4 * s.width, from + 4 * (s.width - 1), 4);
-        }
-        pixels = padded.data();
-    }
-    video_frame out;
-    out.frame.reset(av_frame_alloc());
-    if (!out.frame) throw std::bad_alloc();
-    AVFrame* f = out.frame.get();
-    f->format = AV_PIX_FMT_YUV420P;
-    f->width = s.coded_width;
-    f->height = s.coded_height;
-    check(av_frame_get_buffer(f, 0), s.shown, "cannot hold a frame");
-    sws_ptr sws;
-    {
-        std::lock_guard lock(state_->pool_mutex);
-        if (!state_->pool.empty()) {
-            sws = std::move(state_->pool.back());
-            state_->pool.pop_back();
-        }
-    }
-    if (!sws) {
-        // Cairo's ARGB32 is native-endian: RGB32 to libswscale. Bit-exact, accurate
-        // rounding: the same pixels on every CPU, whatever its SIMD.
-        sws.reset(sws_getContext(s.coded_width, s.coded_height, AV_PIX_FMT_RGB32, s.coded_width, s.coded_height,
-                                 AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr,
-                                 nullptr, nullptr));
-        if (!sws) throw std::runtime_error("cannot write " + s.shown + ": libswscale cannot convert the frames");
-        // Full-range RGB to BT.709 limited range.
-        sws_setColorspaceDetails(sws.get(), sws_getCoefficients(SWS_CS_ITU709), 1, sws_getCoefficients(SWS_CS_ITU709),
-                                 0, 0, 1 << 16, 1 << 16);
-    }
-    const uint8_t* const planes[1] = {pixels};
-    const int strides[1] = {stride};
-    sws_scale(sws.get(), planes, strides, 0, s.coded_height, f->data, f->linesize);
-    std::lock_guard lock(state_->pool_mutex);
-    state_->pool.push_back(std::move(sws));
-    return out;
-}
+video_frame video_encoder::convert(const argb_image& image) const { return sink_->convert(image); }
 
-void video_encoder::add(video_frame frame) {
-    state& s = *state_;
-    if (s.finished) throw std::logic_error("a frame added to a finished video");
-    frame.frame->pts = s.next_pts++;
-    s.encode(frame.frame.get());
-}
+void video_encoder::add(video_frame frame) { sink_->add(std::move(frame)); }
 
-void video_encoder::finish() {
-    state& s = *state_;
-    if (s.finished) return;
-    s.finished = true;
-    s.encode(nullptr);
-    check(av_write_trailer(s.format.get()), s.shown, "cannot end the file");
-    check(avio_closep(&s.format->pb), s.shown, "write error");
-}
+void video_encoder::finish() { sink_->finish(); }
 
 }  // namespace plot

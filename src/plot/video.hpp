@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Video files (MP4 with H.264, WebM with VP9) written through FFmpeg's libraries.
+// Video files (MP4 with H.264, WebM with VP9) written through FFmpeg's libraries, which live
+// in a module of their own (video_module.hpp), loaded the first time a video is written:
+// every other command starts without them.
 
 #include "plot/frames.hpp"
 
@@ -8,8 +10,6 @@
 #include <memory>
 #include <string>
 #include <string_view>
-
-struct AVFrame;
 
 namespace plot {
 
@@ -32,17 +32,18 @@ inline constexpr video_kind webm_video{"webm", "libvpx-vp9",
 
 /// A frame converted for the encoder (yuv420p, BT.709, limited range); empty by default.
 struct video_frame {
-    /// Frees the frame.
-    struct deleter {
-        /// Frees an AVFrame.
-        void operator()(AVFrame* f) const;
+    /// The converted pixels, as the video module holds them.
+    struct pixels {
+        virtual ~pixels() = default;
     };
-    std::unique_ptr<AVFrame, deleter> frame;  ///< the pixels
+    std::unique_ptr<pixels> data;  ///< the pixels
 };
+
+class video_sink;
 
 /// The even size a video of width x height pixels has: yuv420p halves the colour in both
 /// directions, so an odd side gets one more row or column, a copy of its last.
-std::pair<int, int> video_size(int width, int height);
+inline std::pair<int, int> video_size(int width, int height) { return {width + width % 2, height + height % 2}; }
 
 /// Encodes frames of one size, in order, into a video file at `path` (a temporary: the
 /// caller renames it). Every setting is fixed, the thread counts too, and the files carry
@@ -52,7 +53,7 @@ class video_encoder {
 public:
     /// Opens the file for frames of width x height pixels (any size: see video_size) shown
     /// at `fps` frames per second. Throws std::runtime_error naming `shown` (the file's
-    /// name for messages) if the libraries cannot.
+    /// name for messages) if the libraries cannot, or the video module is not installed.
     video_encoder(const std::filesystem::path& path, const std::string& shown, video_kind kind, int width,
                   int height, double fps);
     ~video_encoder();
@@ -69,8 +70,7 @@ public:
     void finish();
 
 private:
-    struct state;
-    std::unique_ptr<state> state_;
+    std::unique_ptr<video_sink> sink_;
 };
 
 /// The frame rate as libavformat takes it: a fraction that is fps within 1e-6.

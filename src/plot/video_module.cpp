@@ -1,0 +1,296 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The video module (see video_module.hpp): video through libavformat, libavcodec and
+// libswscale, every handle owned, every status checked, the libraries' log kept out of the
+// terminal and put into the error instead. Built as a shared object of its own; it uses
+// nothing of the program but the types in video_module.hpp.
+#include "plot/video_module.hpp"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/dict.h>
+#include <libavutil/error.h>
+#include <libavutil/log.h>
+#include <libavutil/rational.h>
+#include <libswscale/swscale.h>
+}
+
+#include <cmath>
+#include <cstdarg>
+#include <cstring>
+#include <mutex>
+#include <new>
+#include <stdexcept>
+#include <vector>
+
+namespace plot {
+
+namespace {
+
+struct av_deleter {
+    void operator()(AVFormatContext* p) const {
+        if (p->pb && !(p->oformat->flags & AVFMT_NOFILE)) avio_closep(&p->pb);
+        avformat_free_context(p);
+    }
+    void operator()(AVCodecContext* p) const { avcodec_free_context(&p); }
+    void operator()(AVPacket* p) const { av_packet_free(&p); }
+    void operator()(SwsContext* p) const { sws_freeContext(p); }
+    void operator()(AVDictionary* p) const { av_dict_free(&p); }
+};
+
+using format_ptr = std::unique_ptr<AVFormatContext, av_deleter>;
+using codec_ptr = std::unique_ptr<AVCodecContext, av_deleter>;
+using packet_ptr = std::unique_ptr<AVPacket, av_deleter>;
+using sws_ptr = std::unique_ptr<SwsContext, av_deleter>;
+
+/// An AVDictionary that frees itself; `get` is what the libraries' functions take.
+struct dictionary {
+    AVDictionary* d = nullptr;
+    dictionary() = default;
+    dictionary(const dictionary&) = delete;
+    dictionary& operator=(const dictionary&) = delete;
+    ~dictionary() { av_dict_free(&d); }
+    AVDictionary** get() { return &d; }
+};
+
+/// The last error the libraries logged on this thread: their messages go into ours.
+thread_local std::string last_logged;
+
+void keep_errors(void* avcl, int level, const char* fmt, std::va_list args) {
+    if (level > AV_LOG_ERROR) return;
+    char line[512];
+    int prefix = 0;
+    av_log_format_line2(avcl, level, fmt, args, line, sizeof line, &prefix);
+    std::string text = line;
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+    if (!text.empty()) last_logged = text;
+}
+
+void quiet_libraries() {
+    static std::once_flag once;
+    std::call_once(once, [] { av_log_set_callback(keep_errors); });
+}
+
+/// "cannot write NAME: WHAT: the library's reason (its log's last error)".
+[[noreturn]] void fail(const std::string& shown, const std::string& what, int code) {
+    char reason[AV_ERROR_MAX_STRING_SIZE] = {};
+    av_strerror(code, reason, sizeof reason);
+    std::string message = "cannot write " + shown + ": " + what + ": " + reason;
+    if (!last_logged.empty()) message += " (" + last_logged + ")";
+    last_logged.clear();
+    if (code == AVERROR(ENOMEM)) throw std::bad_alloc();
+    throw std::runtime_error(message);
+}
+
+void check(int code, const std::string& shown, const std::string& what) {
+    if (code < 0) fail(shown, what, code);
+}
+
+/// A converted frame: an AVFrame, freed with it.
+struct av_pixels final : video_frame::pixels {
+    AVFrame* frame = av_frame_alloc();
+    av_pixels() {
+        if (!frame) throw std::bad_alloc();
+    }
+    av_pixels(const av_pixels&) = delete;
+    av_pixels& operator=(const av_pixels&) = delete;
+    ~av_pixels() override { av_frame_free(&frame); }
+};
+
+std::pair<int, int> frame_rate(double fps) {
+    const AVRational q = av_d2q(fps, 1000000);
+    return {q.num, q.den};
+}
+
+struct state {
+    std::string shown;
+    int width = 0;         // of the frames drawn
+    int height = 0;
+    int coded_width = 0;   // of the video: even
+    int coded_height = 0;
+    format_ptr format;
+    codec_ptr codec;
+    AVStream* stream = nullptr;
+    packet_ptr packet;
+    std::int64_t next_pts = 0;
+    bool finished = false;
+    // Converters for the threads that call convert(): one each at a time, kept for reuse.
+    std::mutex pool_mutex;
+    std::vector<sws_ptr> pool;
+
+    /// Sends a frame (null: the end) and writes the packets that come out.
+    void encode(AVFrame* frame) {
+        check(avcodec_send_frame(codec.get(), frame), shown, "cannot encode a frame");
+        for (;;) {
+            const int r = avcodec_receive_packet(codec.get(), packet.get());
+            if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return;
+            check(r, shown, "cannot encode a frame");
+            // Every frame shows for one frame's time, the last one too.
+            if (packet->duration == 0) packet->duration = 1;
+            av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
+            packet->stream_index = stream->index;
+            check(av_interleaved_write_frame(format.get(), packet.get()), shown, "write error");
+        }
+    }
+};
+
+/// A video file being written.
+class av_sink final : public video_sink {
+public:
+    av_sink(const std::filesystem::path& path, const std::string& shown, const video_kind& kind, int width,
+            int height, double fps, const std::string& creation_date);
+    video_frame convert(const argb_image& image) const override;
+    void add(video_frame frame) override;
+    void finish() override;
+
+private:
+    std::unique_ptr<state> state_ = std::make_unique<state>();
+};
+
+av_sink::av_sink(const std::filesystem::path& path, const std::string& shown, const video_kind& kind, int width,
+                 int height, double fps, const std::string& creation_date) {
+    quiet_libraries();
+    last_logged.clear();
+    state& s = *state_;
+    s.shown = shown;
+    s.width = width;
+    s.height = height;
+    std::tie(s.coded_width, s.coded_height) = video_size(width, height);
+    AVFormatContext* raw = nullptr;
+    check(avformat_alloc_output_context2(&raw, nullptr, kind.container, path.c_str()), shown,
+          std::string("libavformat cannot write ") + kind.container);
+    s.format.reset(raw);
+    // No library version, no random ids: the same frames, the same bytes.
+    s.format->flags |= AVFMT_FLAG_BITEXACT;
+    const AVCodec* encoder = avcodec_find_encoder_by_name(kind.encoder);
+    if (!encoder) {
+        throw std::runtime_error("cannot write " + shown + ": libavcodec has no " + kind.encoder +
+                                 " encoder (Debian's libavcodec59 has it)");
+    }
+    s.stream = avformat_new_stream(s.format.get(), nullptr);
+    s.codec.reset(avcodec_alloc_context3(encoder));
+    s.packet.reset(av_packet_alloc());
+    if (!s.stream || !s.codec || !s.packet) throw std::bad_alloc();
+    AVCodecContext* c = s.codec.get();
+    c->width = s.coded_width;
+    c->height = s.coded_height;
+    c->pix_fmt = AV_PIX_FMT_YUV420P;
+    const auto [num, den] = frame_rate(fps);
+    c->time_base = AVRational{den, num};
+    c->framerate = AVRational{num, den};
+    // A key frame every two seconds: players seek and loop without decoding much.
+    c->gop_size = std::max(1, static_cast<int>(std::lround(2 * fps)));
+    // BT.709 in limited range, said in the stream so that players convert it back alike.
+    c->color_primaries = AVCOL_PRI_BT709;
+    c->color_trc = AVCOL_TRC_BT709;
+    c->colorspace = AVCOL_SPC_BT709;
+    c->color_range = AVCOL_RANGE_MPEG;
+    c->chroma_sample_location = AVCHROMA_LOC_LEFT;
+    c->thread_count = kind.threads;
+    c->flags |= AV_CODEC_FLAG_BITEXACT;
+    if (s.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+    dictionary codec_options;
+    check(av_dict_parse_string(codec_options.get(), kind.codec_options, "=", ":", 0), shown, "bad encoder options");
+    check(avcodec_open2(c, encoder, codec_options.get()), shown, std::string("cannot open ") + kind.encoder);
+    if (av_dict_count(codec_options.d) > 0) {
+        throw std::logic_error(std::string(kind.encoder) + " took not every option of " + kind.codec_options);
+    }
+    check(avcodec_parameters_from_context(s.stream->codecpar, c), shown, "cannot set up the stream");
+    s.stream->time_base = c->time_base;
+    s.stream->avg_frame_rate = c->framerate;
+    if (!creation_date.empty()) av_dict_set(&s.format->metadata, "creation_time", creation_date.c_str(), 0);
+    check(avio_open(&s.format->pb, path.c_str(), AVIO_FLAG_WRITE), shown, "cannot open");
+    dictionary muxer_options;
+    check(av_dict_parse_string(muxer_options.get(), kind.muxer_options, "=", ":", 0), shown, "bad muxer options");
+    check(avformat_write_header(s.format.get(), muxer_options.get()), shown, "cannot start the file");
+    if (av_dict_count(muxer_options.d) > 0) {
+        throw std::logic_error(std::string(kind.container) + " took not every option of " + kind.muxer_options);
+    }
+}
+
+video_frame av_sink::convert(const argb_image& image) const {
+    const state& s = *state_;
+    if (image.width != s.width || image.height != s.height) {
+        throw std::logic_error("a video frame of " + std::to_string(image.width) + " x " +
+                               std::to_string(image.height) + " pixels, not " + std::to_string(s.width) + " x " +
+                               std::to_string(s.height));
+    }
+    // An odd side: the last column or row once more, as yuv420p needs even sides.
+    const unsigned char* pixels = image.data.data();
+    int stride = image.stride;
+    std::vector<unsigned char> padded;
+    if (s.coded_width != s.width || s.coded_height != s.height) {
+        stride = 4 * s.coded_width;
+        padded.resize(static_cast<std::size_t>(stride) * static_cast<std::size_t>(s.coded_height));
+        for (int y = 0; y < s.coded_height; ++y) {
+            const unsigned char* from = pixels + static_cast<std::size_t>(std::min(y, s.height - 1)) * image.stride;
+            unsigned char* to = padded.data() + static_cast<std::size_t>(y) * stride;
+            std::memcpy(to, from, 4 * static_cast<std::size_t>(s.width));
+            if (s.coded_width != s.width) std::memcpy(to + 4 * s.width, from + 4 * (s.width - 1), 4);
+        }
+        pixels = padded.data();
+    }
+    auto converted = std::make_unique<av_pixels>();
+    AVFrame* f = converted->frame;
+    f->format = AV_PIX_FMT_YUV420P;
+    f->width = s.coded_width;
+    f->height = s.coded_height;
+    check(av_frame_get_buffer(f, 0), s.shown, "cannot hold a frame");
+    sws_ptr sws;
+    {
+        std::lock_guard lock(state_->pool_mutex);
+        if (!state_->pool.empty()) {
+            sws = std::move(state_->pool.back());
+            state_->pool.pop_back();
+        }
+    }
+    if (!sws) {
+        // Cairo's ARGB32 is native-endian: RGB32 to libswscale. Bit-exact, accurate
+        // rounding: the same pixels on every CPU, whatever its SIMD.
+        sws.reset(sws_getContext(s.coded_width, s.coded_height, AV_PIX_FMT_RGB32, s.coded_width, s.coded_height,
+                                 AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr,
+                                 nullptr, nullptr));
+        if (!sws) throw std::runtime_error("cannot write " + s.shown + ": libswscale cannot convert the frames");
+        // Full-range RGB to BT.709 limited range.
+        sws_setColorspaceDetails(sws.get(), sws_getCoefficients(SWS_CS_ITU709), 1, sws_getCoefficients(SWS_CS_ITU709),
+                                 0, 0, 1 << 16, 1 << 16);
+    }
+    const uint8_t* const planes[1] = {pixels};
+    const int strides[1] = {stride};
+    sws_scale(sws.get(), planes, strides, 0, s.coded_height, f->data, f->linesize);
+    std::lock_guard lock(state_->pool_mutex);
+    state_->pool.push_back(std::move(sws));
+    video_frame out;
+    out.data = std::move(converted);
+    return out;
+}
+
+void av_sink::add(video_frame frame) {
+    state& s = *state_;
+    if (s.finished) throw std::logic_error("a frame added to a finished video");
+    auto* pixels = dynamic_cast<av_pixels*>(frame.data.get());
+    if (!pixels) throw std::logic_error("a video frame not converted by the video module");
+    pixels->frame->pts = s.next_pts++;
+    s.encode(pixels->frame);
+}
+
+void av_sink::finish() {
+    state& s = *state_;
+    if (s.finished) return;
+    s.finished = true;
+    s.encode(nullptr);
+    check(av_write_trailer(s.format.get()), s.shown, "cannot end the file");
+    check(avio_closep(&s.format->pb), s.shown, "write error");
+}
+
+std::unique_ptr<video_sink> open(const std::filesystem::path& path, const std::string& shown, const video_kind& kind,
+                                 int width, int height, double fps, const std::string& creation_date) {
+    return std::make_unique<av_sink>(path, shown, kind, width, height, fps, creation_date);
+}
+
+constexpr video_module module{video_module_version, open, frame_rate};
+
+}  // namespace
+}  // namespace plot
+
+extern "C" const plot::video_module* pendulum_figures_video_module() { return &plot::module; }

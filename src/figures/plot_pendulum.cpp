@@ -58,6 +58,11 @@ series_style bob_style(const panel_spec& p, const std::vector<bob_start>& starts
     const auto& m = p.methods[j];
     series_style st = style_of(m, static_cast<int>(j));
     if (starts.size() > 1) {
+        // The phase panel's line of the start's orbit, so that one palette colour (the paper
+        // theme's black) still tells the starts apart, in the drawing and in its legend.
+        static const line_style lines[] = {line_style::solid, line_style::dashed, line_style::dotted,
+                                           line_style::dash_dot, line_style::dash_dot_dot};
+        if (!m.style) st.line = lines[i % 5];
         st.color = static_cast<int>(i);
         st.label = p.methods.size() == 1 ? plot::label(starts[i].label)
                                          : plot::join(plot::label(starts[i].label + ", "), st.label);
@@ -157,7 +162,7 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
                 panel.data.push_back(std::move(s));
             }
             plot::series rod = series_of(st);
-            rod.line = m.style.value_or(line_style::solid);
+            rod.line = m.style.value_or(starts.size() > 1 ? st.line : line_style::solid);
             if (rod.line == line_style::none) rod.line = line_style::solid;
             rod.marker = marker_style::none;
             rod.width_scale = 1.2;

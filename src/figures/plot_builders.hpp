@@ -44,9 +44,10 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
 
 /// A bob's radius in units of the theme's marker radius.
 inline constexpr double bob_marker_scale = 3.0;
-/// The largest distance, in rod lengths, between neighbouring bobs of a motion streak: a
-/// fraction of any built-in theme's bob diameter (0.13 rod lengths and more), so that the
-/// streak reads as one continuous smear however far the bob went since the previous frame.
+/// The distance, in rod lengths, between neighbouring bobs of a motion streak, on average
+/// along the way since the previous frame: a small fraction of any built-in theme's bob
+/// diameter (0.14 rod lengths and more), so that the streak reads as one continuous smear
+/// however far the bob went.
 inline constexpr double streak_spacing = 0.02;
 /// The most bobs in one streak (a jump of 1.28 rod lengths per frame at streak_spacing).
 inline constexpr int max_streak_bobs = 64;
@@ -61,7 +62,8 @@ struct streak_bob {
 
 /// No strobing: the places the bob passed through between the previous frame (w0 t minus
 /// `frame_step`, or the release at 0) and now, oldest first, the first at the previous
-/// frame's place, at most streak_spacing rod lengths apart along the way, fading into the past;
+/// frame's place, evenly in time and streak_spacing rod lengths apart on average along the way,
+/// fading into the past;
 /// none where the bob did not move or for a still figure (frame_step 0).
 std::vector<streak_bob> motion_streak(const std::function<double(double)>& theta, double w0_t, double frame_step);
 

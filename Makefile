@@ -112,6 +112,7 @@ figures: build
 	mkdir -p figures
 	$(BUILD)/pendulum-figures render --all examples/*.toml -o figures -f pdf,png
 	$(BUILD)/pendulum-figures render swing --theme slides --dpi 48 -f gif -o figures
+	$(BUILD)/pendulum-figures render over-the-top --theme slides --dpi 48 -f gif -o figures
 
 # Regenerates the images the tests compare renders to; run it after a deliberate change
 # to the figures, look at the new images, and commit them.

@@ -3,6 +3,10 @@
 // Beamer document that plays the PDF, and bad input.
 #include "figures/animation.hpp"
 #include "figures/catalog.hpp"
+#include "figures/describe.hpp"
+#include "figures/plot_builders.hpp"
+#include "figures/spec_build.hpp"
+#include "figures/themes.hpp"
 #include "pendulum/exact.hpp"
 #include "plot/workers.hpp"
 #include "process.hpp"
@@ -16,6 +20,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <numbers>
 #include <set>
@@ -237,6 +242,253 @@ TEST(Animation, BadInputIsExit2AndWritesNothing) {
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("apply to animations"), std::string::npos) << r.err;
     EXPECT_EQ(files_in(dir), (std::set<std::string>{"a.toml"}));
+    fs::remove_all(dir);
+}
+
+/// The bobs of a pendulum panel in one frame: for each start and method, the places of its
+/// motion streak (oldest first) and of the bob itself.
+struct frame_bobs {
+    std::vector<std::vector<std::pair<double, double>>> streaks;
+    std::vector<std::pair<double, double>> bobs;
+    std::vector<int> colors;
+};
+
+frame_bobs bobs_of(const plot::panel& panel) {
+    frame_bobs out;
+    std::vector<std::pair<double, double>> streak;
+    for (const auto& s : panel.data) {
+        if (!s.overlay || s.marker == plot::marker_style::none || s.marker_scale != figures::bob_marker_scale) continue;
+        if (s.alpha < 1) {
+            streak.emplace_back(s.x.at(0), s.y.at(0));
+            continue;
+        }
+        out.streaks.push_back(streak);
+        out.bobs.emplace_back(s.x.at(0), s.y.at(0));
+        out.colors.push_back(s.color);
+        streak.clear();
+    }
+    return out;
+}
+
+double distance(std::pair<double, double> a, std::pair<double, double> b) {
+    return std::hypot(a.first - b.first, a.second - b.second);
+}
+
+TEST(Animation, NoStrobingInAnyBuiltinAnimationOrTheme) {
+    // For every frame of every built-in animation with a pendulum, in every theme: the bob's
+    // jump since the previous frame, against the bob's diameter, and the gaps of the motion
+    // streak that bridges it, which must begin where the previous frame's bob was.
+    int animations = 0;
+    for (const auto& e : figures::catalog()) {
+        if (!e.spec.animation) continue;
+        std::vector<std::size_t> drawings;
+        for (std::size_t i = 0; i < e.spec.panels.size(); ++i) {
+            if (e.spec.panels[i].plot->drawing) drawings.push_back(i);
+        }
+        if (drawings.empty()) continue;
+        ++animations;
+        for (const auto& theme_row : figures::builtin_themes()) {
+            const auto theme = figures::load_theme(std::string(theme_row.name));
+            auto options = figures::sized_by({}, theme);
+            options.animated = true;
+            const auto plan = figures::plan_animation(e, options);
+            const auto base = figures::build(e, options);
+            // The bob's diameter in rod lengths, at least: the shorter side of the panel's cell
+            // (of a figure of fixed size, its share of it) holds the drawing's 2.4 rod lengths,
+            // and the plot area inside it is smaller still.
+            double width_cm = base.panel_width_cm;
+            double height_cm = base.panel_aspect * base.panel_width_cm;
+            if (theme.fixed_width_cm > 0) width_cm = theme.fixed_width_cm / base.cols;
+            if (theme.fixed_height_cm > 0) height_cm = theme.fixed_height_cm / base.rows;
+            const double side_pt = std::min(width_cm, height_cm) / 2.54 * 72;
+            const double diameter = 2 * theme.marker_radius_pt * figures::bob_marker_scale * 2.4 / side_pt;
+            double worst_jump = 0;
+            double worst_gap = 0;
+            frame_bobs last;
+            for (int i = 0; i < plan.frames; ++i) {
+                const auto f = figures::animation_frame(e, options, plan, base, plan.time(i));
+                for (std::size_t d : drawings) {
+                    const auto now = bobs_of(f.panels[d]);
+                    ASSERT_FALSE(now.bobs.empty()) << e.id;
+                    if (i == 0) {
+                        for (const auto& streak : now.streaks) EXPECT_TRUE(streak.empty()) << e.id << ": nothing before the release";
+                        last = now;
+                        continue;
+                    }
+                    ASSERT_EQ(now.bobs.size(), last.bobs.size()) << e.id;
+                    for (std::size_t b = 0; b < now.bobs.size(); ++b) {
+                        worst_jump = std::max(worst_jump, distance(last.bobs[b], now.bobs[b]) / diameter);
+                        // The streak: from the previous frame's bob, through its faint bobs, to this one.
+                        std::vector<std::pair<double, double>> chain = {last.bobs[b]};
+                        chain.insert(chain.end(), now.streaks[b].begin(), now.streaks[b].end());
+                        chain.push_back(now.bobs[b]);
+                        if (!now.streaks[b].empty()) {
+                            EXPECT_LT(distance(now.streaks[b].front(), last.bobs[b]), 1e-9) << e.id << " frame " << i;
+                        }
+                        for (std::size_t k = 1; k < chain.size(); ++k) {
+                            worst_gap = std::max(worst_gap, distance(chain[k - 1], chain[k]) / diameter);
+                        }
+                    }
+                    last = now;
+                }
+            }
+            std::cout << e.id << " in " << theme_row.name << ": " << plan.frames << " frames, bob diameter "
+                      << diameter << " rod lengths; largest jump per frame " << worst_jump
+                      << " diameters, largest gap in its streak " << worst_gap << " diameters\n";
+            // Neighbouring bobs overlap by half their diameter at least: one continuous smear.
+            EXPECT_LE(worst_gap, 0.5) << e.id << " in " << theme_row.name;
+        }
+    }
+    EXPECT_GE(animations, 2);
+}
+
+TEST(Animation, StreakBridgesTheFrameAndFades) {
+    // A bob swinging through the bottom at 2 w0 (170 degrees) moves 0.21 rod lengths in a
+    // frame of 0.104 w0 t (1/30 s of a 1 m pendulum).
+    const pendulum::exact_solution exact(170 * std::numbers::pi / 180);
+    const auto theta = [&](double t) { return exact.theta_at_fraction(t / (4 * exact.quarter_period())); };
+    const double bottom = exact.quarter_period();
+    const double step = 1.0 / 30 / std::sqrt(1.0 / 9.80665);
+    const auto streak = figures::motion_streak(theta, bottom, step);
+    ASSERT_GE(streak.size(), 10u);
+    EXPECT_NEAR(streak.front().angle, theta(bottom - step), 1e-12);
+    for (std::size_t k = 1; k < streak.size(); ++k) {
+        EXPECT_LE(2 * std::sin(std::fabs(streak[k].angle - streak[k - 1].angle) / 2), figures::streak_spacing * 1.01);
+        EXPECT_GT(streak[k].alpha, streak[k - 1].alpha);
+    }
+    EXPECT_LT(streak.back().alpha, 1);
+    // At rest, still figures and the first frame: no streak.
+    EXPECT_TRUE(figures::motion_streak(theta, bottom, 0).empty());
+    EXPECT_TRUE(figures::motion_streak(theta, 0, step).empty());
+    EXPECT_TRUE(figures::motion_streak([](double) { return 0.3; }, 5, step).empty());
+}
+
+TEST(Animation, OverTheTopSwingsCreepsAndRotates) {
+    const auto& e = figures::find("over-the-top");
+    ASSERT_TRUE(e.spec.animation);
+    figures::build_options options;
+    options.animated = true;
+    const auto plan = figures::plan_animation(e, options);
+    // Two periods of the libration at E = 1.6, T/T0 = 2 K(0.8)/pi, in a 1 m pendulum's time.
+    const double period = pendulum::motion::from_energy(1.6).period();
+    EXPECT_NEAR(plan.reference_period, period, 1e-12);
+    EXPECT_EQ(plan.frames, static_cast<int>(std::floor(2 * period * std::sqrt(1.0 / 9.80665) * 30 + 1e-9)) + 1);
+    const auto base = figures::build(e, options);
+    double highest[3] = {-2, -2, -2};
+    double lowest_after_top[3] = {2, 2, 2};
+    bool passed_top = false;
+    for (int i = 0; i < plan.frames; ++i) {
+        const auto f = figures::animation_frame(e, options, plan, base, plan.time(i));
+        const auto now = bobs_of(f.panels[0]);
+        ASSERT_EQ(now.bobs.size(), 3u);
+        EXPECT_EQ(now.colors, (std::vector<int>{0, 1, 2}));
+        for (int b = 0; b < 3; ++b) {
+            highest[b] = std::max(highest[b], now.bobs[static_cast<std::size_t>(b)].second);
+            if (highest[b] > 0.999) lowest_after_top[b] = std::min(lowest_after_top[b], now.bobs[static_cast<std::size_t>(b)].second);
+        }
+        // The rotation goes past the top: its bob shows on the left of the pivot after it.
+        if (now.bobs[2].second > 0.9 && now.bobs[2].first < 0) passed_top = true;
+        // A moving point on each orbit of the phase portrait, in the same colours.
+        std::vector<int> dots;
+        for (const auto& s : f.panels[1].data) {
+            if (s.overlay && s.marker == plot::marker_style::filled_circle) dots.push_back(s.color);
+        }
+        EXPECT_EQ(dots, (std::vector<int>{0, 1, 2}));
+    }
+    // E = 1.6 turns back where 1 - cos(theta) = 1.6: y = 0.6.
+    EXPECT_NEAR(highest[0], 0.6, 0.01);
+    // E = 2 creeps towards the top and never reaches it; E = 2.6 goes over it and comes round again.
+    EXPECT_GT(highest[1], 0.99);
+    EXPECT_LT(highest[1], 1.0);
+    EXPECT_GT(highest[2], 0.999);
+    EXPECT_LT(lowest_after_top[2], -0.99);
+    EXPECT_TRUE(passed_top);
+    // Its words: what each pendulum does.
+    const auto d = figures::describe(e, figures::build(e));
+    for (const char* fact : {"E = 1.6 swings between two turning points (libration)",
+                             "E = 2 creeps up towards the top and never quite reaches it (separatrix)",
+                             "E = 2.6 goes over the top, round and round (rotation)"}) {
+        EXPECT_NE(d.text.find(fact), std::string::npos) << fact << " in\n" << d.text;
+    }
+}
+
+TEST(Animation, OverTheTopInEveryThemeAndFormat) {
+    const auto dir = temp_dir("over-the-top");
+    for (const auto& theme : figures::builtin_themes()) {
+        const auto r = run_cli("render over-the-top --theme " + std::string(theme.name) +
+                                   " -f gif,pdf,png,mp4,webm --frames 20..23 --dpi 16 -o '" + dir.string() + "'");
+        ASSERT_EQ(r.status, 0) << theme.name << ": " << r.err;
+        EXPECT_EQ(files_in(dir), (std::set<std::string>{"over-the-top.gif", "over-the-top.pdf", "over-the-top.mp4",
+                                                        "over-the-top.webm", "over-the-top-0020.png",
+                                                        "over-the-top-0021.png", "over-the-top-0022.png",
+                                                        "over-the-top-0023.png"}))
+            << theme.name;
+        EXPECT_EQ(read_gif(slurp(dir / "over-the-top.gif")).frames, 4) << theme.name;
+        for (const auto& f : fs::directory_iterator(dir)) fs::remove(f.path());
+    }
+    fs::remove_all(dir);
+}
+
+TEST(Animation, SeveralStartsInOnePendulumPanel) {
+    // The isochronism demonstration: released together at 10 and 170 degrees, each its own
+    // colour and legend entry, each swinging with its own period.
+    const auto spec = figures::parse_spec("[animation]\nperiods = 1\n[[panel]]\nplot = \"pendulum\"\n"
+                                          "theta0 = [\"10deg\", \"170deg\"]\nmethods = [\"exact\"]\n",
+                                          "isochronism.toml");
+    ASSERT_EQ(spec.panels[0].theta0.size(), 2u);
+    const auto f = figures::build_figure(spec);
+    std::vector<std::string> labels;
+    std::vector<int> colors;
+    for (const auto& s : f.panels[0].data) {
+        if (s.label.empty()) continue;
+        labels.push_back(s.label.markup);
+        colors.push_back(s.color);
+    }
+    EXPECT_EQ(labels, (std::vector<std::string>{"<i>\u03d1</i><sub>0</sub> = 10\u00b0",
+                                                "<i>\u03d1</i><sub>0</sub> = 170\u00b0"}));
+    EXPECT_EQ(colors, (std::vector<int>{0, 1}));
+    // Half a period of the 10 degree pendulum later, it is at -10 degrees while the 170
+    // degree one (T = 2.4 T0) is still on its way down, on the side it was released from.
+    auto moving = f;
+    for (auto& p : moving.panels) std::erase_if(p.data, [](const plot::series& s) { return s.marker_scale == figures::bob_marker_scale; });
+    const double half = 0.5 * 4 * pendulum::exact_solution(10 * std::numbers::pi / 180).quarter_period();
+    figures::add_frame_state(moving, spec, spec.panels, half);
+    const auto now = bobs_of(moving.panels[0]);
+    ASSERT_EQ(now.bobs.size(), 2u);
+    EXPECT_NEAR(now.bobs[0].first, -std::sin(10 * std::numbers::pi / 180), 1e-9);
+    const double theta170 = pendulum::exact_solution(170 * std::numbers::pi / 180)
+                                .theta_at_fraction(half / (4 * pendulum::exact_solution(170 * std::numbers::pi / 180).quarter_period()));
+    EXPECT_NEAR(now.bobs[1].first, std::sin(theta170), 1e-9);
+    EXPECT_GT(now.bobs[1].first, 0);
+}
+
+TEST(Animation, BadCombinationsAreExit2AndSayWhatWorks) {
+    const auto dir = temp_dir("combinations");
+    const std::pair<std::string, std::string> cases[] = {
+        {"plot period --x energy --methods exact,lowest", "use methods = [\"exact\"]"},
+        {"plot period --x energy --range -1,4", "give energies from 0 up"},
+        {"plot period --x energy --y error-log", "y = \"value\""},
+        {"plot period --x energy --angle-unit deg", "leave out angle_unit"},
+        {"plot period --x time", "'x' = \"time\""},
+        {"plot pendulum --energy 2.6 --methods exact,lowest", "describes librations only"},
+        {"plot pendulum --energy -1", "energy"},
+        {"plot trajectory --energy 2.5 --methods exact,harmonic --time t/T0", "describes librations only"},
+        {"plot phase --energy 3 --trail 0.3", "does not apply to plot 'phase'"},
+        {"plot trajectory --energy 2 --time t/T", "has no period T"},
+    };
+    for (const auto& [command, why] : cases) {
+        const auto r = run_cli(command + " -f svg", dir);
+        EXPECT_EQ(r.status, 2) << command;
+        EXPECT_NE(r.err.find(why), std::string::npos) << command << ": " << r.err;
+    }
+    EXPECT_EQ(files_in(dir), std::set<std::string>{});
+    for (const char* good : {"plot phase --energy 0.5,1.5,2,2.5,3 --angle-unit deg -f svg",
+                             "plot trajectory --theta0 0 --omega0 2.2 -f svg",
+                             "plot period --x energy -f svg", "plot pendulum --energy 1.6,2,2.6 -f svg"}) {
+        const auto r = run_cli(good, dir);
+        EXPECT_EQ(r.status, 0) << good << ": " << r.err;
+    }
+    EXPECT_EQ(files_in(dir), (std::set<std::string>{"phase.svg", "trajectory.svg", "period.svg", "pendulum.svg"}));
     fs::remove_all(dir);
 }
 

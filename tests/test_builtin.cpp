@@ -26,7 +26,7 @@ using namespace figures;
 figure_spec parsed(const builtin_spec& b) { return parse_spec(b.text, std::string(b.id) + ".toml"); }
 
 TEST(Builtin, EverySpecReadsAndBuilds) {
-    ASSERT_EQ(builtin_specs().size(), 15u);
+    ASSERT_EQ(builtin_specs().size(), 16u);
     for (const auto& b : builtin_specs()) {
         const auto spec = parsed(b);
         EXPECT_EQ(spec.id, b.id);
@@ -154,6 +154,7 @@ TEST(Describe, EveryBuiltinFigureInWords) {
         {"period-error", "on a logarithmic scale"},
         {"trajectory-second", "Second order stays on the exact curve"},
         {"swing", "An animation over 3 periods"},
+        {"over-the-top", "E = 2.6 goes over the top, round and round (rotation)"},
         {"phase-portrait", "against theta, theta from -pi to pi"},
     };
     for (const auto& f : facts) {

@@ -38,11 +38,11 @@ plot::theme slides_theme() { return figures::load_theme("slides"); }
 
 TEST(Catalog, EveryFigureOfThePaperAndItsAliases) {
     const auto& c = figures::catalog();
-    ASSERT_EQ(c.size(), 15u);
+    ASSERT_EQ(c.size(), 16u);
     const char* ids[] = {"c1-lowest",         "trajectory-lowest", "coefficients-first", "trajectory-first",
                          "coefficients-second", "trajectory-second", "period",            "convergence",
                          "period-formulas",   "period-error",      "phase-portrait",     "spectrum",
-                         "regimes",           "swing",             "separatrix"};
+                         "regimes",           "swing",             "separatrix",         "over-the-top"};
     for (std::size_t i = 0; i < c.size(); ++i) {
         EXPECT_EQ(c[i].id, ids[i]);
         if (i < 7) {

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The motion in all three regimes against 60-digit references (tests/data/make_regimes.py).
+#include "figures/spec.hpp"
+#include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/motion.hpp"
@@ -139,6 +141,38 @@ TEST(Motion, BadStartsNameWhatWouldWork) {
     } catch (const domain_error& e) {
         EXPECT_NE(std::string(e.what()).find("must be > 0"), std::string::npos) << e.what();
     }
+}
+
+TEST(Motion, PeriodAgainstEnergyPlotMatchesTheReference) {
+    // plot = "period" with x = "energy": T/T0 from E = 0 to 4, the libration's period below
+    // the separatrix and one revolution above it, each its own curve, and a line at E = 2.
+    const auto spec = figures::parse_spec("[[panel]]\nplot = \"period\"\nx = \"energy\"\nrange = [0, 4]\n", "e.toml");
+    const auto f = figures::build_figure(spec);
+    ASSERT_EQ(f.panels.size(), 1u);
+    const auto& data = f.panels[0].data;
+    ASSERT_EQ(data.size(), 3u);
+    const auto& libration = data[0];
+    const auto& rotation = data[1];
+    ASSERT_TRUE(libration.curve && rotation.curve);
+    EXPECT_LT(libration.curve->u1, 2.0);
+    EXPECT_GT(rotation.curve->u0, 2.0);
+    EXPECT_EQ(data[2].x, (std::vector<double>{2, 2}));
+    EXPECT_NE(data[2].label.markup.find("separatrix"), std::string::npos);
+    for (const auto& s : {libration, rotation}) {
+        for (double x : s.x) EXPECT_NE(x, 2.0);
+    }
+    const auto rows = test_support::read_reference_text("energy_periods.csv");
+    double worst = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const double e = std::stod(rows[i][0]);
+        const double want = std::stod(rows[i][1]);
+        const auto& s = e < 2 ? libration : rotation;
+        const auto [x, y] = s.curve->at(e);
+        EXPECT_EQ(x, e);
+        worst = std::max(worst, std::fabs(y - want) / want);
+        EXPECT_LE(std::fabs(y - want), 8 * DBL_EPSILON * want) << "E = " << rows[i][0] << ": T/T0 " << y << ", want " << rows[i][1];
+    }
+    std::cout << "period against energy: worst relative error " << worst << "\n";
 }
 
 }  // namespace

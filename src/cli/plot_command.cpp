@@ -41,9 +41,9 @@ struct key_option {
 constexpr key_option key_options[] = {
     {"theta0", false, "--theta0", "LIST", value_kind::list, "Amplitudes, a comma-separated LIST (one for trajectory)"},
     {"energy", false, "--energy", "LIST", value_kind::list,
-     "Phase and trajectory plots: energies E/(m g L) of launches from the bottom (2 is the separatrix)"},
+     "Phase, trajectory and pendulum plots: energies E/(m g L) of launches from the bottom (2 is the separatrix)"},
     {"omega0", false, "--omega0", "LIST", value_kind::list,
-     "Phase and trajectory plots: initial velocities theta'/w0 of states started at --theta0"},
+     "Phase, trajectory and pendulum plots: initial velocities theta'/w0 of states started at --theta0"},
     {"methods", false, "--methods", "LIST", value_kind::list, "Methods, a comma-separated LIST (see 'list')"},
     {"range", false, "--range", "A,B", value_kind::range, "x range a,b: times, or amplitudes as angles"},
     {"time", false, "--time", "UNIT", value_kind::text, "Time axis of a trajectory: t/T (default), t/T0 or t/s"},
@@ -51,6 +51,8 @@ constexpr key_option key_options[] = {
     {"harmonics", false, "--harmonics", "N", value_kind::integer, "Spectrum plots: how many odd harmonics"},
     {"orders", false, "--orders", "A,B", value_kind::integer_pair, "Convergence plots: the orders N from A to B"},
     {"y", false, "--y", "AXIS", value_kind::text, "Period plots: value (default), error-percent or error-log"},
+    {"x", false, "--x", "AXIS", value_kind::text,
+     "Period plots: against the amplitude (default) or the energy, T/T0 across the separatrix at E = 2"},
     {"angle_unit", false, "--angle-unit", "UNIT", value_kind::text, "Angles on the axes in rad (default) or deg"},
     {"separatrix", false, "--separatrix", "BOOL", value_kind::boolean, "Phase plots: draw the separatrix, true or false"},
     {"trail", false, "--trail", "T", value_kind::number, "Pendulum drawings: a fading trail of T periods"},
@@ -220,6 +222,7 @@ command add_plot_command(CLI::App& app) {
                      "Examples:\n"
                      "  pendulum-figures plot trajectory --theta0 170deg --methods exact,harmonic,order:6 --range 0,3\n"
                      "  pendulum-figures plot period --methods exact,kidd-fogg,agm:2 --y error-log -f png\n"
+                     "  pendulum-figures plot period --x energy --range 0,4\n"
                      "  pendulum-figures plot phase --theta0 'pi/3,2pi/3,0.99pi' --methods exact,first\n"
                      "  pendulum-figures plot phase --energy 0.5,1.5,2,2.5,3 --angle-unit deg\n"
                      "  pendulum-figures plot trajectory --theta0 0 --omega0 2.2");

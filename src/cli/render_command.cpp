@@ -329,7 +329,7 @@ command add_render_command(CLI::App& app) {
                    "are the specs' TeX, verbatim; a macro LaTeX lacks shows only when the document is compiled.\n"
                    "  pendulum-figures render fig2 -f pdf_tex -o figures --tex-font-size 10\n"
                    "  pendulum-figures render fig7 -f eps_tex --tex-sizes absolute --set tick_font_pt=8\n"
-                   "\nAnimations (a spec with [animation]; built in: swing, separatrix) are written as " +
+                   "\nAnimations (a spec with [animation]; built in: swing, separatrix, over-the-top) are written as " +
                    animation_help() + ". In Beamer: \\usepackage{animate} and "
                    "\\animategraphics[loop,autoplay]{30}{swing}{}{} (30: the spec's fps). A video: ffmpeg -framerate "
                    "30 -i swing-%04d.png -pix_fmt yuv420p swing.mp4\n"

@@ -69,7 +69,7 @@ plot::figure animation_frame(const entry& e, const build_options& options, const
                              const plot::figure& base, double w0_t) {
     plot::figure f = base;
     const auto panels = panels_of(e, options);
-    add_frame_state(f, e.spec, panels, w0_t);
+    add_frame_state(f, e.spec, panels, w0_t, plan.step);
     if (e.spec.animation && e.spec.animation->clock && !f.panels.empty()) {
         // The clock goes on the first drawing (the pendulum), or on the first panel.
         std::size_t at = 0;

@@ -37,6 +37,7 @@ constexpr row order[] = {
     {"phase-portrait", "", "new"},            {"spectrum", "", "new"},
     {"regimes", "", "new"},
     {"swing", "", "animation"},               {"separatrix", "", "animation"},
+    {"over-the-top", "", "animation"},
 };
 
 }  // namespace

@@ -168,7 +168,21 @@ std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::si
     if (p.frameless) {
         std::vector<std::string> names;
         for (const auto* s : shown) names.push_back(spoken_label(s->label.markup));
-        return out + " is a drawing" + (names.empty() ? "" : ", with " + join(names)) + ".";
+        out += " is a drawing" + (names.empty() ? "" : ", with " + join(names)) + ".";
+        // What each start launched from the bottom, or from a state, does.
+        std::vector<std::string> motions;
+        for (const auto& start : spec.starts) {
+            const char* what = "swings between two turning points";
+            if (start.motion.kind() == pendulum::regime::separatrix) {
+                what = "creeps up towards the top and never quite reaches it";
+            } else if (start.motion.kind() == pendulum::regime::rotation) {
+                what = "goes over the top, round and round";
+            }
+            motions.push_back(spoken_label(start.label) + " " + what + " (" +
+                              std::string(pendulum::row_of(start.motion.kind()).name) + ")");
+        }
+        if (!motions.empty()) out += " Started together: " + join(motions) + ".";
+        return out;
     }
     const std::string x = axis_name(p.x, "x"), y = axis_name(p.y, "y");
     const auto [x0, x1] = data_range(p, true);
@@ -252,6 +266,10 @@ std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::si
             if (const auto v = value_at(points, mid)) values.push_back(spoken_label(s->label.markup) + " " + spoken(*v, p.y.ticks));
         }
         if (!values.empty()) out += " At " + x + " = " + spoken(mid, p.x.ticks) + ": " + join(values) + ".";
+    }
+    if (spec.energy_axis && x0 < 2 && 2 < x1) {
+        out += " A dotted vertical line marks the separatrix at E = 2, where the period diverges from both "
+               "sides: the libration's period below it, the time of one revolution above it.";
     }
     // Reference lines, and where the curves cross them.
     for (const auto& line : spec.lines) {

@@ -6,6 +6,9 @@
 #include "figures/spec.hpp"
 #include "plot/figure.hpp"
 
+#include <functional>
+#include <vector>
+
 namespace figures {
 
 /// theta(t) of each method at the panel's amplitude.
@@ -35,7 +38,33 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p);
 /// The rods, bobs, trails and pivot at time w0 t.
 void add_pendulum_frame(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t);
 
-/// Adds the rods, bobs, trails and pivot of a pendulum panel at time w0 t.
-void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t);
+/// Adds the rods, bobs, trails and pivot of a pendulum panel at time w0 t, each bob with its
+/// motion streak over the `frame_step` before (none for 0).
+void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, double frame_step);
+
+/// A bob's radius in units of the theme's marker radius.
+inline constexpr double bob_marker_scale = 3.0;
+/// The distance, in rod lengths, between neighbouring bobs of a motion streak, on average
+/// along the way since the previous frame: a small fraction of any built-in theme's bob
+/// diameter (0.14 rod lengths and more), so that the streak reads as one continuous smear
+/// however far the bob went.
+inline constexpr double streak_spacing = 0.02;
+/// The most bobs in one streak (a jump of 1.28 rod lengths per frame at streak_spacing).
+inline constexpr int max_streak_bobs = 64;
+/// The opacity of the streak's newest bob; older ones fade linearly towards 0.04.
+inline constexpr double streak_alpha = 0.4;
+
+/// One faint bob of a motion streak.
+struct streak_bob {
+    double angle;  ///< the rod's angle, radians
+    double alpha;  ///< opacity
+};
+
+/// No strobing: the places the bob passed through between the previous frame (w0 t minus
+/// `frame_step`, or the release at 0) and now, oldest first, the first at the previous
+/// frame's place, evenly in time and streak_spacing rod lengths apart on average along the way,
+/// fading into the past;
+/// none where the bob did not move or for a still figure (frame_step 0).
+std::vector<streak_bob> motion_streak(const std::function<double(double)>& theta, double w0_t, double frame_step);
 
 }  // namespace figures

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The pendulum drawing: rod and bob of each method, for animations.
+// The pendulum drawing: rod and bob of each start and method, for animations. A start may
+// swing, go over the top (theta unwrapped, drawn modulo 2 pi) or approach the top on the
+// separatrix; several starts swing side by side in one drawing, each in its own colour.
 #include "figures/plot_builders.hpp"
 
 #include "figures/panel_support.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/motion.hpp"
+#include "plot/tex_markup.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -16,6 +21,57 @@ namespace figures {
 using plot::line_style;
 using plot::marker_style;
 using std::numbers::pi;
+
+namespace {
+
+/// One start of a drawing: its exact motion and its legend text.
+struct bob_start {
+    pendulum::motion motion;  ///< the exact motion
+    std::string label;        ///< "ϑ0 = 170°", "E = 2.6"
+};
+
+/// The panel's starts: its amplitudes (released at rest), then its energies or states.
+std::vector<bob_start> starts_of(const panel_spec& p) {
+    std::vector<bob_start> out;
+    for (const auto& a : p.theta0) {
+        out.push_back({pendulum::motion::from_amplitude(a.theta0()), std::string(theta0_markup) + " = " + typeset_angle(a.text)});
+    }
+    for (const auto& s : p.starts) out.push_back({s.motion, s.label});
+    return out;
+}
+
+/// The angle of method m at time w0 t from a start: the exact motion in every regime, an
+/// approximation of a libration on the libration's own clock about its centre.
+std::function<double(double)> angle_of(const method_spec& m, const pendulum::motion& motion) {
+    if (is_exact(m)) return [motion](double t) { return motion.theta(t); };
+    return [motion, solution = pendulum::method_solution(m.method, motion.amplitude())](double t) {
+        return motion.libration_center() + solution.theta(motion.libration_clock(t));
+    };
+}
+
+/// The bob's place for the angle a: the pivot at the origin, a rod of length 1.
+std::pair<double, double> bob_place(double a) { return {std::sin(a), -std::cos(a)}; }
+
+/// How a start's rod and bob look: with one start, the method's style; with several, the
+/// start's colour (the phase portrait's colour of its orbit) and the method's line.
+series_style bob_style(const panel_spec& p, const std::vector<bob_start>& starts, std::size_t i, std::size_t j) {
+    const auto& m = p.methods[j];
+    series_style st = style_of(m, static_cast<int>(j));
+    if (starts.size() > 1) {
+        // The phase panel's line of the start's orbit, so that one palette colour (the paper
+        // theme's black) still tells the starts apart, in the drawing and in its legend.
+        static const line_style lines[] = {line_style::solid, line_style::dashed, line_style::dotted,
+                                           line_style::dash_dot, line_style::dash_dot_dot};
+        if (!m.style) st.line = lines[i % 5];
+        st.color = static_cast<int>(i);
+        st.label = p.methods.size() == 1 ? plot::label(starts[i].label)
+                                         : plot::join(plot::label(starts[i].label + ", "), st.label);
+    }
+    st.style_key.clear();
+    return st;
+}
+
+}  // namespace
 
 plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
     // The drawing: x to the right, y up, the pivot at the origin and a rod of length 1.
@@ -26,85 +82,104 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
     panel.x.max = 1.2;
     panel.y.min = -1.2;
     panel.y.max = 1.2;
-    const double theta0 = p.theta0.front().value;
-    // The bob's path, faint, and the amplitude it is released from.
+    // The bob's path, faint: the whole circle, which a rotation goes round.
     plot::series path;
     for (double a : grid(0, 2 * pi, 200)) {
         path.x.push_back(std::sin(a));
         path.y.push_back(-std::cos(a));
     }
-    path.curve = plot::parametric_curve(0, 2 * pi, [](double a) { return std::pair{std::sin(a), -std::cos(a)}; }, 8);
+    path.curve = plot::parametric_curve(0, 2 * pi, [](double a) { return bob_place(a); }, 8);
     path.alpha = 0.2;
     path.width_scale = 0.6;
     panel.data.push_back(std::move(path));
-    for (double side : {1.0, -1.0}) {
-        plot::series mark;
-        mark.x = {0, side * std::sin(theta0)};
-        mark.y = {0, -std::cos(theta0)};
-        mark.line = line_style::dotted;
-        mark.alpha = 0.5;
-        mark.width_scale = 0.6;
-        panel.data.push_back(std::move(mark));
+    // The turning points of each libration, dotted (a rotation and the separatrix have none).
+    const auto starts = starts_of(p);
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+        const auto& m = starts[i].motion;
+        if (m.kind() != pendulum::regime::libration) continue;
+        const double amplitude = m.amplitude().radians();
+        for (double side : {1.0, -1.0}) {
+            plot::series mark;
+            mark.x = {0, side * std::sin(amplitude)};
+            mark.y = {0, -std::cos(amplitude)};
+            mark.line = line_style::dotted;
+            mark.alpha = 0.5;
+            mark.width_scale = 0.6;
+            if (starts.size() > 1) mark.color = static_cast<int>(i);
+            panel.data.push_back(std::move(mark));
+        }
     }
-    if (!c.animated) add_pendulum_state(panel, p, 0.0);
+    if (!c.animated) add_pendulum_state(panel, p, 0.0, 0.0);
     return panel;
 }
 
-void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t) {
-    const double theta0 = p.theta0.front().value;
-    const pendulum::exact_solution exact(theta0);
-    const double period = 4 * exact.quarter_period();
-    for (std::size_t i = 0; i < p.methods.size(); ++i) {
-        const auto& m = p.methods[i];
-        const auto solution = is_exact(m) ? pendulum::fourier_solution{} : pendulum::method_solution(m.method, theta0);
-        const auto theta = [&](double t) {
-            return is_exact(m) ? exact.theta_at_fraction(t / period) : solution.theta(t);
-        };
-        series_style st = style_of(m, static_cast<int>(i));
-        st.style_key.clear();
-        if (p.trail > 0) {
-            // The bob's recent path, fading into the past in eight steps.
-            const double span = std::min(p.trail * period, w0_t);
-            for (int k = 0; k < 8 && span > 0; ++k) {
-                plot::series trail = series_of(st);
-                trail.label.clear();
-                trail.line = line_style::solid;
-                trail.marker = marker_style::none;
-                trail.alpha = 0.08 + 0.06 * k;
-                const double t0 = w0_t - span * (8 - k) / 8;
-                const double t1 = w0_t - span * (7 - k) / 8;
-                // Drawn after this function returns: holds its own copies.
-                const auto bob_at = [exact, solution, period, exact_m = is_exact(m)](double t) {
-                    const double a = exact_m ? exact.theta_at_fraction(t / period) : solution.theta(t);
-                    return std::pair{std::sin(a), -std::cos(a)};
-                };
-                for (double t : {t0, t1}) {
-                    trail.x.push_back(bob_at(t).first);
-                    trail.y.push_back(bob_at(t).second);
+void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, double frame_step) {
+    const auto starts = starts_of(p);
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+        const auto& motion = starts[i].motion;
+        // The unit of the trail: the start's period (a rotation's revolution), T0 on the separatrix.
+        const double period = motion.has_period() ? motion.period() : 2 * pi;
+        for (std::size_t j = 0; j < p.methods.size(); ++j) {
+            const auto& m = p.methods[j];
+            const auto theta = angle_of(m, motion);
+            const series_style st = bob_style(p, starts, i, j);
+            if (p.trail > 0) {
+                // The bob's recent path, fading into the past in eight steps.
+                const double span = std::min(p.trail * period, w0_t);
+                for (int k = 0; k < 8 && span > 0; ++k) {
+                    plot::series trail = series_of(st);
+                    trail.label.clear();
+                    trail.line = line_style::solid;
+                    trail.marker = marker_style::none;
+                    trail.alpha = 0.08 + 0.06 * k;
+                    const double t0 = w0_t - span * (8 - k) / 8;
+                    const double t1 = w0_t - span * (7 - k) / 8;
+                    // Drawn after this function returns: holds its own copy of the motion.
+                    const auto bob_at = [theta](double t) { return bob_place(theta(t)); };
+                    for (double t : {t0, t1}) {
+                        trail.x.push_back(bob_at(t).first);
+                        trail.y.push_back(bob_at(t).second);
+                    }
+                    trail.curve = plot::parametric_curve(t0, t1, bob_at, 1);
+                    panel.data.push_back(std::move(trail));
                 }
-                trail.curve = plot::parametric_curve(t0, t1, bob_at, 1);
-                panel.data.push_back(std::move(trail));
             }
+            const double a = theta(w0_t);
+            // The bob now, and the way it came since the previous frame as a streak (bobs_in_streak).
+            const marker_style bob_marker =
+                m.marker.value_or(is_exact(m) ? marker_style::filled_circle : marker_style::open_circle);
+            for (const auto& ghost : motion_streak(theta, w0_t, frame_step)) {
+                plot::series s = series_of(st);
+                s.label.clear();
+                s.line = line_style::none;
+                // A blur, also behind an outlined bob: filled, fainter for an outline.
+                s.marker = marker_style::filled_circle;
+                s.marker_scale = bob_marker_scale;
+                s.width_scale = 1.5;
+                s.alpha = bob_marker == marker_style::filled_circle ? ghost.alpha : 0.5 * ghost.alpha;
+                s.x = {bob_place(ghost.angle).first};
+                s.y = {bob_place(ghost.angle).second};
+                panel.data.push_back(std::move(s));
+            }
+            plot::series rod = series_of(st);
+            rod.line = m.style.value_or(starts.size() > 1 ? st.line : line_style::solid);
+            if (rod.line == line_style::none) rod.line = line_style::solid;
+            rod.marker = marker_style::none;
+            rod.width_scale = 1.2;
+            rod.x = {0, std::sin(a)};
+            rod.y = {0, -std::cos(a)};
+            plot::series bob = series_of(st);
+            bob.label.clear();
+            bob.line = line_style::none;
+            // The exact pendulum's bob is solid; the approximations' are outlines.
+            bob.marker = bob_marker;
+            bob.marker_scale = bob_marker_scale;
+            bob.width_scale = 1.5;
+            bob.x = {std::sin(a)};
+            bob.y = {-std::cos(a)};
+            panel.data.push_back(std::move(rod));
+            panel.data.push_back(std::move(bob));
         }
-        const double a = theta(w0_t);
-        plot::series rod = series_of(st);
-        rod.line = m.style.value_or(line_style::solid);
-        if (rod.line == line_style::none) rod.line = line_style::solid;
-        rod.marker = marker_style::none;
-        rod.width_scale = 1.2;
-        rod.x = {0, std::sin(a)};
-        rod.y = {0, -std::cos(a)};
-        plot::series bob = series_of(st);
-        bob.label.clear();
-        bob.line = line_style::none;
-        // The exact pendulum's bob is solid; the approximations' are outlines.
-        bob.marker = m.marker.value_or(is_exact(m) ? marker_style::filled_circle : marker_style::open_circle);
-        bob.marker_scale = 3.0;
-        bob.width_scale = 1.5;
-        bob.x = {std::sin(a)};
-        bob.y = {-std::cos(a)};
-        panel.data.push_back(std::move(rod));
-        panel.data.push_back(std::move(bob));
     }
     plot::series pivot;
     pivot.line = line_style::none;
@@ -115,8 +190,32 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t) {
     panel.data.push_back(std::move(pivot));
 }
 
-void add_pendulum_frame(plot::panel& panel, const panel_context&, const panel_spec& p, double w0_t) {
-    add_pendulum_state(panel, p, w0_t);
+std::vector<streak_bob> motion_streak(const std::function<double(double)>& theta, double w0_t, double frame_step) {
+    // Since the previous frame, or since the release at t = 0.
+    const double span = std::min(frame_step, w0_t);
+    if (!(span > 0)) return {};
+    // The length of the bob's way (in rod lengths), from fine steps of the motion.
+    constexpr int fine = 64;
+    double length = 0;
+    auto last = bob_place(theta(w0_t - span));
+    for (int k = 1; k <= fine; ++k) {
+        const auto next = bob_place(theta(w0_t - span + span * k / fine));
+        length += std::hypot(next.first - last.first, next.second - last.second);
+        last = next;
+    }
+    const int n = std::min(max_streak_bobs, static_cast<int>(std::ceil(length / streak_spacing)));
+    if (n < 1) return {};
+    // Oldest first, the last at the previous frame's place: fading into the past.
+    std::vector<streak_bob> out;
+    for (int k = n; k >= 1; --k) {
+        const double age = static_cast<double>(k) / n;  // (0, 1]: 1 at the previous frame
+        out.push_back({theta(w0_t - span * age), streak_alpha * (1.0 - age) + 0.04});
+    }
+    return out;
+}
+
+void add_pendulum_frame(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t) {
+    add_pendulum_state(panel, p, w0_t, c.frame_step);
 }
 
 }  // namespace figures

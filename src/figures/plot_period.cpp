@@ -5,6 +5,7 @@
 #include "figures/panel_support.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/motion.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,76 @@ using plot::line_style;
 using plot::marker_style;
 using std::numbers::pi;
 
+namespace {
+
+/// The exact period against the energy E (per m g L) launched from the bottom: T/T0 of the
+/// libration below the separatrix, the revolution's T/T0 above it, each curve stopping short
+/// of E = 2, where both diverge, and a vertical line marking the separatrix.
+plot::panel energy_period_panel(const panel_context& c, const panel_spec& p) {
+    const double lo = p.range ? (*p.range)[0] : 0.0;
+    const double hi = p.range ? (*p.range)[1] : 4.0;
+    plot::panel panel;
+    panel.x.label = "<i>E</i>/(<i>m g L</i>)";
+    panel.x.min = lo;
+    panel.x.max = hi;
+    if (c.width_cm < 5) panel.x.max_ticks = 3;
+    const double seconds = c.spec.pendulum ? 2 * pi * seconds_per_radian(c.spec) : 1.0;
+    panel.y.label = c.spec.pendulum ? "<i>T</i> (s)" : "<i>T</i>/<i>T</i><sub>0</sub>";
+    // The divergence is logarithmic: the axis stops at 4 T0 (2 - E = 4.5e-4 below the separatrix).
+    panel.y.min = 0;
+    panel.y.max = 4 * seconds;
+    const double top = p.y_range ? (*p.y_range)[1] : *panel.y.max;
+    const std::function<double(double)> period = [seconds](double e) {
+        if (e == 0) return seconds;  // the limit of small swings
+        if (e == 2) return std::nan("");
+        return seconds * pendulum::motion::from_energy(e).period_ratio();
+    };
+    struct piece {
+        double from, to;
+        const char* label;
+    };
+    // Each side of the separatrix its own curve, none drawn through it.
+    const piece pieces[] = {{lo, std::min(hi, 2.0), "libration, period <i>T</i>"},
+                            {std::max(lo, 2.0), hi, "rotation, one revolution"}};
+    const series_style st = style_of(p.methods.front(), 0);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const auto& [from, to, label] = pieces[i];
+        if (!(from < to)) continue;
+        plot::series s = series_of(st);
+        s.label = plot::label(label);
+        s.line = i == 0 ? line_style::solid : line_style::dashed;
+        s.marker = marker_style::none;
+        s.style_key.clear();
+        s.color = static_cast<int>(i);
+        // Just short of E = 2: the curve leaves the axis long before (T = 4 T0 at 2 - 4.5e-4).
+        const double a = from == 2.0 ? std::nextafter(2.0, 3.0) : from;
+        const double b = to == 2.0 ? std::nextafter(2.0, 1.0) : to;
+        for (double e : grid(a, b, 200)) {
+            const double v = period(e);
+            if (!(v <= top)) continue;
+            s.x.push_back(e);
+            s.y.push_back(v);
+        }
+        s.curve = plot::function_curve(a, b, period);
+        panel.data.push_back(std::move(s));
+    }
+    if (lo < 2 && 2 < hi) {
+        plot::series line;
+        line.label = "separatrix, <i>E</i> = 2";
+        line.line = line_style::dotted;
+        line.rgb_color = plot::rgb{0.5, 0.5, 0.5};
+        line.autoscale = false;
+        line.x = {2, 2};
+        line.y = {p.y_range ? (*p.y_range)[0] : 0.0, top};
+        panel.data.push_back(std::move(line));
+    }
+    return panel;
+}
+
+}  // namespace
+
 plot::panel period_panel(const panel_context& c, const panel_spec& p) {
+    if (p.energy_axis) return energy_period_panel(c, p);
     const double lo = p.range ? (*p.range)[0] : 0.0;
     const double hi = p.range ? (*p.range)[1] : pi;
     plot::panel panel;

@@ -17,8 +17,8 @@ constexpr std::array<plot_row, 7> plots = {{
     {"phase", "theta", "theta'/w0", "theta0 energy omega0 methods separatrix angle_unit",
      "orbits in the phase plane, one per amplitude, energy or state", amplitude_policy::list, range_kind::none, true, false,
      phase_panel, add_phase_frame},
-    {"period", "theta0", "T/T0", "methods range y angle_unit",
-     "the period against the amplitude: value, error in %, or log |error|", amplitude_policy::none,
+    {"period", "theta0 or E", "T/T0", "methods range y x angle_unit",
+     "the period against the amplitude (value, error in %, or log |error|) or against the energy across the separatrix", amplitude_policy::none,
      range_kind::amplitudes, false, false, period_panel, nullptr},
     {"coefficient", "theta0", "c_{2k+1}", "harmonic methods range angle_unit",
      "one Fourier coefficient against the amplitude", amplitude_policy::none, range_kind::amplitudes, true, false,
@@ -28,8 +28,9 @@ constexpr std::array<plot_row, 7> plots = {{
     {"spectrum", "2k+1", "|c_{2k+1}|", "theta0 methods harmonics",
      "the Fourier coefficients' magnitudes, on a log axis", amplitude_policy::list, range_kind::none, true, false,
      spectrum_panel, nullptr},
-    {"pendulum", "", "", "theta0 methods trail", "rod and bob of each method at the frame's time, for animations",
-     amplitude_policy::one, range_kind::none, true, true, pendulum_panel, add_pendulum_frame},
+    {"pendulum", "", "", "theta0 energy omega0 methods trail",
+     "rod and bob of each start and method at the frame's time, swinging or over the top, for animations",
+     amplitude_policy::list, range_kind::none, true, true, pendulum_panel, add_pendulum_frame},
 }};
 
 }  // namespace

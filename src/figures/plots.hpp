@@ -17,6 +17,7 @@ struct panel_context {
     const figure_spec& spec;  ///< the figure the panel belongs to
     double width_cm;          ///< the panel's width
     bool animated;            ///< leave out what moves: each frame adds it (plot_row::add_frame)
+    double frame_step;        ///< w0 t from the previous frame of an animation to this one; 0 when still
 };
 
 /// How a plot kind takes amplitudes, and what the command line's --theta0 does to it.

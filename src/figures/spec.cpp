@@ -64,6 +64,11 @@ constexpr std::array<std::pair<std::string_view, period_axis>, 3> period_axes = 
     {"error-log", period_axis::error_log},
 }};
 
+constexpr std::array<std::pair<std::string_view, bool>, 2> period_x_axes = {{
+    {"amplitude", false},
+    {"energy", true},
+}};
+
 constexpr std::array<std::pair<std::string_view, bool>, 2> angle_units = {{
     {"rad", false},
     {"deg", true},
@@ -177,15 +182,22 @@ void read_range(reader& r, const toml::table& t, const plot_row& plot, panel_spe
     std::array<double, 2> v{};
     for (std::size_t i = 0; i < 2; ++i) {
         const toml::node& e = *a->get(i);
-        if (plot.range == range_kind::times) {
-            if (e.is_number()) {
+        if (plot.range == range_kind::times || p.energy_axis) {
+            const char* unit = p.energy_axis ? "an energy range is two numbers, energies E/(m g L), e.g. [0, 4]"
+                                             : "a time range is two numbers in the time unit, e.g. [0, 3]";
+            if (p.energy_axis && (e.is_number() || e.is_string())) {
+                const auto x = r.expression(e, "range", false);
+                if (!x) return;
+                v[i] = x->second;
+            } else if (e.is_number()) {
                 v[i] = e.is_integer() ? static_cast<double>(e.as_integer()->get()) : e.as_floating_point()->get();
             } else {
-                r.problem(e, "a time range is two numbers in the time unit, e.g. [0, 3]");
+                r.problem(e, unit);
                 return;
             }
             if (!std::isfinite(v[i]) || std::fabs(v[i]) > 1e6) {
-                r.problem(e, "a time in 'range' must be finite and at most 1e6 in size");
+                r.problem(e, std::string(p.energy_axis ? "an energy" : "a time") +
+                                 " in 'range' must be finite and at most 1e6 in size");
                 return;
             }
         } else {
@@ -335,6 +347,29 @@ void check_starts(reader& r, const toml::table& t, const panel_spec& p) {
     }
 }
 
+/// A period panel against the energy draws the exact period of librations and the revolution
+/// of rotations, which no approximation of the paper describes, on energies from 0 up.
+void check_energy_axis(reader& r, const toml::table& t, const panel_spec& p) {
+    const auto at = [&](std::string_view key) { return t.get(key) ? r.at(t.get(key)->source()) : p.where; };
+    for (const auto& m : p.methods) {
+        if (m.method.is_exact()) continue;
+        r.problem(at("methods"), "x = \"energy\" draws the exact period, across the separatrix where method '" +
+                                     m.method.text() + "' has none: use methods = [\"exact\"], or x = \"amplitude\" "
+                                     "to compare methods");
+    }
+    if (p.y != period_axis::value) {
+        r.problem(at("y"), "x = \"energy\" draws the period's value: y = \"value\" (the errors of the methods are "
+                           "drawn against the amplitude, x = \"amplitude\")");
+    }
+    if (p.degrees) r.problem(at("angle_unit"), "x = \"energy\" has no angle axis: leave out angle_unit");
+    if (p.range && (*p.range)[0] < 0) {
+        r.problem(at("range"), "x = \"energy\": 'range' = [" + pendulum::format_double((*p.range)[0]) + ", " +
+                                   pendulum::format_double((*p.range)[1]) +
+                                   "] goes below 0, the pendulum at rest at the bottom; give energies from 0 up, "
+                                   "e.g. [0, 4]");
+    }
+}
+
 std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figure_spec& f) {
     panel_spec p;
     p.where = r.at(t.source());
@@ -383,9 +418,18 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
             p.theta0.push_back(*v);
         }
     }
+    const auto x_axis = r.choice(t, "x", period_x_axes);
+    if (x_axis) p.energy_axis = *x_axis;
+    // Starts (even ones refused above) and the energy axis take the exact method by default;
+    // so does a panel whose x axis was refused, which is reported once.
+    const bool exact_by_default = t.get("energy") || t.get("omega0") || p.energy_axis || (t.get("x") && !x_axis);
+    if (plot->name == "period" && t.get("energy")) {
+        r.problem(*t.get("energy"), "a period panel draws T/T0 against the energy with x = \"energy\" (and range = "
+                                    "[0, 4], say), not with energy = ...");
+    }
     if (contains(keys, "methods")) {
         const toml::node* n = t.get("methods");
-        if (!n && !p.starts.empty()) {
+        if (!n && exact_by_default) {
             // Energies and states: the exact motion, the one method for every regime.
             method_spec exact;
             exact.method = pendulum::parse_method("exact");
@@ -491,6 +535,7 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
     }
     check_costs(r, t, f, p);
     check_starts(r, t, p);
+    if (p.energy_axis) check_energy_axis(r, t, p);
     return p;
 }
 

@@ -106,6 +106,7 @@ struct panel_spec {
     std::optional<std::string> y_label;          ///< y axis label; default from the plot kind
     std::string paper_file;                      ///< file name for --paper-files; empty for none
     period_axis y = period_axis::value;          ///< period panels: value, error in %, log |error|
+    bool energy_axis = false;                    ///< period panels: x = "energy", T/T0 against E across the separatrix
     int harmonic = 1;                            ///< coefficient panels: 2k + 1
     int harmonics = 15;                          ///< spectrum panels: how many odd harmonics
     double trail = 0;                            ///< pendulum panels: fading trace, in exact periods

@@ -59,8 +59,9 @@ std::vector<panel_spec> panels_with(const figure_spec& spec, const build_options
     return out;
 }
 
-void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector<panel_spec>& panels, double w0_t) {
-    const panel_context c{spec, f.panel_width_cm, true};
+void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector<panel_spec>& panels, double w0_t,
+                     double frame_step) {
+    const panel_context c{spec, f.panel_width_cm, true, frame_step};
     for (std::size_t i = 0; i < panels.size() && i < f.panels.size(); ++i) {
         const panel_spec& p = panels[i];
         if (!p.plot->add_frame) continue;
@@ -120,7 +121,7 @@ void require_values(const plot::panel& panel, const panel_spec& p, std::size_t i
 plot::figure build_figure(const figure_spec& spec, const build_options& options) {
     const auto panels = panels_with(spec, options);
     plot::figure f = figure_grid(spec, options);
-    const panel_context c{spec, f.panel_width_cm, options.animated};
+    const panel_context c{spec, f.panel_width_cm, options.animated, 0.0};
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const auto& p = panels[i];
         plot::panel panel = p.plot->build(c, p);

@@ -25,8 +25,11 @@ plot::figure figure_grid(const figure_spec& spec, const build_options& options =
 plot::figure build_figure(const figure_spec& spec, const build_options& options = {});
 
 /// Adds what moves at time w0 t: the pendulums, a time cursor and a dot per method on
-/// trajectories, a dot per orbit on phase panels. `panels` are the specs f was built from.
-void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector<panel_spec>& panels, double w0_t);
+/// trajectories, a dot per orbit on phase panels. `panels` are the specs f was built from;
+/// `frame_step` is the time w0 t since the previous frame (0: none), over which a pendulum's
+/// bob leaves its motion streak.
+void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector<panel_spec>& panels, double w0_t,
+                     double frame_step = 0);
 
 /// The name of the i-th panel (from 0): a, b, ..., z, aa, ab, ...
 std::string panel_name(std::size_t i);

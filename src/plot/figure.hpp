@@ -7,6 +7,7 @@
 #include <optional>
 #include <utility>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace plot {
@@ -68,6 +69,10 @@ struct curve {
         };
         std::mutex lock;
         std::vector<sampling> last;  ///< the most recent last
+        /// The curve at each parameter evaluated, up to a bound: a sampling for another
+        /// tolerance (the PNG and the PDF of one figure) evaluates the function at the
+        /// same parameters again, and functions may be costly (an error in MPFR).
+        std::unordered_map<double, std::pair<double, double>> values;
     };
     std::shared_ptr<memo> last = std::make_shared<memo>();  ///< see memo
 };

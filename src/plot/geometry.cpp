@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <mutex>
+#include <unordered_map>
 
 namespace plot {
 
@@ -70,8 +71,9 @@ namespace {
 class curve_sampler {
 public:
     curve_sampler(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
-                  std::vector<double>& x, std::vector<double>& y, std::vector<double>& u)
-        : c_(c), mx_(mx), my_(my), clip_(clip), tolerance_(tolerance), x_(x), y_(y), u_(u) {}
+                  std::vector<double>& x, std::vector<double>& y, std::vector<double>& u,
+                  std::unordered_map<double, std::pair<double, double>>* values)
+        : c_(c), mx_(mx), my_(my), clip_(clip), tolerance_(tolerance), x_(x), y_(y), u_(u), values_(values) {}
 
     void run() {
         x_.clear();
@@ -106,10 +108,21 @@ private:
     // and not), and what is left of it is drawn through the points at hand.
     static constexpr std::size_t max_piece_points = 4096;
     static constexpr std::size_t max_points = std::size_t{1} << 16;
+    // Values of the curve kept for another sampling, at most.
+    static constexpr std::size_t max_values = std::size_t{1} << 16;
     std::size_t piece_end_ = 0;  // the vertex count at which the current piece is spent
 
+    /// The curve at u, from the values known if it is there.
+    std::pair<double, double> at(double u) const {
+        if (!values_) return c_.at(u);
+        if (const auto known = values_->find(u); known != values_->end()) return known->second;
+        const auto v = c_.at(u);
+        if (values_->size() < max_values) values_->emplace(u, v);
+        return v;
+    }
+
     point eval(double u) const {
-        const auto [dx, dy] = c_.at(u);
+        const auto [dx, dy] = at(u);
         const bool finite = std::isfinite(dx) && std::isfinite(dy);
         const double px = finite ? mx_(dx) : 0.0;
         const double py = finite ? my_(dy) : 0.0;
@@ -185,6 +198,7 @@ private:
     std::vector<double>& x_;
     std::vector<double>& y_;
     std::vector<double>& u_;
+    std::unordered_map<double, std::pair<double, double>>* values_;
 };
 
 std::function<void(const sampled_curve&)>& observer() {
@@ -199,27 +213,23 @@ void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const 
     const std::vector<double> key{mx.lo, mx.hi, mx.log ? 1.0 : 0.0, mx.d0, mx.d1, my.lo, my.hi, my.log ? 1.0 : 0.0,
                                   my.d0, my.d1, clip.x, clip.y, clip.w, clip.h, tolerance};
     std::vector<double> u;
-    bool known = false;
     if (c.last) {
+        // Held while sampling: another thread sampling this curve finds its values.
         const std::lock_guard<std::mutex> hold(c.last->lock);
-        for (const auto& m : c.last->last) {
-            if (m.key != key) continue;
-            x = m.x;
-            y = m.y;
-            u = m.u;
-            known = true;
-            break;
-        }
-    }
-    if (!known) {
-        curve_sampler(c, mx, my, clip, tolerance, x, y, u).run();
-        if (c.last) {
+        auto& last = c.last->last;
+        const auto same = std::find_if(last.begin(), last.end(), [&](const auto& m) { return m.key == key; });
+        if (same != last.end()) {
+            x = same->x;
+            y = same->y;
+            u = same->u;
+        } else {
+            curve_sampler(c, mx, my, clip, tolerance, x, y, u, &c.last->values).run();
             constexpr std::size_t kept = 4;
-            const std::lock_guard<std::mutex> hold(c.last->lock);
-            auto& last = c.last->last;
             if (last.size() >= kept) last.erase(last.begin());
             last.push_back({key, x, y, u});
         }
+    } else {
+        curve_sampler(c, mx, my, clip, tolerance, x, y, u, nullptr).run();
     }
     if (observer()) observer()(sampled_curve{&c, mx, my, clip, tolerance, x, y, u});
 }

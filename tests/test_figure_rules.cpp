@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -327,4 +328,69 @@ TEST(FigureRules, PaperFilesShowOneLegendPerFigureAndKeepTheirFramesInLine) {
         }
     }
     EXPECT_GE(figures_checked, 12);
+}
+
+namespace {
+
+/// The decimals a tick label prints: the digits after its point, or 0 ("π/2", "10").
+int decimals_of(const std::string& label) {
+    const auto point = label.find('.');
+    if (point == std::string::npos) return 0;
+    int n = 0;
+    for (std::size_t i = point + 1; i < label.size() && label[i] >= '0' && label[i] <= '9'; ++i) ++n;
+    return n;
+}
+
+/// The decimals of an axis' labels, "0.00 0.25 ..." gives 2; -1 for an axis without numbers.
+int axis_decimals(const std::vector<std::string>& labels) {
+    int most = -1;
+    for (const auto& l : labels) {
+        if (l.empty() || l.find_first_of("0123456789") == std::string::npos) continue;
+        most = std::max(most, decimals_of(l));
+    }
+    return most;
+}
+
+}  // namespace
+
+// An axis of one quantity over one range prints its ticks with one number of decimals in every
+// built-in figure and theme: t/T from 0 to 1 reads 0.0 ... 1.0 in every figure, never 0.00
+// ... 1.00 in one figure and 0.0 ... 1.0 in the next, whatever room each panel has.
+TEST(FigureRules, AxesOfOneQuantityAndRangePrintOneNumberOfDecimals) {
+    struct seen {
+        int decimals;
+        std::string where;
+    };
+    std::map<std::string, seen> first;  // by axis label and range
+    int axes = 0;
+    for (const auto& builtin : figures::builtin_themes()) {
+        const plot::theme theme = figures::load_theme(std::string(builtin.name));
+        for (const auto& e : figures::catalog()) {
+            const plot::figure fig = figures::build(e, figures::sized_by({}, theme));
+            const auto frames = plot::panel_frames(fig, theme);
+            ASSERT_EQ(frames.size(), fig.panels.size()) << e.id;
+            for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+                const auto& f = frames[i];
+                if (f.frameless) continue;
+                for (const bool horizontal : {true, false}) {
+                    const auto& a = horizontal ? fig.panels[i].x : fig.panels[i].y;
+                    const int d = axis_decimals(horizontal ? f.x_labels : f.y_labels);
+                    if (d < 0 || a.label.empty()) continue;
+                    char range[64];
+                    std::snprintf(range, sizeof range, " [%.6g, %.6g]", horizontal ? f.x_lo : f.y_lo,
+                                  horizontal ? f.x_hi : f.y_hi);
+                    const std::string key = a.label.markup + range;
+                    std::string labels;
+                    for (const auto& l : horizontal ? f.x_labels : f.y_labels) labels += " " + l;
+                    const std::string where = std::string(builtin.name) + " " + e.id + " panel " +
+                                              std::to_string(i + 1) + (horizontal ? " x:" : " y:") + labels;
+                    const auto [it, fresh] = first.try_emplace(key, seen{d, where});
+                    EXPECT_EQ(d, it->second.decimals) << key << "\n  " << where << "\n  " << it->second.where;
+                    ++axes;
+                }
+            }
+        }
+    }
+    EXPECT_GE(axes, 50);
+    EXPECT_GE(first.size(), 5u);
 }

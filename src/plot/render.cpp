@@ -361,7 +361,8 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {
             const rect a = panel_area(fig.panels[i], plans[i], cells[i]);
             frames->push_back(panel_frame{a.x, a.y, a.w, a.h, plans[i].xt.lo, plans[i].xt.hi, plans[i].yt.lo,
-                                          plans[i].yt.hi, fig.panels[i].frameless});
+                                          plans[i].yt.hi, fig.panels[i].frameless, plans[i].xt.labels,
+                                          plans[i].yt.labels});
         }
     };
     if (!fig.shared_legend || fig.panels.empty() || !same_legend_entries(planned)) {

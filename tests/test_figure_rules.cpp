@@ -394,3 +394,46 @@ TEST(FigureRules, AxesOfOneQuantityAndRangePrintOneNumberOfDecimals) {
     EXPECT_GE(axes, 50);
     EXPECT_GE(first.size(), 5u);
 }
+
+// No two tick labels come within a tenth of their size of each other in any built-in figure
+// and theme: at the corner of a frame, the lowest y label (−π/2, whose slash hangs below
+// the line) and the first x label stay apart.
+TEST(FigureRules, TickLabelsKeepApartAtTheCorners) {
+    cairo_surface_t* surface = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, nullptr);
+    cairo_t* cr = cairo_create(surface);
+    int pairs = 0;
+    for (const auto& builtin : figures::builtin_themes()) {
+        const plot::theme theme = figures::load_theme(std::string(builtin.name));
+        plot::text_engine text(cr, theme.font_family);
+        for (const auto& e : figures::catalog()) {
+            if (e.spec.animation) continue;
+            std::vector<plot::panel_frame> frames;
+            const auto texts = texts_of(figures::build(e, figures::sized_by({}, theme)), theme, frames);
+            struct box {
+                double x0, y0, x1, y1;
+                std::string what;
+            };
+            std::vector<box> boxes;
+            const double grow = 0.05 * theme.tick_font_pt;
+            for (const auto& t : texts) {
+                if (t.rotate || std::fabs(t.size_pt - theme.tick_font_pt) > 1e-9) continue;
+                const plot::text_ink i = text.ink(t.text.markup, t.size_pt);
+                boxes.push_back({t.x + i.x - grow, t.y + i.y - grow, t.x + i.x + i.w + grow, t.y + i.y + i.h + grow,
+                                 t.text.markup});
+            }
+            for (std::size_t a = 0; a < boxes.size(); ++a) {
+                for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+                    const box& p = boxes[a];
+                    const box& q = boxes[b];
+                    const bool touch = p.x0 < q.x1 && q.x0 < p.x1 && p.y0 < q.y1 && q.y0 < p.y1;
+                    EXPECT_FALSE(touch) << builtin.name << " " << e.id << ": '" << p.what << "' and '" << q.what
+                                        << "' overlap by " << std::min(p.y1 - q.y0, q.y1 - p.y0) << " pt";
+                    ++pairs;
+                }
+            }
+        }
+    }
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    EXPECT_GT(pairs, 1000);
+}

@@ -479,3 +479,51 @@ TEST(FigureRules, PanelsOfAFigureShareTheTicksOfAnAxisTheyShare) {
     }
     EXPECT_GT(compared, 100);
 }
+
+// An open marker on its own series' line stays open in every built-in figure and theme: the
+// pixel at its centre is the background, not the line running through it.
+TEST(FigureRules, OpenMarkersOnTheirOwnLineStayOpen) {
+    const double dpi = 150;
+    int markers = 0;
+    int open = 0;
+    for (const auto& builtin : figures::builtin_themes()) {
+        const plot::theme theme = figures::load_theme(std::string(builtin.name));
+        for (const auto& e : figures::catalog()) {
+            if (e.spec.animation) continue;
+            const plot::figure fig = figures::build(e, figures::sized_by({}, theme));
+            const auto frames = plot::panel_frames(fig, theme);
+            const plot::argb_image image = plot::render_argb(fig, theme, dpi);
+            const auto background = [&](int x, int y) {
+                const unsigned char* p = &image.data[static_cast<std::size_t>(y) * image.stride + 4 * x];
+                const auto near = [](unsigned char v, double want) { return std::fabs(v - 255 * want) < 40; };
+                return near(p[2], theme.background.r) && near(p[1], theme.background.g) && near(p[0], theme.background.b);
+            };
+            for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+                const auto& p = fig.panels[i];
+                const auto& f = frames[i];
+                if (f.frameless) continue;
+                const bool xlog = p.x.kind == plot::scale::log;
+                const bool ylog = p.y.kind == plot::scale::log;
+                for (const auto& s : p.data) {
+                    if (s.marker != plot::marker_style::open_circle || s.line == plot::line_style::none) continue;
+                    for (std::size_t k = 0; k < s.x.size(); ++k) {
+                        if (!std::isfinite(s.x[k]) || !std::isfinite(s.y[k])) continue;
+                        if ((xlog && !(s.x[k] > 0)) || (ylog && !(s.y[k] > 0))) continue;
+                        const double u = (to_unit(s.x[k], xlog) - to_unit(f.x_lo, xlog)) /
+                                         (to_unit(f.x_hi, xlog) - to_unit(f.x_lo, xlog));
+                        const double v = (to_unit(f.y_hi, ylog) - to_unit(s.y[k], ylog)) /
+                                         (to_unit(f.y_hi, ylog) - to_unit(f.y_lo, ylog));
+                        if (u < 0.02 || u > 0.98 || v < 0.02 || v > 0.98) continue;
+                        const int x = static_cast<int>(std::lround((f.x + u * f.w) * dpi / 72));
+                        const int y = static_cast<int>(std::lround((f.y + v * f.h) * dpi / 72));
+                        ++markers;
+                        open += background(x, y) ? 1 : 0;
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(markers, 100);
+    // Markers of a later series may cover a few (the spectra start together).
+    EXPECT_GE(open, 0.9 * markers) << open << " of " << markers << " open";
+}

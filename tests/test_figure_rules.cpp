@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -327,4 +328,202 @@ TEST(FigureRules, PaperFilesShowOneLegendPerFigureAndKeepTheirFramesInLine) {
         }
     }
     EXPECT_GE(figures_checked, 12);
+}
+
+namespace {
+
+/// The decimals a tick label prints: the digits after its point, or 0 ("π/2", "10").
+int decimals_of(const std::string& label) {
+    const auto point = label.find('.');
+    if (point == std::string::npos) return 0;
+    int n = 0;
+    for (std::size_t i = point + 1; i < label.size() && label[i] >= '0' && label[i] <= '9'; ++i) ++n;
+    return n;
+}
+
+/// The decimals of an axis' labels, "0.00 0.25 ..." gives 2; -1 for an axis without numbers.
+int axis_decimals(const std::vector<std::string>& labels) {
+    int most = -1;
+    for (const auto& l : labels) {
+        if (l.empty() || l.find_first_of("0123456789") == std::string::npos) continue;
+        most = std::max(most, decimals_of(l));
+    }
+    return most;
+}
+
+}  // namespace
+
+// An axis of one quantity over one range prints its ticks with one number of decimals in every
+// built-in figure and theme: t/T from 0 to 1 reads 0.0 ... 1.0 in every figure, never 0.00
+// ... 1.00 in one figure and 0.0 ... 1.0 in the next, whatever room each panel has.
+TEST(FigureRules, AxesOfOneQuantityAndRangePrintOneNumberOfDecimals) {
+    struct seen {
+        int decimals;
+        std::string where;
+    };
+    std::map<std::string, seen> first;  // by axis label and range
+    int axes = 0;
+    for (const auto& builtin : figures::builtin_themes()) {
+        const plot::theme theme = figures::load_theme(std::string(builtin.name));
+        for (const auto& e : figures::catalog()) {
+            const plot::figure fig = figures::build(e, figures::sized_by({}, theme));
+            const auto frames = plot::panel_frames(fig, theme);
+            ASSERT_EQ(frames.size(), fig.panels.size()) << e.id;
+            for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+                const auto& f = frames[i];
+                if (f.frameless) continue;
+                for (const bool horizontal : {true, false}) {
+                    const auto& a = horizontal ? fig.panels[i].x : fig.panels[i].y;
+                    const int d = axis_decimals(horizontal ? f.x_labels : f.y_labels);
+                    if (d < 0 || a.label.empty()) continue;
+                    char range[64];
+                    std::snprintf(range, sizeof range, " [%.6g, %.6g]", horizontal ? f.x_lo : f.y_lo,
+                                  horizontal ? f.x_hi : f.y_hi);
+                    const std::string key = a.label.markup + range;
+                    std::string labels;
+                    for (const auto& l : horizontal ? f.x_labels : f.y_labels) labels += " " + l;
+                    const std::string where = std::string(builtin.name) + " " + e.id + " panel " +
+                                              std::to_string(i + 1) + (horizontal ? " x:" : " y:") + labels;
+                    const auto [it, fresh] = first.try_emplace(key, seen{d, where});
+                    EXPECT_EQ(d, it->second.decimals) << key << "\n  " << where << "\n  " << it->second.where;
+                    ++axes;
+                }
+            }
+        }
+    }
+    EXPECT_GE(axes, 50);
+    EXPECT_GE(first.size(), 5u);
+}
+
+// No two tick labels come within a tenth of their size of each other in any built-in figure
+// and theme: at the corner of a frame, the lowest y label (−π/2, whose slash hangs below
+// the line) and the first x label stay apart.
+TEST(FigureRules, TickLabelsKeepApartAtTheCorners) {
+    cairo_surface_t* surface = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, nullptr);
+    cairo_t* cr = cairo_create(surface);
+    int pairs = 0;
+    for (const auto& builtin : figures::builtin_themes()) {
+        const plot::theme theme = figures::load_theme(std::string(builtin.name));
+        plot::text_engine text(cr, theme.font_family);
+        for (const auto& e : figures::catalog()) {
+            if (e.spec.animation) continue;
+            std::vector<plot::panel_frame> frames;
+            const auto texts = texts_of(figures::build(e, figures::sized_by({}, theme)), theme, frames);
+            struct box {
+                double x0, y0, x1, y1;
+                std::string what;
+            };
+            std::vector<box> boxes;
+            const double grow = 0.05 * theme.tick_font_pt;
+            for (const auto& t : texts) {
+                if (t.rotate || std::fabs(t.size_pt - theme.tick_font_pt) > 1e-9) continue;
+                const plot::text_ink i = text.ink(t.text.markup, t.size_pt);
+                boxes.push_back({t.x + i.x - grow, t.y + i.y - grow, t.x + i.x + i.w + grow, t.y + i.y + i.h + grow,
+                                 t.text.markup});
+            }
+            for (std::size_t a = 0; a < boxes.size(); ++a) {
+                for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+                    const box& p = boxes[a];
+                    const box& q = boxes[b];
+                    const bool touch = p.x0 < q.x1 && q.x0 < p.x1 && p.y0 < q.y1 && q.y0 < p.y1;
+                    EXPECT_FALSE(touch) << builtin.name << " " << e.id << ": '" << p.what << "' and '" << q.what
+                                        << "' overlap by " << std::min(p.y1 - q.y0, q.y1 - p.y0) << " pt";
+                    ++pairs;
+                }
+            }
+        }
+    }
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+    EXPECT_GT(pairs, 1000);
+}
+
+// Panels of one figure whose axes show one quantity over one range carry the same ticks at
+// every size: a panel crowded into fewer ticks takes its neighbours with it.
+TEST(FigureRules, PanelsOfAFigureShareTheTicksOfAnAxisTheyShare) {
+    int compared = 0;
+    for (const auto& builtin : figures::builtin_themes()) {
+        for (const char* size : {"", "figure_width_cm=8.6", "panel_width_cm=3.5", "tick_font_pt=11"}) {
+            std::vector<std::string> sets;
+            if (*size) sets.emplace_back(size);
+            const plot::theme theme = figures::load_theme(std::string(builtin.name), sets);
+            for (const auto& e : figures::catalog()) {
+                if (e.spec.animation) continue;
+                const plot::figure fig = figures::build(e, figures::sized_by({}, theme));
+                std::vector<plot::panel_frame> frames;
+                try {
+                    frames = plot::panel_frames(fig, theme);
+                } catch (const plot::layout_error&) {
+                    continue;
+                }
+                std::map<std::string, std::pair<std::vector<std::string>, std::size_t>> first;
+                for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+                    if (frames[i].frameless) continue;
+                    for (const bool horizontal : {true, false}) {
+                        const auto& a = horizontal ? fig.panels[i].x : fig.panels[i].y;
+                        const auto& f = frames[i];
+                        char range[64];
+                        std::snprintf(range, sizeof range, " [%.6g, %.6g]", horizontal ? f.x_lo : f.y_lo,
+                                      horizontal ? f.x_hi : f.y_hi);
+                        const std::string key = a.label.markup + range;
+                        const auto& labels = horizontal ? f.x_labels : f.y_labels;
+                        const auto [it, fresh] = first.try_emplace(key, labels, i);
+                        if (fresh) continue;
+                        EXPECT_EQ(labels, it->second.first) << builtin.name << " " << size << " " << e.id << " panel "
+                                                            << i + 1 << " and " << it->second.second + 1 << ": " << key;
+                        ++compared;
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(compared, 100);
+}
+
+// An open marker on its own series' line stays open in every built-in figure and theme: the
+// pixel at its centre is the background, not the line running through it.
+TEST(FigureRules, OpenMarkersOnTheirOwnLineStayOpen) {
+    const double dpi = 150;
+    int markers = 0;
+    int open = 0;
+    for (const auto& builtin : figures::builtin_themes()) {
+        const plot::theme theme = figures::load_theme(std::string(builtin.name));
+        for (const auto& e : figures::catalog()) {
+            if (e.spec.animation) continue;
+            const plot::figure fig = figures::build(e, figures::sized_by({}, theme));
+            const auto frames = plot::panel_frames(fig, theme);
+            const plot::argb_image image = plot::render_argb(fig, theme, dpi);
+            const auto background = [&](int x, int y) {
+                const unsigned char* p = &image.data[static_cast<std::size_t>(y) * image.stride + 4 * x];
+                const auto near = [](unsigned char v, double want) { return std::fabs(v - 255 * want) < 40; };
+                return near(p[2], theme.background.r) && near(p[1], theme.background.g) && near(p[0], theme.background.b);
+            };
+            for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+                const auto& p = fig.panels[i];
+                const auto& f = frames[i];
+                if (f.frameless) continue;
+                const bool xlog = p.x.kind == plot::scale::log;
+                const bool ylog = p.y.kind == plot::scale::log;
+                for (const auto& s : p.data) {
+                    if (s.marker != plot::marker_style::open_circle || s.line == plot::line_style::none) continue;
+                    for (std::size_t k = 0; k < s.x.size(); ++k) {
+                        if (!std::isfinite(s.x[k]) || !std::isfinite(s.y[k])) continue;
+                        if ((xlog && !(s.x[k] > 0)) || (ylog && !(s.y[k] > 0))) continue;
+                        const double u = (to_unit(s.x[k], xlog) - to_unit(f.x_lo, xlog)) /
+                                         (to_unit(f.x_hi, xlog) - to_unit(f.x_lo, xlog));
+                        const double v = (to_unit(f.y_hi, ylog) - to_unit(s.y[k], ylog)) /
+                                         (to_unit(f.y_hi, ylog) - to_unit(f.y_lo, ylog));
+                        if (u < 0.02 || u > 0.98 || v < 0.02 || v > 0.98) continue;
+                        const int x = static_cast<int>(std::lround((f.x + u * f.w) * dpi / 72));
+                        const int y = static_cast<int>(std::lround((f.y + v * f.h) * dpi / 72));
+                        ++markers;
+                        open += background(x, y) ? 1 : 0;
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(markers, 100);
+    // Markers of a later series may cover a few (the spectra start together).
+    EXPECT_GE(open, 0.9 * markers) << open << " of " << markers << " open";
 }

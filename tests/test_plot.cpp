@@ -168,9 +168,33 @@ TEST(Ticks, SharedPrecisionAndMinusSign) {
     const auto t = linear_ticks(-0.5, 1, 4, true);
     EXPECT_EQ(t.labels, (std::vector<std::string>{"\u22120.5", "0.0", "0.5", "1.0"}));
     const auto q = linear_ticks(0, 1, 5, true);
-    EXPECT_EQ(q.labels, (std::vector<std::string>{"0.00", "0.25", "0.50", "0.75", "1.00"}));
+    EXPECT_EQ(q.labels, (std::vector<std::string>{"0.0", "0.5", "1.0"}));
     EXPECT_EQ(nice_step(0, 10, 6), 2.0);
-    EXPECT_EQ(nice_step(0, 1, 5), 0.25);
+    EXPECT_EQ(nice_step(0, 1, 5), 0.5);
+    EXPECT_EQ(nice_step(0, 100, 5), 25.0);  // 2.5 where it adds no decimal
+}
+
+TEST(Ticks, ARangeKeepsItsDecimalsWhateverTheNumberOfTicks) {
+    // Fewer ticks (a narrower panel, crowded labels thinned) take a coarser step; within a
+    // decade its labels need as many decimals as the finer one's: 0.0 0.2 ... 1.0 and 0.0
+    // 0.5 1.0 alike. Labels print the decimals of the step's power of ten, no more.
+    const struct {
+        double lo, hi;
+    } ranges[] = {{0, 1}, {0, 0.1}, {-1, 1}, {0, 3}, {0, 10}, {0, 100}, {0.2, 0.7}, {-0.14, 3.74}, {0, 0.03}};
+    int checked = 0;
+    for (const auto& r : ranges) {
+        for (int n = 3; n <= 11; ++n) {
+            const double step = nice_step(r.lo, r.hi, n, false);
+            const int want = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+            for (const auto& l : linear_ticks(r.lo, r.hi, n, false).labels) {
+                const auto point = l.find('.');
+                const int d = point == std::string::npos ? 0 : static_cast<int>(l.size() - point - 1);
+                EXPECT_EQ(d, want) << r.lo << ".." << r.hi << " at most " << n << " ticks: " << l;
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 200);
 }
 
 TEST(Ticks, WithoutExpansionStayInsideTheRange) {

@@ -64,7 +64,7 @@ plot::panel start_trajectory_panel(const panel_context& c, const panel_spec& p) 
     panel.x.label = x_label;
     panel.x.min = lo;
     panel.x.max = hi;
-    panel.x.max_ticks = c.width_cm < 5 ? 3 : 5;
+    panel.x.max_ticks = c.width_cm < 5 ? 3 : 6;
     panel.y.label = "<i>\u03d1</i>";
     panel.y.ticks = p.degrees ? plot::tick_kind::degrees : plot::tick_kind::multiples_of_pi;
     panel.y.max_ticks = 7;
@@ -110,7 +110,7 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
     panel.x.label = x_label;
     panel.x.min = lo * unit;
     panel.x.max = hi * unit;
-    panel.x.max_ticks = c.width_cm < 5 ? 3 : 5;
+    panel.x.max_ticks = c.width_cm < 5 ? 3 : 6;
     panel.y.label = "<i>\u03d1</i>";
     if (p.degrees) {
         panel.y.ticks = plot::tick_kind::degrees;

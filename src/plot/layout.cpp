@@ -80,7 +80,10 @@ panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th, 
         const text_ink i = text.ink(l, th.tick_font_pt);
         plan.ytick_w = std::max(plan.ytick_w, i.w);
         plan.ytick_extent.push_back(i.h);
+        // Ink below the baseline (the slash of pi/2) hangs that much nearer the x labels.
+        plan.xtick_gap = std::max(plan.xtick_gap, plan.tick_gap + std::max(0.0, i.y + i.h - digit.y - digit.h));
     }
+    plan.xtick_gap = std::max(plan.xtick_gap, plan.tick_gap);
     for (const auto& l : plan.xt.labels) {
         const text_ink i = text.ink(l, th.tick_font_pt);
         plan.xtick_up = std::max(plan.xtick_up, -i.y);
@@ -255,6 +258,7 @@ void share_margins(std::vector<panel_plan>& plans, const theme& th, int cols) {
         m.top = std::max(m.top, p.top);
         m.right = std::max(m.right, p.right);
         m.tick_gap = std::max(m.tick_gap, p.tick_gap);
+        m.xtick_gap = std::max(m.xtick_gap, p.xtick_gap);
         m.label_gap = std::max(m.label_gap, p.label_gap);
     }
     const double pad = th.padding_pt;
@@ -265,9 +269,10 @@ void share_margins(std::vector<panel_plan>& plans, const theme& th, int cols) {
         p.xtick_down = m.xtick_down;
         p.xlabel_h = m.xlabel_h;
         p.tick_gap = m.tick_gap;
+        p.xtick_gap = m.xtick_gap;
         p.label_gap = m.label_gap;
         p.left = pad + (m.ylabel_h > 0 ? m.ylabel_h + m.label_gap : 0.0) + m.ytick_w + m.tick_gap;
-        p.bottom = m.tick_gap + m.xtick_up + m.xtick_down + (m.xlabel_h > 0 ? m.label_gap + m.xlabel_h : 0.0) + pad;
+        p.bottom = m.xtick_gap + m.xtick_up + m.xtick_down + (m.xlabel_h > 0 ? m.label_gap + m.xlabel_h : 0.0) + pad;
         p.top = m.top;
         p.right = m.right;
     }

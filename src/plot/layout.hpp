@@ -31,6 +31,7 @@ struct panel_plan {
     tick_set xt;
     tick_set yt;
     double tick_gap = 0;     // from the frame to the ink of the tick labels, on both axes
+    double xtick_gap = 0;    // from the frame to the x tick labels: tick_gap and what y labels hang below it
     double label_gap = 0;   // from the tick labels' ink to the axis label's
     double digit_h = 0;     // ink height of a digit: y tick labels are centred on it
     double ytick_w = 0;     // widest y tick label

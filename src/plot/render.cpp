@@ -172,8 +172,9 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     draw_ticks(cr, th, plan.yt, my, area, false);
 
     // Tick labels, all at tick_gap from the frame: x labels on one baseline below their
-    // highest ink, y labels with their ink ending there, centred on a digit's height.
-    const double x_baseline = area.y + area.h + plan.tick_gap + plan.xtick_up;
+    // highest ink (and below the ink of y labels that hang under their baseline), y labels
+    // with their ink ending there, centred on a digit's height.
+    const double x_baseline = area.y + area.h + plan.xtick_gap + plan.xtick_up;
     for (std::size_t i = 0; i < plan.xt.major.size(); ++i) {
         const double d = mx(plan.xt.major[i]);
         if (d < area.x - 0.01 || d > area.x + area.w + 0.01) continue;
@@ -361,7 +362,8 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {
             const rect a = panel_area(fig.panels[i], plans[i], cells[i]);
             frames->push_back(panel_frame{a.x, a.y, a.w, a.h, plans[i].xt.lo, plans[i].xt.hi, plans[i].yt.lo,
-                                          plans[i].yt.hi, fig.panels[i].frameless});
+                                          plans[i].yt.hi, fig.panels[i].frameless, plans[i].xt.labels,
+                                          plans[i].yt.labels});
         }
     };
     if (!fig.shared_legend || fig.panels.empty() || !same_legend_entries(planned)) {

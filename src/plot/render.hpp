@@ -8,6 +8,7 @@
 #include <cairo.h>
 
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace plot {
@@ -38,6 +39,8 @@ struct panel_frame {
     double y_lo = 0;       ///< y at the bottom edge
     double y_hi = 1;       ///< y at the top edge
     bool frameless = false;  ///< a drawing without axes
+    std::vector<std::string> x_labels;  ///< the x axis' major tick labels as drawn (markup)
+    std::vector<std::string> y_labels;  ///< the y axis' major tick labels as drawn (markup)
 };
 
 /// A figure that cannot be laid out as asked: its size leaves axes too small to read.

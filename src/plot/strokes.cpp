@@ -91,6 +91,12 @@ void draw_markers(cairo_t* cr, const theme& th, const series& s, const device_se
     }
     if (s.marker == marker_style::filled_circle) {
         cairo_fill_preserve(cr);
+    } else if (s.line != line_style::none) {
+        // An open marker on its own series' line stays open: the line does not run through it.
+        cairo_save(cr);
+        cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
+        cairo_fill_preserve(cr);
+        cairo_restore(cr);
     }
     cairo_stroke(cr);
 }

@@ -47,6 +47,9 @@ double nice_step(double lo, double hi, int max_ticks, bool expand) {
     const double decade = std::pow(10.0, std::floor(std::log10(raw)));
     for (double m : {1.0, 2.0, 2.5, 5.0, 10.0, 20.0}) {
         const double step = m * decade;
+        // 2.5 only where its labels need no more decimals than a step of 5 (25, 250, ...):
+        // 0.25 would print 0.00 ... 1.00 where fewer ticks of the same range print 0.0 ... 1.0.
+        if (m == 2.5 && step < 10.0 * (1 - 1e-9)) continue;
         const auto [a, b] = index_range(lo, hi, step, expand);
         if (b - a + 1 <= max_ticks && b - a >= 1) return step;
     }

@@ -15,8 +15,10 @@ struct tick_set {
     std::vector<std::string> labels;  ///< Pango markup, one per major tick
 };
 
-/// The "nice" step (1, 2, 2.5 or 5 times a power of ten) for at most max_ticks ticks on
-/// [lo, hi] (or on the enclosing ticks, with `expand`), at least two of them when possible.
+/// The "nice" step (1, 2 or 5 times a power of ten, 2.5 times one from 25 up) for at most
+/// max_ticks ticks on [lo, hi] (or on the enclosing ticks, with `expand`), at least two of
+/// them when possible. The labels of one range keep their decimals whatever the number of
+/// ticks: 0.0 0.2 ... 1.0 or 0.0 0.5 1.0, never 0.00 0.25 ... 1.00.
 double nice_step(double lo, double hi, int max_ticks, bool expand = true);
 
 /// Linear ticks after MaxNLocator: multiples of a nice step. With `expand`, the range grows

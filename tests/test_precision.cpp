@@ -296,7 +296,7 @@ namespace {
 
 TEST(PeriodErrors, IterationNearPiRightTo1e14) {
     // iteration.csv's exact-arithmetic T_N/T0 next to pi, where the double iteration drifts
-    // (at pi - 1e-12 by 27 % at N = 92): iterated_sequence() works with MPFR there.
+    // (at pi - 1e-12 by 16 % at N = 92): iterated_sequence() works with MPFR there.
     const auto rows = test_support::read_reference_text("iteration.csv");
     for (const char* text : {"pi-1e-6", "pi-1e-9"}) {
         const auto levels = iterated_sequence(parse_amplitude(text), 24);

@@ -5,7 +5,7 @@
 
 namespace pendulum::cli {
 
-eval_point::eval_point(const amplitude& t, unsigned needs) : theta0(t.radians()) {
+eval_point::eval_point(const amplitude& t, unsigned needs) : theta0(t.radians()), from_pi(t.from_pi()) {
     if (needs & need_exact) exact.emplace(t);
     if (needs & need_lowest) lowest.emplace(lowest_order(t));
     if (needs & need_first) first.emplace(first_order(t));
@@ -15,7 +15,7 @@ eval_point::eval_point(const amplitude& t, unsigned needs) : theta0(t.radians())
 
 namespace {
 
-constexpr std::array<eval_column, 17> columns = {{
+constexpr std::array<eval_column, 18> columns = {{
     {"theta0", "the amplitude in radians", 0, [](const eval_point& p) { return p.theta0; }},
     {"period_exact", "T/T0, exact", need_exact, [](const eval_point& p) { return p.exact->period_ratio(); }},
     {"period_lowest", "T/T0, lowest order", need_lowest, [](const eval_point& p) { return p.lowest->period_ratio(); }},
@@ -33,6 +33,10 @@ constexpr std::array<eval_column, 17> columns = {{
     {"c1_poly", "c1, polynomial", need_polynomial, [](const eval_point& p) { return p.polynomial->coefficients[0]; }},
     {"c3_poly", "c3, polynomial", need_polynomial, [](const eval_point& p) { return p.polynomial->coefficients[1]; }},
     {"c5_poly", "c5, polynomial", need_polynomial, [](const eval_point& p) { return p.polynomial->coefficients[2]; }},
+    // Close to pi every theta0 prints as 3.141592653589793; its distance from pi keeps the
+    // amplitude. Only with --columns, so that the default table stays as it was.
+    {"pi_minus_theta0", "pi - theta0, exact close to pi where theta0 prints as 3.141592653589793; only with --columns", 0,
+     [](const eval_point& p) { return p.from_pi; }, false},
 }};
 
 }  // namespace

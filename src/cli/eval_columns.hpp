@@ -25,6 +25,7 @@ struct eval_point {
     /// Solves the methods of `needs` at theta0.
     eval_point(const amplitude& theta0, unsigned needs);
     double theta0;                               ///< the amplitude
+    double from_pi;                              ///< its distance pi - theta0, exact close to pi
     std::optional<exact_solution> exact;         ///< the exact solution
     std::optional<fourier_solution> lowest;      ///< lowest order
     std::optional<fourier_solution> first;       ///< first order
@@ -38,9 +39,11 @@ struct eval_column {
     std::string_view description;           ///< for --help
     unsigned needs;                         ///< the solutions it reads (eval_need flags)
     double (*value)(const eval_point& p);   ///< the value at an amplitude
+    bool by_default = true;                 ///< written without --columns
 };
 
-/// The fixed columns, in order; --order and --method add columns after them.
+/// The fixed columns, in order; --order and --method add columns after them. Without
+/// --columns eval writes those that are by_default.
 std::span<const eval_column> eval_columns();
 
 /// The column list for --help: "theta0 (the amplitude), period_exact (T/T0 exact), ...".

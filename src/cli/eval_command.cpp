@@ -7,6 +7,7 @@
 #include "cli/table.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/seconds.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -54,7 +55,9 @@ constexpr std::string_view seconds_column = "T_s";
 std::pair<std::vector<const eval_column*>, bool> chosen_columns(const eval_options& o) {
     std::vector<const eval_column*> fixed;
     if (o.columns.empty()) {
-        for (const auto& c : eval_columns()) fixed.push_back(&c);
+        for (const auto& c : eval_columns()) {
+            if (c.by_default) fixed.push_back(&c);
+        }
         return {fixed, o.length.has_value()};
     }
     const auto names = split_list(o.columns);
@@ -90,14 +93,23 @@ std::vector<method_choice> parse_methods(const std::vector<std::string>& given) 
     return methods;
 }
 
-/// T0 in seconds for --length and --g; 0 without --length.
-double small_period_seconds(const eval_options& o) {
+/// T0 in seconds for --length and --g, in extended precision; 0 without --length.
+long double small_period_seconds(const eval_options& o) {
     if (!o.length) return 0.0;
     if (!(*o.length > 0 && *o.length <= 1e6)) {
         throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
     }
     if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
-    return 2 * std::acos(-1.0) * std::sqrt(*o.length / o.g);
+    return pendulum::small_period_seconds(*o.length, o.g);
+}
+
+/// T_s for a period ratio: a usage error where it overflows a double.
+double period_seconds(double ratio, long double small_period_s) {
+    try {
+        return seconds(ratio, small_period_s);
+    } catch (const domain_error& e) {
+        throw usage_error(std::string("--length and --g: ") + e.what());
+    }
 }
 
 /// The highest level of the iteration that --order and --method order:N ask for (-1: none).
@@ -135,7 +147,7 @@ constexpr const char* start_columns[] = {"theta0", "omega0", "energy", "regime",
 
 /// eval for states and energies: regime, energy, amplitude or revolution period per start.
 void eval_starts(std::ostream& out, const eval_options& o, const std::vector<int>& orders,
-                 const std::vector<method_choice>& methods, double small_period_s) {
+                 const std::vector<method_choice>& methods, long double small_period_s) {
     if (!o.columns.empty()) {
         throw usage_error("--columns chooses among the columns of amplitudes (--theta0 alone); with --omega0 or "
                           "--energy every column is written");
@@ -166,7 +178,7 @@ void eval_starts(std::ostream& out, const eval_options& o, const std::vector<int
         if (libration) {
             for (double x : method_periods(m.amplitude(), orders, methods, highest, broken)) row.emplace_back(x);
         }
-        if (o.length) row.emplace_back(small_period_s * ratio);
+        if (o.length) row.emplace_back(std::isnan(ratio) ? ratio : period_seconds(ratio, small_period_s));
         writer.record(row);
         if (!broken.empty()) {
             writer.flush();  // the warning follows its row
@@ -180,7 +192,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     const auto format = parse_table_format(o.format);
     const std::vector<int> orders = parse_orders(list_items(o.orders));
     const std::vector<method_choice> methods = parse_methods(o.methods);
-    const double small_period_s = small_period_seconds(o);
+    const long double small_period_s = small_period_seconds(o);
     if (!o.omega0.empty() || !o.energy.empty()) return eval_starts(out, o, orders, methods, small_period_s);
     if (o.theta0.empty()) throw usage_error("give --theta0 (amplitudes, or with --omega0 states) or --energy");
     const auto amplitudes = parse_amplitude_values(o.theta0);
@@ -204,7 +216,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         row.clear();
         for (const auto* c : fixed) row.push_back(c->value(point));
         for (double x : method_periods(value, orders, methods, highest, broken)) row.push_back(x);
-        if (seconds) row.push_back(small_period_s * point.exact->period_ratio());
+        if (seconds) row.push_back(period_seconds(point.exact->period_ratio(), small_period_s));
         writer.row(row);
         if (!broken.empty()) {
             writer.flush();  // the warning follows its row

@@ -9,9 +9,12 @@
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
 #include "pendulum/phase.hpp"
+#include "pendulum/seconds.hpp"
+#include "pendulum/time_reduction.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -47,16 +50,16 @@ struct time_unit_row {
     std::string_view name;         ///< as --time takes it
     std::string_view column;       ///< the table's first column
     std::string_view description;  ///< for --help
-    /// w0 t per unit of time for a motion (T0 in seconds given, 0 without --length).
-    double (*scale)(const motion& m, double small_period_s);
+    /// w0 t per unit of time for a motion (w0 in radians per second given, 0 without --length).
+    long double (*scale)(const motion& m, long double w0);
 };
 
 constexpr time_unit_row time_units[] = {
     {"t/T", "t_over_T", "periods T of the exact motion (T_rev for a rotation; none at the separatrix)",
-     [](const motion& m, double) { return m.period(); }},
-    {"t/T0", "t_over_T0", "small-amplitude periods T0 = 2 pi/w0", [](const motion&, double) { return 2 * std::numbers::pi; }},
+     [](const motion& m, long double) { return static_cast<long double>(m.period()); }},
+    {"t/T0", "t_over_T0", "small-amplitude periods T0 = 2 pi/w0", [](const motion&, long double) { return 2 * std::numbers::pi_v<long double>; }},
     {"t/s", "t_s", "seconds, for a pendulum of --length L (and --g)",
-     [](const motion&, double small_period_s) { return 2 * std::numbers::pi / small_period_s; }},
+     [](const motion&, long double w0) { return w0; }},
 };
 
 const time_unit_row& parse_time_unit(const std::string& text) {
@@ -81,14 +84,14 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     if (!m.has_period() && unit.name == "t/T") {
         throw usage_error(start.text + " is on the separatrix (E = 2): it has no period T; give --time t/T0 or --time t/s");
     }
-    double small_period_s = 0;
+    long double w0 = 0;
     if (unit.name == "t/s") {
         if (!o.length) throw usage_error("--time t/s needs the pendulum's --length L in metres (and --g, default 9.80665)");
         if (!(*o.length > 0 && *o.length <= 1e6)) {
             throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
         }
         if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
-        small_period_s = 2 * std::numbers::pi * std::sqrt(*o.length / o.g);
+        w0 = angular_frequency(*o.length, o.g);
     } else if (o.length) {
         throw usage_error("--length goes with --time t/s, not --time " + std::string(unit.name));
     }
@@ -142,13 +145,27 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
                           "or an amplitude further from pi");
     }
 
-    const double scale = unit.scale(m, small_period_s);  // w0 t per unit of time
+    const long double scale = unit.scale(m, w0);  // w0 t per unit of time, rounded once with the time
     const bool paper_table = !state && unit.name == "t/T";
     std::vector<std::string> columns{std::string(unit.column), "theta"};
     if (state) columns.emplace_back("omega");
     table_writer writer(out, columns, format);
+    // A libration's times are reduced modulo the period of what is evaluated (the exact
+    // motion's, or the approximant's own) exactly, so that a million periods lose nothing.
+    std::optional<time_reducer> reduce;
+    if (m.kind() == regime::libration) {
+        double largest = o.periods;
+        if (!o.at.empty()) {
+            largest = 0;
+            for (double s : times) largest = std::max(largest, std::fabs(s));
+        }
+        time_scale ts;
+        if (unit.name == "t/T0") ts.what = time_scale::unit::small_periods;
+        if (unit.name == "t/s") ts = {time_scale::unit::seconds, *o.length, o.g};
+        reduce.emplace(m.amplitude(), ts, largest, is_exact ? 0.0 : approx.frequency_ratio);
+    }
     const auto write = [&](double s) {
-        const double t = s * scale;
+        const double t = reduce ? (*reduce)(s) : static_cast<double>(s * scale);
         if (paper_table) {
             // The amplitude's own table, reduced by the exact period's symmetries.
             writer.row({s, is_exact ? m.libration().theta_at_fraction(s) : approx.theta(t)});

@@ -5,6 +5,7 @@
 #include "pendulum/amplitude.hpp"
 #include "pendulum/exact.hpp"
 #include "plot/output.hpp"
+#include "pendulum/seconds.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -49,7 +50,7 @@ animation_plan plan_animation(const entry& e, const build_options& options) {
     plan.physical = e.spec.pendulum.has_value();
     const double length = plan.physical ? e.spec.pendulum->length_m : 1.0;
     const double g = plan.physical ? e.spec.pendulum->g : 9.80665;
-    plan.seconds_per_unit = std::sqrt(length / g);
+    plan.seconds_per_unit = pendulum::seconds_per_radian(length, g);
     plan.reference_period = reference_period(panels_of(e, options));
     const double span = a.duration_s ? *a.duration_s / plan.seconds_per_unit : a.periods.value_or(1.0) * plan.reference_period;
     // Playback: `speed` seconds of the pendulum's time per second shown.

@@ -4,6 +4,7 @@
 #include "pendulum/angle.hpp"
 #include "pendulum/phase.hpp"
 #include "plot/tex_markup.hpp"
+#include "pendulum/seconds.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -114,7 +115,9 @@ std::vector<double> curve_amplitudes(double lo, double hi) {
 }
 
 /// Seconds per unit of w0 t, for a spec with a [pendulum].
-double seconds_per_radian(const figure_spec& spec) { return std::sqrt(spec.pendulum->length_m / spec.pendulum->g); }
+double seconds_per_radian(const figure_spec& spec) {
+    return pendulum::seconds_per_radian(spec.pendulum->length_m, spec.pendulum->g);
+}
 
 /// The x value of a trajectory panel at t = s T, its unit per exact period, and its label.
 std::pair<double, std::string> time_unit_of(const figure_spec& spec, const panel_spec& p,

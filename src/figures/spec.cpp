@@ -6,6 +6,7 @@
 #include "figures/toml_reader.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/angle.hpp"
+#include "pendulum/seconds.hpp"
 
 #include <toml++/toml.h>
 
@@ -245,7 +246,7 @@ void check_costs(reader& r, const toml::table& t, const figure_spec& f, const pa
         const double span = (*p.range)[1] - (*p.range)[0];
         double periods = span;
         if (p.time == time_unit::seconds && f.pendulum) {
-            periods = span / (2 * std::numbers::pi * std::sqrt(f.pendulum->length_m / f.pendulum->g));
+            periods = span / static_cast<double>(pendulum::small_period_seconds(f.pendulum->length_m, f.pendulum->g));
         }
         if (!(periods <= max_periods_per_panel)) {
             r.problem(at("range"), "'range' spans up to " + pendulum::format_double(periods) +

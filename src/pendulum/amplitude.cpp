@@ -36,6 +36,7 @@ constexpr double pi_lo = 1.2246467991473532e-16;
 amplitude::amplitude(double theta0) {
     check_amplitude(theta0);
     theta0_ = theta0;
+    source_ = source::theta0;
     // pi_hi - theta0 is exact for theta0 >= pi/2 (Sterbenz) and the one rounding is the last.
     d_ = (pi_hi - theta0) + pi_lo;
 }
@@ -47,6 +48,27 @@ double amplitude::modulus(bool complementary) const {
     return small == complementary ? std::cos(half) : std::sin(half);
 }
 
+long double amplitude::radians_extended() const {
+    return source_ != source::theta0 && near_pi() ? std::numbers::pi_v<long double> - d_ : theta0_;
+}
+
+long double amplitude::moduli_extended(bool complementary) const {
+    if (source_ == source::parts) return complementary ? kp() : k();
+    // Half of the smaller of theta0 and d, in extended precision from the exact one: for a
+    // double theta0 above pi/2, pi_hi - theta0 is exact and pi's next 64 bits follow.
+    constexpr long double pi_lo_extended = 1.2246467991473531772260659281409368386e-16L;
+    const bool small = source_ == source::theta0 && theta0_ <= 0.5 * pi_hi;
+    long double half = 0;
+    if (small) {
+        half = 0.5L * theta0_;
+    } else if (source_ == source::distance) {
+        half = 0.5L * d_;
+    } else {
+        half = 0.5L * (static_cast<long double>(pi_hi - theta0_) + pi_lo_extended);
+    }
+    return small == complementary ? std::cos(half) : std::sin(half);
+}
+
 amplitude amplitude::from_pi(double d) {
     if (!(d >= DBL_MIN && d < pi_hi)) {
         throw domain_error("the distance from pi must be between 2.2250738585072014e-308 and pi, got " +
@@ -54,6 +76,7 @@ amplitude amplitude::from_pi(double d) {
     }
     amplitude a;
     a.d_ = d;
+    a.source_ = source::distance;
     a.theta0_ = (pi_hi - d) + pi_lo;
     return a;
 }

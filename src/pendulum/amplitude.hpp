@@ -45,11 +45,26 @@ public:
     double kp() const { return std::isnan(kp_) ? modulus(true) : kp_; }
     /// True where the amplitude is closer to pi than to 0, and pi - d is the exact value.
     bool near_pi() const { return d_ < theta0_; }
+    /// True where the amplitude is the double theta0 itself (not pi - d, nor an expression's
+    /// rounded numbers).
+    bool exact_radians() const { return source_ == source::theta0; }
+    /// theta0 in extended precision: pi - d close to pi unless theta0 is the exact number.
+    long double radians_extended() const;
+    /// k in extended precision, from whichever of theta0 and d is exact (as k() where the
+    /// moduli were given).
+    long double k_extended() const { return moduli_extended(false); }
+    /// k' in extended precision, the same way.
+    long double kp_extended() const { return moduli_extended(true); }
 
 private:
     amplitude() = default;
     /// k or k' from theta0 and d, where they were not given (most users need neither).
     double modulus(bool complementary) const;
+    /// k or k' in extended precision.
+    long double moduli_extended(bool complementary) const;
+    /// Which of the numbers is the amplitude itself (the others were rounded from it).
+    enum class source { theta0, distance, parts };
+    source source_ = source::parts;
     double theta0_ = 0;
     double d_ = 0;
     double k_ = std::numeric_limits<double>::quiet_NaN();   // NaN: computed when asked for

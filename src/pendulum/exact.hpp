@@ -53,7 +53,10 @@ private:
     double k_;
     double kp_;
     double quarter_;
-    double log_nome_;
+    double period_ratio_;      // 1/AGM(1, k') rounded once
+    double frequency_ratio_;   // AGM(1, k') rounded once
+    long double kp_extended_;  // k' in extended precision, for the nome
+    long double log_nome_;     // ln q in extended precision
     double small_c1_ = 0;  // c1 and c3 below small_amplitude
     double small_c3_ = 0;
 };

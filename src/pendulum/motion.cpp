@@ -141,6 +141,7 @@ motion motion::from_amplitude(const pendulum::amplitude& theta0) {
     m.k_ = k;
     m.kp_ = kp;
     m.libration_.emplace(theta0);
+    m.given_.emplace(theta0);
     m.quarter_ = m.libration_->quarter_period();
     return m;
 }
@@ -200,6 +201,9 @@ amplitude motion::amplitude() const {
                            ", here E = " + format_double(energy_) +
                            ") has no amplitude: only a libration (E < 2) swings between turning points");
     }
+    // Released at rest from an amplitude: that amplitude, with whichever of theta0 and pi -
+    // theta0 is exact; from a state or an energy: the moduli are all there is.
+    if (given_) return *given_;
     return amplitude::from_parts(libration_->amplitude(), 2.0 * std::atan2(kp_, k_), k_, kp_);
 }
 

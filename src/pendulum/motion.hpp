@@ -111,6 +111,7 @@ private:
     double turns_ = 0;    ///< the multiple of 2 pi nearest the mirrored start angle
     double offset_ = 0;   ///< the forward motion's time at the start
     std::optional<exact_solution> libration_;
+    std::optional<pendulum::amplitude> given_;  ///< the amplitude itself, for from_amplitude()
 };
 
 /// The incomplete elliptic integral of the first kind F(psi | k) for the angle psi in [0, pi]

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/spec_build.hpp"
 
+#include "figures/describe.hpp"
 #include "figures/errors.hpp"
 #include "figures/panel_support.hpp"
 #include "plot/tex_markup.hpp"
@@ -178,6 +179,10 @@ plot::figure build_figure(const figure_spec& spec, const build_options& options)
         }
         f.panels.push_back(std::move(panel));
     }
+    // The figure in words travels with it, into the files that can hold them.
+    const figure_description words = describe(spec, f, options);
+    f.alt = words.alt;
+    f.description = words.text;
     return f;
 }
 

@@ -148,6 +148,8 @@ struct figure {
     std::vector<panel> peers;      ///< panels drawn alone in other files of this size (one panel each) whose frames these must match
     int place_in_set = 0;          ///< with peers: where this figure's one panel stands among them (0: first)
     plot::label title;             ///< drawn centred above the panels (theme's title_font_pt; 0 hides it)
+    std::string alt;               ///< what it shows in a sentence or two, plain text: the SVG's <title> and PDF's Title where there is no title
+    std::string description;       ///< what it shows at length, plain text: the SVG's <desc> and the PDF's Subject
 };
 
 /// Escapes text for use inside Pango markup (&, <, >, quotes).

@@ -230,8 +230,8 @@ std::string phase_orbits(const plot::panel& p, const std::vector<const plot::ser
     std::string out;
     if (!closed.empty()) {
         out += std::string(closed.size() == 1 ? " A closed curve" : " Closed curves") + " around the origin (" +
-               y + " is largest at " + x + " = 0 and zero at the turning points), nested by size: " + join(closed) +
-               ".";
+               y + " is largest at " + x + " = 0 and zero at the turning points)" +
+               (closed.size() == 1 ? ": " : ", nested by size: ") + join(closed) + ".";
     }
     if (!touching.empty()) {
         std::string who = join(touching);

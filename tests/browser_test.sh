@@ -11,8 +11,9 @@
 # (exit 77), except under CI=true, where it fails.
 # Usage: browser_test.sh PENDULUM_FIGURES IMAGE_CHECK [SVG_TOLERANCE [TEXT_TOLERANCE [VIDEO_TOLERANCE]]]
 set -euo pipefail
-exe=$1
-check=$2
+exe=$(realpath "$1")
+check=$(realpath "$2")
+here=$(cd "$(dirname "$0")" && pwd)
 # Measured (RMS over 4 x 4 blocks at 192 dpi): outlines 2.9 to 4.1, <text> 4.7 to 5.6 (text
 # set without its anchors: 11 to 14), video frames 1.6 (WebM) and 1.9 (MP4) (the frame
 # before or after: 5.2 to 7.7).
@@ -119,7 +120,7 @@ async function grab_all() {
 </script></body></html>
 HTML
 mkdir shots
-python3 "$(dirname "$0")/browser_grab.py" "$browser" page.html shots || status=1
+python3 "$here/browser_grab.py" "$browser" page.html shots || status=1
 compare() {
     local name=$1 reference=$2 block=$3 tolerance=$4 line rms
     [ -f "shots/$name.png" ] || { echo "FAIL: $name: no picture"; status=1; return; }

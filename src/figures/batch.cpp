@@ -90,8 +90,7 @@ plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
     one.shared_legend = f.shared_legend;
     one.place_in_set = panel;
     // A panel's file is the figure's, in words as in its frame.
-    one.alt = f.alt;
-    one.description = f.description;
+    one.words = f.words;
     return one;
 }
 

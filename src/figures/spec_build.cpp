@@ -10,6 +10,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 namespace figures {
@@ -179,10 +181,19 @@ plot::figure build_figure(const figure_spec& spec, const build_options& options)
         }
         f.panels.push_back(std::move(panel));
     }
-    // The figure in words travels with it, into the files that can hold them.
-    const figure_description words = describe(spec, f, options);
-    f.alt = words.alt;
-    f.description = words.text;
+    // The figure in words travels with it, into the files that can hold them; found when
+    // first asked for, once, from the figure as built here.
+    struct found {
+        std::once_flag once;
+        plot::figure_words words;
+    };
+    f.words = [whole = std::make_shared<const plot::figure>(f), memo = std::make_shared<found>(), spec, options] {
+        std::call_once(memo->once, [&] {
+            const figure_description d = describe(spec, *whole, options);
+            memo->words = {d.alt, d.text};
+        });
+        return memo->words;
+    };
     return f;
 }
 

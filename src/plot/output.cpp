@@ -92,21 +92,24 @@ std::string render_vector(const figure& fig, const theme& th, std::string_view f
     return bytes;
 }
 
-/// The figure's name for a file's metadata: its title as drawn, or else its alt text.
-std::string metadata_title(const figure& fig) {
-    return fig.title.empty() ? fig.alt : markup_text(fig.title.markup);
+/// The figure in words for a file's metadata, its title as drawn in place of its alt text.
+figure_words metadata_words(const figure& fig) {
+    figure_words words = fig.words ? fig.words() : figure_words{};
+    if (!fig.title.empty()) words.alt = markup_text(fig.title.markup);
+    return words;
 }
 
 std::string render_pdf(const figure& fig, const theme& th, const output_options&, std::vector<placed_text>* texts) {
-    const std::string title = metadata_title(fig);
+    const figure_words words = metadata_words(fig);
+    const std::string& title = words.alt;
     return render_vector(
         fig, th, "pdf",
-        [&title, &fig](std::string* bytes, page_size size) {
+        [&title, &words](std::string* bytes, page_size size) {
             cairo_surface_t* s = cairo_pdf_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
             cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
             if (!title.empty()) cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_TITLE, title.c_str());
-            if (!fig.description.empty()) {
-                cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_SUBJECT, fig.description.c_str());
+            if (!words.description.empty()) {
+                cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_SUBJECT, words.description.c_str());
             }
             return s;
         },
@@ -351,7 +354,8 @@ std::string write_svg(const figure& fig, const theme& th, const output_options&)
         svg.insert(close, svg_text_elements(texts, th));
     }
     svg = with_svg_size(std::move(svg), figure_size(fig, th), th.svg_size);
-    return with_svg_words(std::move(svg), metadata_title(fig), fig.description);
+    const figure_words words = metadata_words(fig);
+    return with_svg_words(std::move(svg), words.alt, words.description);
 }
 
 /// Cairo gives an EPS the bounding box of its ink; a page without a background would shrink

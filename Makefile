@@ -47,6 +47,8 @@ DEB_PACKAGES += ghostscript
 # The man pages (checked with man), the Debian packages (dpkg-dev, checked with lintian),
 # completion.
 DEB_PACKAGES += man-db dpkg-dev lintian bash-completion
+# Headless Chromium draws the SVGs and plays the videos in the browser test.
+DEB_PACKAGES += chromium
 # clang and its sanitizer runtimes: the sanitizer run of make test, and make fuzz.
 DEB_PACKAGES += clang libclang-rt-14-dev
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils

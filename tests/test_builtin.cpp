@@ -156,6 +156,19 @@ TEST(Describe, EveryBuiltinFigureInWords) {
         {"swing", "An animation over 3 periods"},
         {"over-the-top", "E = 2.6 goes over the top, round and round (rotation)"},
         {"phase-portrait", "against theta, theta from -pi to pi"},
+        // Each orbit's shape and extent, not only its name; the separatrix's too.
+        {"phase-portrait", "Closed curves around the origin"},
+        {"phase-portrait", "theta0 = pi/2: theta +-pi/2, dtheta/d(omega0t) +-1.41"},
+        {"phase-portrait", "Separatrix meets dtheta/d(omega0t) = 0 at theta = -pi and pi and reaches 2 at theta = 0"},
+        {"separatrix", "Separatrix meets dtheta/d(omega0t) = 0"},
+        {"separatrix", "An animation over 1 period of"},
+        // The drawing: what it shows, how each pendulum looks, where they start.
+        {"swing", "is a drawing, seen from the side, of 3 pendulums"},
+        {"swing", "exact (solid rod, filled bob), harmonic (solid rod, open bob)"},
+        {"swing", "released from rest at theta0 = 170 degrees"},
+        {"swing", "fading trail of its last 0.3 periods"},
+        // A curve that leaves the axes is described as far as they show it.
+        {"period", "T/T0 from 1 to 3"},
     };
     for (const auto& f : facts) {
         const auto& e = figures::find(f.id);

@@ -89,6 +89,8 @@ plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
     // figure would put it in, or in a band over the first file (all files leave room).
     one.shared_legend = f.shared_legend;
     one.place_in_set = panel;
+    // A panel's file is the figure's, in words as in its frame.
+    one.words = f.words;
     return one;
 }
 

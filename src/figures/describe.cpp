@@ -3,6 +3,8 @@
 
 #include "figures/panel_support.hpp"
 #include "figures/spec_build.hpp"
+#include "figures/themes.hpp"
+#include "plot/render.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -148,8 +150,104 @@ std::string axis_name(const plot::axis& a, const char* fallback) {
     return name.empty() ? fallback : name;
 }
 
+/// An amplitude as its spec gives it: in degrees if it was given in degrees, else in pi.
+std::string spoken_amplitude(const amplitude& a) {
+    if (a.text.find("deg") != std::string::npos) return spoken(a.value * 180 / pi, plot::tick_kind::nice) + " degrees";
+    return spoken(a.value, plot::tick_kind::multiples_of_pi);
+}
+
+/// The pendulum drawing: what is drawn, each pendulum's rod and bob, where they start.
+std::string pendulum_drawing(const panel_spec& spec, bool animated) {
+    static const char* const lines[] = {"solid", "solid", "dashed", "dotted", "dash-dot", "dash-dot-dot"};
+    std::vector<std::string> who;
+    for (std::size_t i = 0; i < spec.methods.size(); ++i) {
+        const method_spec& m = spec.methods[i];
+        const plot::line_style line = m.style.value_or(plot::line_style::solid);
+        const plot::marker_style bob =
+            m.marker.value_or(is_exact(m) ? plot::marker_style::filled_circle : plot::marker_style::open_circle);
+        who.push_back(spoken_label(style_of(m, static_cast<int>(i)).label.markup) + " (" +
+                      lines[static_cast<int>(line)] + " rod, " +
+                      (bob == plot::marker_style::filled_circle ? "filled" : "open") + " bob)");
+    }
+    const std::size_t n = spec.methods.size();
+    std::string out = " is a drawing, seen from the side, of " +
+                      (n == 1 ? std::string("a pendulum") : std::to_string(n) + " pendulums of one length") +
+                      " hanging from one pivot: " + join(who) + ".";
+    if (!spec.theta0.empty()) {
+        out += std::string(n == 1 ? " It is" : " They are") + " released from rest at theta0 = " +
+               spoken_amplitude(spec.theta0.front()) +
+               " from the vertical; dotted lines mark that angle on either side, and a faint circle the path of "
+               "the bobs.";
+    }
+    if (spec.trail > 0) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%g", spec.trail);
+        out += " Each bob leaves a fading trail of its last " + std::string(buf) + " periods.";
+    }
+    if (animated && n > 1) out += " They swing side by side, the approximations drifting from the exact pendulum.";
+    return out;
+}
+
+/// "+-A" for a range symmetric about zero, "from A to B" otherwise.
+std::string extent(double lo, double hi, plot::tick_kind kind) {
+    if (std::fabs(lo + hi) <= 1e-3 * (hi - lo)) return "+-" + spoken(hi, kind);
+    return "from " + spoken(lo, kind) + " to " + spoken(hi, kind);
+}
+
+/// Each orbit of a phase plot: its shape and how far it reaches on both axes.
+std::string phase_orbits(const plot::panel& p, const std::vector<const plot::series*>& shown, const std::string& x,
+                         const std::string& y) {
+    std::vector<std::string> closed, touching, open;
+    for (const auto* s : shown) {
+        auto points = dense(*s);
+        if (points.empty()) continue;
+        std::sort(points.begin(), points.end());
+        double y0 = INFINITY, y1 = -INFINITY, peak_x = 0;
+        for (const auto& [px, py] : points) {
+            y0 = std::min(y0, py);
+            if (py > y1) peak_x = px;
+            y1 = std::max(y1, py);
+        }
+        const double x0 = points.front().first, x1 = points.back().first;
+        const std::string name = spoken_label(s->label.markup);
+        const double near = 1e-3 * std::max(std::fabs(y0), std::fabs(y1));
+        if (y0 < -near && y1 > near) {
+            closed.push_back(name + ": " + x + " " + extent(x0, x1, p.x.ticks) + ", " + y + " " +
+                             extent(y0, y1, p.y.ticks));
+        } else if (std::min(std::fabs(y0), std::fabs(y1)) <= near) {
+            const bool above = y1 > near;
+            touching.push_back(name + " meets " + y + " = 0 at " + x + " = " + spoken(x0, p.x.ticks) + " and " +
+                               spoken(x1, p.x.ticks) + " and reaches " + spoken(above ? y1 : y0, p.y.ticks) + " at " +
+                               x + " = " + spoken(above ? peak_x : x0, p.x.ticks) +
+                               (name == "separatrix" ? ", with its mirror image below: the boundary between "
+                                                       "swinging and going over the top"
+                                                     : ""));
+        } else {
+            open.push_back(name + ": " + y + " " + extent(y0, y1, p.y.ticks) + ", " + (y0 > 0 ? "above" : "below") +
+                           " the axis");
+        }
+    }
+    std::string out;
+    if (!closed.empty()) {
+        out += std::string(closed.size() == 1 ? " A closed curve" : " Closed curves") + " around the origin (" +
+               y + " is largest at " + x + " = 0 and zero at the turning points)" +
+               (closed.size() == 1 ? ": " : ", nested by size: ") + join(closed) + ".";
+    }
+    if (!touching.empty()) {
+        std::string who = join(touching);
+        who[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(who[0])));
+        out += " " + who + ".";
+    }
+    if (!open.empty()) {
+        out += std::string(open.size() == 1 ? " A curve" : " Curves") + " across the whole width, never reaching " +
+               y + " = 0 (rotations): " + join(open) + ".";
+    }
+    return out;
+}
+
 /// The panel's paragraph.
-std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::size_t index, std::size_t count) {
+std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::size_t index, std::size_t count,
+                           const plot::panel_frame* frame, bool animated) {
     // "Panel (a), theta0 = pi/3," or "Panel 2 (title)" or "The plot".
     const std::string title = spoken_label(p.label.markup);
     std::string out = count > 1 ? "Panel " + std::to_string(index + 1) : "The plot";
@@ -165,6 +263,7 @@ std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::si
     for (const auto& s : p.data) {
         if (s.autoscale && !s.overlay && !s.label.empty()) shown.push_back(&s);
     }
+    if (p.frameless && spec.plot->name == "pendulum") return out + pendulum_drawing(spec, animated);
     if (p.frameless) {
         std::vector<std::string> names;
         for (const auto* s : shown) names.push_back(spoken_label(s->label.markup));
@@ -185,22 +284,40 @@ std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::si
         return out;
     }
     const std::string x = axis_name(p.x, "x"), y = axis_name(p.y, "y");
-    const auto [x0, x1] = data_range(p, true);
+    // The data as far as the axes show it (a curve that leaves them is cut at their
+    // limits), and the axes' own limits where they reach well past the data.
+    auto [x0, x1] = data_range(p, true);
     auto [y0, y1] = data_range(p, false);
+    std::string x_axis, y_axis;
+    if (frame) {
+        const auto visible = [](double& lo, double& hi, double axis_lo, double axis_hi, plot::tick_kind kind,
+                                std::string& axis) {
+            if (!(axis_hi > axis_lo)) return;
+            if (!(lo >= axis_lo)) lo = axis_lo;
+            if (!(hi <= axis_hi)) hi = axis_hi;
+            const double room = 0.15 * (axis_hi - axis_lo);
+            if (lo - axis_lo > room || axis_hi - hi > room) {
+                axis = " (its axis from " + spoken(axis_lo, kind) + " to " + spoken(axis_hi, kind) + ")";
+            }
+        };
+        if (p.x.kind == plot::scale::linear) visible(x0, x1, frame->x_lo, frame->x_hi, p.x.ticks, x_axis);
+        if (p.y.kind == plot::scale::linear) visible(y0, y1, frame->y_lo, frame->y_hi, p.y.ticks, y_axis);
+    }
     // A limit a millionth of the range from zero is zero (a coefficient that vanishes at 0).
     if (p.y.kind == plot::scale::linear) {
         if (std::fabs(y0) < 1e-6 * (y1 - y0)) y0 = 0;
         if (std::fabs(y1) < 1e-6 * (y1 - y0)) y1 = 0;
     }
     out += " shows " + y + " against " + x + ", " + x + " from " + spoken(x0, p.x.ticks) + " to " +
-           spoken(x1, p.x.ticks) + (p.x.kind == plot::scale::log ? " on a logarithmic scale" : "") + ", " + y +
-           " from " + spoken(y0, p.y.ticks) + " to " + spoken(y1, p.y.ticks) +
-           (p.y.kind == plot::scale::log ? " on a logarithmic scale" : "") + ".";
+           spoken(x1, p.x.ticks) + (p.x.kind == plot::scale::log ? " on a logarithmic scale" : "") + x_axis + ", " +
+           y + " from " + spoken(y0, p.y.ticks) + " to " + spoken(y1, p.y.ticks) +
+           (p.y.kind == plot::scale::log ? " on a logarithmic scale" : "") + y_axis + ".";
     if (!shown.empty()) {
         std::vector<std::string> items;
         for (const auto* s : shown) items.push_back(spoken_label(s->label.markup) + " (" + how_drawn(*s) + ")");
         out += std::string(shown.size() == 1 ? " One curve: " : " Curves: ") + join(items) + ".";
     }
+    if (spec.plot->name == "phase") out += phase_orbits(p, shown, x, y);
     // Where each approximation leaves the exact curve by a visible amount.
     const plot::series* exact = nullptr;
     for (const auto* s : shown) {
@@ -301,28 +418,47 @@ std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::si
     return out;
 }
 
+/// The panels' axes as the paper theme lays the figure out (the limits a reader sees);
+/// none if it cannot be laid out so.
+std::vector<plot::panel_frame> drawn_frames(const plot::figure& built) {
+    try {
+        static const plot::theme paper = load_theme("paper", {});
+        return plot::panel_frames(built, paper);
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
 }  // namespace
 
 figure_description describe(const entry& e, const plot::figure& built, const build_options& options) {
-    const auto panels = panels_with(e.spec, options);
+    return describe(e.spec, built, options);
+}
+
+figure_description describe(const figure_spec& spec, const plot::figure& built, const build_options& options) {
+    const auto panels = panels_with(spec, options);
     figure_description d;
-    d.alt = e.description() + ".";
+    d.alt = (spec.description.empty() ? plot::tex_to_plain(spec.title) : spec.description) + ".";
     if (built.panels.size() > 1) d.alt += " " + std::to_string(built.panels.size()) + " panels.";
-    if (e.spec.animation) {
-        const auto& a = *e.spec.animation;
+    if (spec.animation) {
+        const auto& a = *spec.animation;
         char buf[160];
         if (a.duration_s) {
             std::snprintf(buf, sizeof buf, "An animation of %g s at %g frames per second.", *a.duration_s, a.fps);
         } else {
-            std::snprintf(buf, sizeof buf, "An animation over %g periods of the exact motion, at %g frames per second.",
-                          a.periods.value_or(1.0), a.fps);
+            const double periods = a.periods.value_or(1.0);
+            std::snprintf(buf, sizeof buf, "An animation over %g period%s of the exact motion, at %g frames per second.",
+                          periods, periods == 1 ? "" : "s", a.fps);
         }
         d.text += std::string(buf) + " Its first frame:\n";
     }
     const std::string title = spoken_label(built.title.markup);
     if (!title.empty()) d.text = "Title: " + title + ".\n" + d.text;
+    const std::vector<plot::panel_frame> frames = drawn_frames(built);
     for (std::size_t i = 0; i < built.panels.size() && i < panels.size(); ++i) {
-        d.text += describe_panel(built.panels[i], panels[i], i, built.panels.size()) + "\n";
+        d.text += describe_panel(built.panels[i], panels[i], i, built.panels.size(),
+                                 i < frames.size() ? &frames[i] : nullptr, spec.animation.has_value()) +
+                  "\n";
     }
     return d;
 }

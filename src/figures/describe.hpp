@@ -26,4 +26,8 @@ inline constexpr double visible_fraction = 0.01;
 /// cross the spec's reference lines.
 figure_description describe(const entry& e, const plot::figure& built, const build_options& options = {});
 
+/// describe for a spec of its own (the figure's one-line description being the spec's
+/// description, or its title).
+figure_description describe(const figure_spec& spec, const plot::figure& built, const build_options& options = {});
+
 }  // namespace figures

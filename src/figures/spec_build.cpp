@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/spec_build.hpp"
 
+#include "figures/describe.hpp"
 #include "figures/errors.hpp"
 #include "figures/panel_support.hpp"
 #include "plot/tex_markup.hpp"
@@ -9,6 +10,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 namespace figures {
@@ -179,6 +182,19 @@ plot::figure build_figure(const figure_spec& spec, const build_options& options)
         }
         f.panels.push_back(std::move(panel));
     }
+    // The figure in words travels with it, into the files that can hold them; found when
+    // first asked for, once, from the figure as built here.
+    struct found {
+        std::once_flag once;
+        plot::figure_words words;
+    };
+    f.words = [whole = std::make_shared<const plot::figure>(f), memo = std::make_shared<found>(), spec, options] {
+        std::call_once(memo->once, [&] {
+            const figure_description d = describe(spec, *whole, options);
+            memo->words = {d.alt, d.text};
+        });
+        return memo->words;
+    };
     return f;
 }
 

@@ -5,6 +5,7 @@
 #include "figures/toml_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -65,8 +66,17 @@ struct flag_key {
 
 constexpr flag_key flag_keys[] = {{"opaque_vector_background", &plot::theme::opaque_vector_background}};
 
+/// How an SVG holds its text: glyph outlines, or <text> in the theme's fonts.
+constexpr std::array<std::pair<std::string_view, plot::svg_text_mode>, 2> svg_text_modes = {
+    {{"path", plot::svg_text_mode::path}, {"text", plot::svg_text_mode::text}}};
+
+/// What an SVG's width and height are in.
+constexpr std::array<std::pair<std::string_view, plot::svg_size_unit>, 3> svg_size_units = {
+    {{"pt", plot::svg_size_unit::pt}, {"px", plot::svg_size_unit::px}, {"viewbox", plot::svg_size_unit::viewbox}}};
+
 std::vector<std::string> all_keys() {
-    std::vector<std::string> keys = {"base", "description", "font_family", "palette", "styles", "size_px"};
+    std::vector<std::string> keys = {"base",    "description", "font_family", "palette",
+                                     "styles",  "size_px",     "svg_text",    "svg_size"};
     for (const auto& k : number_keys) keys.emplace_back(k.name);
     for (const auto& k : color_keys) keys.emplace_back(k.name);
     for (const auto& k : flag_keys) keys.emplace_back(k.name);
@@ -126,6 +136,8 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
     for (const auto& k : flag_keys) {
         if (auto v = r.boolean(doc, k.name)) t.*k.field = *v;
     }
+    if (auto v = r.choice(doc, "svg_text", svg_text_modes)) t.svg_text = *v;
+    if (auto v = r.choice(doc, "svg_size", svg_size_units)) t.svg_size = *v;
     if (const toml::node* n = doc.get("palette")) {
         const auto* a = n->as_array();
         if (!a || a->empty()) {

@@ -142,6 +142,12 @@ struct panel {
     plot::label overlay_label;            ///< text that changes per frame (a clock), top left inside, overlay pass
 };
 
+/// A figure in words, plain text, for readers who cannot see it.
+struct figure_words {
+    std::string alt;          ///< what it shows in a sentence or two: the SVG's <title> and PDF's Title where there is no title
+    std::string description;  ///< what it shows at length: the SVG's <desc> and the PDF's Subject
+};
+
 /// A grid of panels with a physical size.
 struct figure {
     int rows = 1;                  ///< grid rows
@@ -153,6 +159,9 @@ struct figure {
     std::vector<panel> peers;      ///< panels drawn alone in other files of this size (one panel each) whose frames these must match
     int place_in_set = 0;          ///< with peers: where this figure's one panel stands among them (0: first)
     plot::label title;             ///< drawn centred above the panels (theme's title_font_pt; 0 hides it)
+    /// The figure in words, made when a file that holds them (SVG, PDF) is first written:
+    /// finding them costs as much as building the figure. Empty: none.
+    std::function<figure_words()> words;
 };
 
 /// Escapes text for use inside Pango markup (&, <, >, quotes).

@@ -7,6 +7,7 @@
 #include "plot/handles.hpp"
 #include "plot/latex_overlay.hpp"
 #include "plot/render.hpp"
+#include "plot/svg_text.hpp"
 #include "plot/text.hpp"
 
 #include <cairo-pdf.h>
@@ -91,14 +92,25 @@ std::string render_vector(const figure& fig, const theme& th, std::string_view f
     return bytes;
 }
 
+/// The figure in words for a file's metadata, its title as drawn in place of its alt text.
+figure_words metadata_words(const figure& fig) {
+    figure_words words = fig.words ? fig.words() : figure_words{};
+    if (!fig.title.empty()) words.alt = markup_text(fig.title.markup);
+    return words;
+}
+
 std::string render_pdf(const figure& fig, const theme& th, const output_options&, std::vector<placed_text>* texts) {
-    const std::string title = fig.title.empty() ? std::string() : markup_text(fig.title.markup);
+    const figure_words words = metadata_words(fig);
+    const std::string& title = words.alt;
     return render_vector(
         fig, th, "pdf",
-        [&title](std::string* bytes, page_size size) {
+        [&title, &words](std::string* bytes, page_size size) {
             cairo_surface_t* s = cairo_pdf_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
             cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
             if (!title.empty()) cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_TITLE, title.c_str());
+            if (!words.description.empty()) {
+                cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_SUBJECT, words.description.c_str());
+            }
             return s;
         },
         texts);
@@ -271,25 +283,79 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
     return std::move(sink.bytes);
 }
 
-/// The SVG with a <title> first in its root element, as SVG's accessibility rules ask.
-std::string with_svg_title(std::string svg, const std::string& title) {
-    if (title.empty()) return svg;
+/// The SVG with a <title> and a <desc> first in its root element, as SVG's accessibility
+/// rules ask.
+std::string with_svg_words(std::string svg, const std::string& title, const std::string& description) {
+    std::string words;
+    // Markup's escapes are XML's.
+    if (!title.empty()) words += "\n<title>" + escape_markup(title) + "</title>";
+    if (!description.empty()) words += "\n<desc>" + escape_markup(description) + "</desc>";
+    if (words.empty()) return svg;
     const auto root = svg.find("<svg");
     const auto end = root == std::string::npos ? root : svg.find('>', root);
     if (end == std::string::npos) throw std::runtime_error("Cairo wrote an SVG without a root element");
-    // Markup's escapes are XML's.
-    svg.insert(end + 1, "\n<title>" + escape_markup(title) + "</title>");
+    svg.insert(end + 1, words);
+    return svg;
+}
+
+/// A number for an SVG attribute: at most three decimals, no trailing zeros.
+std::string svg_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f", v);
+    std::string s = buf;
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s == "-0" ? "0" : s;
+}
+
+/// The root element's size as the theme asks: points (as Cairo writes it), CSS pixels
+/// (96 to the inch), or none, the viewBox alone (Cairo's), so that the drawing fills the
+/// width a page gives it.
+std::string with_svg_size(std::string svg, page_size size, svg_size_unit unit) {
+    if (unit == svg_size_unit::pt) return svg;  // as Cairo writes it
+    const auto root = svg.find("<svg");
+    const auto end = root == std::string::npos ? root : svg.find('>', root);
+    if (end == std::string::npos) throw std::runtime_error("Cairo wrote an SVG without a root element");
+    std::string head = svg.substr(root, end - root);
+    for (const char* attribute : {" width=\"", " height=\""}) {
+        const auto at = head.find(attribute);
+        if (at == std::string::npos) throw std::runtime_error("Cairo wrote an SVG without a size");
+        const auto close = head.find('"', at + std::strlen(attribute));
+        head.erase(at, close + 1 - at);
+    }
+    const double px = 96.0 / 72.0;
+    std::string sized;
+    if (unit == svg_size_unit::px) {
+        sized = " width=\"" + svg_number(size.width_pt * px) + "\" height=\"" + svg_number(size.height_pt * px) + "\"";
+    }
+    if (head.find(" viewBox=\"") == std::string::npos) {
+        sized += " viewBox=\"0 0 " + svg_number(size.width_pt) + " " + svg_number(size.height_pt) + "\"";
+    }
+    const auto name_end = std::string("<svg").size();
+    head.insert(name_end, sized);
+    svg.replace(root, end - root, head);
     return svg;
 }
 
 std::string write_svg(const figure& fig, const theme& th, const output_options&) {
-    return with_svg_title(renumber_svg_ids(render_vector(fig, th, "svg", [](std::string* bytes, page_size size) {
-                              cairo_surface_t* s =
-                                  cairo_svg_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
-                              cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
-                              return s;
-                          })),
-                          fig.title.empty() ? std::string() : markup_text(fig.title.markup));
+    const bool as_text = th.svg_text == svg_text_mode::text;
+    std::vector<placed_text> texts;
+    std::string svg = renumber_svg_ids(render_vector(
+        fig, th, "svg",
+        [](std::string* bytes, page_size size) {
+            cairo_surface_t* s = cairo_svg_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
+            cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
+            return s;
+        },
+        as_text ? &texts : nullptr));
+    if (as_text) {
+        const auto close = svg.rfind("</svg>");
+        if (close == std::string::npos) throw std::runtime_error("Cairo wrote an SVG without an end");
+        svg.insert(close, svg_text_elements(texts, th));
+    }
+    svg = with_svg_size(std::move(svg), figure_size(fig, th), th.svg_size);
+    const figure_words words = metadata_words(fig);
+    return with_svg_words(std::move(svg), words.alt, words.description);
 }
 
 /// Cairo gives an EPS the bounding box of its ink; a page without a background would shrink

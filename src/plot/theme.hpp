@@ -17,6 +17,19 @@ struct named_style {
     std::optional<marker_style> marker;  ///< marker
 };
 
+/// How an SVG holds its text.
+enum class svg_text_mode {
+    path,  ///< outlines of the glyphs: looks the same everywhere, cannot be selected or searched
+    text,  ///< <text> elements in the theme's fonts: selectable, searchable, smaller
+};
+
+/// What an SVG's width and height are in.
+enum class svg_size_unit {
+    pt,       ///< points, the figure's size on paper
+    px,       ///< CSS pixels (96 to the inch), the same size on a screen
+    viewbox,  ///< none, only a viewBox: the figure fills the width the page gives it
+};
+
 /// How figures look: fonts, sizes in points, line widths, colours, sizes. Built-in themes
 /// and users' themes are style files (see figures/themes.hpp); the defaults here are the
 /// paper theme's.
@@ -44,6 +57,8 @@ struct theme {
     double dpi = 300;                 ///< PNG resolution where none is asked for
     int width_px = 0;                 ///< a raster size asked for in pixels (size_px), or 0
     int height_px = 0;                ///< a raster size asked for in pixels (size_px), or 0
+    svg_text_mode svg_text = svg_text_mode::path;  ///< how an SVG holds its text
+    svg_size_unit svg_size = svg_size_unit::pt;    ///< what an SVG's width and height are in
     std::set<std::string> given;      ///< keys a user's style file or the command line set: they win over a figure's own
 };
 

@@ -169,6 +169,13 @@ TEST(Describe, EveryBuiltinFigureInWords) {
         {"swing", "fading trail of its last 0.3 periods"},
         // A curve that leaves the axes is described as far as they show it.
         {"period", "T/T0 from 1 to 3"},
+        // Lines as the default theme draws them (its named styles), ranges said as read.
+        {"trajectory-lowest", "lowest order (solid line), and harmonic (dotted line)"},
+        {"c1-lowest", "polynomial (dotted line)"},
+        {"regimes", "theta from 0 to pi."},
+        // Several starts in one drawing, each with what it does.
+        {"over-the-top", "of 3 pendulums of one length"},
+        {"over-the-top", "E = 2 creeps up towards the top and never quite reaches it (separatrix)"},
     };
     for (const auto& f : facts) {
         const auto& e = figures::find(f.id);

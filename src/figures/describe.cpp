@@ -35,8 +35,11 @@ std::string spoken(double v, plot::tick_kind kind) {
             std::string out = (n == 1 ? "" : n == -1 ? "-" : std::to_string(n)) + "pi";
             return den == 1 ? out : out + "/" + std::to_string(den);
         }
-        std::snprintf(buf, sizeof buf, "%.3gpi", q);
-        return buf;
+        std::snprintf(buf, sizeof buf, "%.3g", q);
+        const std::string digits = buf;
+        // Near a whole pi, said as pi ("1pi" reads badly).
+        if (digits == "1" || digits == "-1") return (digits == "1" ? "" : "-") + std::string("pi");
+        return digits + "pi";
     }
     std::snprintf(buf, sizeof buf, "%.3g", v);
     std::string out = buf;
@@ -156,6 +159,23 @@ std::string spoken_amplitude(const amplitude& a) {
     return spoken(a.value, plot::tick_kind::multiples_of_pi);
 }
 
+/// What each start launched together does: "E = 2.6 goes over the top, round and round
+/// (rotation)"; empty without starts.
+std::string start_motions(const panel_spec& spec) {
+    std::vector<std::string> motions;
+    for (const auto& start : spec.starts) {
+        const char* what = "swings between two turning points";
+        if (start.motion.kind() == pendulum::regime::separatrix) {
+            what = "creeps up towards the top and never quite reaches it";
+        } else if (start.motion.kind() == pendulum::regime::rotation) {
+            what = "goes over the top, round and round";
+        }
+        motions.push_back(spoken_label(start.label) + " " + what + " (" +
+                          std::string(pendulum::row_of(start.motion.kind()).name) + ")");
+    }
+    return motions.empty() ? "" : " Started together: " + join(motions) + ".";
+}
+
 /// The pendulum drawing: what is drawn, each pendulum's rod and bob, where they start.
 std::string pendulum_drawing(const panel_spec& spec, bool animated) {
     static const char* const lines[] = {"solid", "solid", "dashed", "dotted", "dash-dot", "dash-dot-dot"};
@@ -169,7 +189,7 @@ std::string pendulum_drawing(const panel_spec& spec, bool animated) {
                       lines[static_cast<int>(line)] + " rod, " +
                       (bob == plot::marker_style::filled_circle ? "filled" : "open") + " bob)");
     }
-    const std::size_t n = spec.methods.size();
+    const std::size_t n = spec.methods.size() * std::max<std::size_t>(1, spec.starts.size());
     std::string out = " is a drawing, seen from the side, of " +
                       (n == 1 ? std::string("a pendulum") : std::to_string(n) + " pendulums of one length") +
                       " hanging from one pivot: " + join(who) + ".";
@@ -184,7 +204,10 @@ std::string pendulum_drawing(const panel_spec& spec, bool animated) {
         std::snprintf(buf, sizeof buf, "%g", spec.trail);
         out += " Each bob leaves a fading trail of its last " + std::string(buf) + " periods.";
     }
-    if (animated && n > 1) out += " They swing side by side, the approximations drifting from the exact pendulum.";
+    out += start_motions(spec);
+    if (animated && spec.methods.size() > 1) {
+        out += " They swing side by side, the approximations drifting from the exact pendulum.";
+    }
     return out;
 }
 
@@ -268,20 +291,7 @@ std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::si
         std::vector<std::string> names;
         for (const auto* s : shown) names.push_back(spoken_label(s->label.markup));
         out += " is a drawing" + (names.empty() ? "" : ", with " + join(names)) + ".";
-        // What each start launched from the bottom, or from a state, does.
-        std::vector<std::string> motions;
-        for (const auto& start : spec.starts) {
-            const char* what = "swings between two turning points";
-            if (start.motion.kind() == pendulum::regime::separatrix) {
-                what = "creeps up towards the top and never quite reaches it";
-            } else if (start.motion.kind() == pendulum::regime::rotation) {
-                what = "goes over the top, round and round";
-            }
-            motions.push_back(spoken_label(start.label) + " " + what + " (" +
-                              std::string(pendulum::row_of(start.motion.kind()).name) + ")");
-        }
-        if (!motions.empty()) out += " Started together: " + join(motions) + ".";
-        return out;
+        return out + start_motions(spec);
     }
     const std::string x = axis_name(p.x, "x"), y = axis_name(p.y, "y");
     // The data as far as the axes show it (a curve that leaves them is cut at their
@@ -435,7 +445,11 @@ figure_description describe(const entry& e, const plot::figure& built, const bui
     return describe(e.spec, built, options);
 }
 
-figure_description describe(const figure_spec& spec, const plot::figure& built, const build_options& options) {
+figure_description describe(const figure_spec& spec, const plot::figure& unstyled, const build_options& options) {
+    // The lines as the default theme draws them (its named styles: harmonic dotted), as
+    // the limits are the ones it lays out.
+    static const plot::theme paper = load_theme("paper", {});
+    const plot::figure built = plot::with_theme_styles(unstyled, paper);
     const auto panels = panels_with(spec, options);
     figure_description d;
     d.alt = (spec.description.empty() ? plot::tex_to_plain(spec.title) : spec.description) + ".";

@@ -240,7 +240,8 @@ bool same_legend_entries(const std::vector<panel>& panels) {
     return true;
 }
 
-/// The figure with the theme's named styles applied to the series that carry a style key.
+}  // namespace
+
 figure with_theme_styles(const figure& fig, const theme& th) {
     figure styled = fig;
     const auto style = [&](std::vector<panel>& panels) {
@@ -257,8 +258,6 @@ figure with_theme_styles(const figure& fig, const theme& th) {
     style(styled.peers);  // planned as their own files draw them
     return styled;
 }
-
-}  // namespace
 
 void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
                  std::vector<placed_text>* texts, bool vector, std::vector<panel_frame>* frames) {

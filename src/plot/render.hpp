@@ -60,6 +60,10 @@ void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size
                  std::vector<placed_text>* texts = nullptr, bool vector = false,
                  std::vector<panel_frame>* frames = nullptr);
 
+/// The figure with the theme's named styles applied to the series that carry a style key,
+/// as draw_figure draws it.
+figure with_theme_styles(const figure& fig, const theme& th);
+
 /// The frames of the figure's panels as draw_figure lays them out at the figure's size.
 std::vector<panel_frame> panel_frames(const figure& fig, const theme& th);
 

@@ -298,16 +298,6 @@ std::string with_svg_words(std::string svg, const std::string& title, const std:
     return svg;
 }
 
-/// A number for an SVG attribute: at most three decimals, no trailing zeros.
-std::string svg_number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    std::string s = buf;
-    while (s.back() == '0') s.pop_back();
-    if (s.back() == '.') s.pop_back();
-    return s == "-0" ? "0" : s;
-}
-
 /// The root element's size as the theme asks: points (as Cairo writes it), CSS pixels
 /// (96 to the inch), or none, the viewBox alone (Cairo's), so that the drawing fills the
 /// width a page gives it.

@@ -11,10 +11,7 @@
 
 namespace plot {
 
-namespace {
-
-/// A number for an SVG attribute: at most three decimals, no trailing zeros.
-std::string number(double v) {
+std::string svg_number(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3f", v);
     std::string s = buf;
@@ -22,6 +19,8 @@ std::string number(double v) {
     if (s.back() == '.') s.pop_back();
     return s == "-0" ? "0" : s;
 }
+
+namespace {
 
 std::string hex_color(const rgb& c) {
     const auto byte = [](double v) { return static_cast<unsigned>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
@@ -168,9 +167,9 @@ private:
         for (const run& r : runs_of(markup, pt)) {
             const double up = rise + r.rise;
             std::string attributes;
-            if (std::fabs(up - raised_) > 1e-9) attributes += " dy=\"" + number(raised_ - up) + "\"";
-            if (dx_ != 0) attributes += " dx=\"" + number(dx_) + "\"";
-            if (std::fabs(r.pt - size_) > 1e-9) attributes += " font-size=\"" + number(r.pt) + "\"";
+            if (std::fabs(up - raised_) > 1e-9) attributes += " dy=\"" + svg_number(raised_ - up) + "\"";
+            if (dx_ != 0) attributes += " dx=\"" + svg_number(dx_) + "\"";
+            if (std::fabs(r.pt - size_) > 1e-9) attributes += " font-size=\"" + svg_number(r.pt) + "\"";
             if (r.italic) attributes += " font-style=\"italic\"";
             if (r.bold) attributes += " font-weight=\"bold\"";
             if (!r.family.empty()) attributes += " font-family=\"" + css_families(r.family) + "\"";
@@ -201,9 +200,9 @@ std::string svg_text_elements(const std::vector<placed_text>& texts, const theme
     for (const placed_text& t : texts) {
         tspan_writer spans(engine, t.size_pt);
         spans.write(t.text.markup);
-        const std::string x = number(t.x);
-        const std::string y = number(t.y);
-        out += "<text x=\"" + x + "\" y=\"" + y + "\" font-size=\"" + number(t.size_pt) + "\"";
+        const std::string x = svg_number(t.x);
+        const std::string y = svg_number(t.y);
+        out += "<text x=\"" + x + "\" y=\"" + y + "\" font-size=\"" + svg_number(t.size_pt) + "\"";
         if (t.align > 0.75) {
             out += " text-anchor=\"end\"";
         } else if (t.align >= 0.25) {

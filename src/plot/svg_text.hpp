@@ -10,6 +10,9 @@
 
 namespace plot {
 
+/// A number for an SVG attribute: at most three decimals, no trailing zeros.
+std::string svg_number(double v);
+
 /// SVG <text> elements, one per text, at the places a LaTeX overlay would put them (the
 /// same anchors and alignment), in the theme's fonts and colour: markup's italics and bold
 /// as font styles, scripts as smaller <tspan>s moved up or down (stacked as the drawing

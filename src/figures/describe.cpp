@@ -4,6 +4,7 @@
 #include "figures/panel_support.hpp"
 #include "figures/spec_build.hpp"
 #include "figures/themes.hpp"
+#include "plot/geometry.hpp"
 #include "plot/render.hpp"
 
 #include <algorithm>
@@ -11,7 +12,6 @@
 #include <cctype>
 #include <cstdio>
 #include <numbers>
-#include <mutex>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -90,45 +90,9 @@ std::string spoken_label(const std::string& markup) {
 std::vector<std::pair<double, double>> dense(const plot::series& s) {
     std::vector<std::pair<double, double>> out;
     if (s.curve) {
-        // The parameters the plot layer's sampler takes first: its pieces, then halves of
-        // them, computed as it computes them, about 512 in all. The values go through the
-        // curve's memo, so that the drawing and these words evaluate a costly function (an
-        // error in MPFR) once between them.
-        const plot::curve& c = *s.curve;
-        const int pieces = std::clamp(c.pieces, 1, 1 << 16);
-        int halvings = 0;
-        while ((pieces << halvings) < 512 && halvings < 12) ++halvings;
-        std::vector<double> us;
-        const auto halve = [&](auto&& self, double a, double b, int depth) -> void {
-            if (depth == 0) return;
-            const double m = 0.5 * (a + b);
-            self(self, a, m, depth - 1);
-            us.push_back(m);
-            self(self, m, b, depth - 1);
-        };
-        double a = c.u0;
-        us.push_back(a);
-        for (int i = 1; i <= pieces; ++i) {
-            const double b = i == pieces ? c.u1 : c.u0 + (c.u1 - c.u0) * i / pieces;
-            halve(halve, a, b, halvings);
-            us.push_back(b);
-            a = b;
-        }
-        std::unique_lock<std::mutex> hold;
-        if (c.last) hold = std::unique_lock<std::mutex>(c.last->lock);
-        for (const double u : us) {
-            if (!c.last) {
-                out.push_back(c.at(u));
-                continue;
-            }
-            auto& values = c.last->values;
-            if (const auto known = values.find(u); known != values.end()) {
-                out.push_back(known->second);
-            } else {
-                out.push_back(c.at(u));
-                values.emplace(u, out.back());
-            }
-        }
+        // About 512 values, shared with the drawing through the curve's memo (a costly
+        // function, an error in MPFR, is evaluated once between them).
+        out = plot::first_values(*s.curve, 512);
     } else {
         for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) out.emplace_back(s.x[i], s.y[i]);
     }

@@ -67,6 +67,25 @@ std::shared_ptr<const curve> function_curve(double x0, double x1, std::function<
 
 namespace {
 
+// Values of a curve kept for another sampling, at most.
+constexpr std::size_t max_values = std::size_t{1} << 16;
+
+/// The curve at u, from `values` if it is there (kept there if there is room); `values`
+/// may be null. The caller holds the memo's lock.
+std::pair<double, double> remembered_at(const curve& c, std::unordered_map<double, std::pair<double, double>>* values,
+                                        double u) {
+    if (!values) return c.at(u);
+    if (const auto known = values->find(u); known != values->end()) return known->second;
+    const auto v = c.at(u);
+    if (values->size() < max_values) values->emplace(u, v);
+    return v;
+}
+
+/// The parameter of the i-th of `pieces` first pieces' ends, as the sampler cuts them.
+double piece_end(const curve& c, int i, int pieces) {
+    return i == pieces ? c.u1 : c.u0 + (c.u1 - c.u0) * i / pieces;
+}
+
 /// Recursive subdivision of a curve's parameter in device space.
 class curve_sampler {
 public:
@@ -84,7 +103,7 @@ public:
         point a = eval(c_.u0);
         emit(a);
         for (int i = 1; i <= pieces; ++i) {
-            const double u = i == pieces ? c_.u1 : c_.u0 + (c_.u1 - c_.u0) * i / pieces;
+            const double u = piece_end(c_, i, pieces);
             const point b = eval(u);
             piece_end_ = std::min(x_.size() + max_piece_points, max_points);
             refine(a, eval(0.5 * (a.u + u)), b, 0);
@@ -108,21 +127,10 @@ private:
     // and not), and what is left of it is drawn through the points at hand.
     static constexpr std::size_t max_piece_points = 4096;
     static constexpr std::size_t max_points = std::size_t{1} << 16;
-    // Values of the curve kept for another sampling, at most.
-    static constexpr std::size_t max_values = std::size_t{1} << 16;
     std::size_t piece_end_ = 0;  // the vertex count at which the current piece is spent
 
-    /// The curve at u, from the values known if it is there.
-    std::pair<double, double> at(double u) const {
-        if (!values_) return c_.at(u);
-        if (const auto known = values_->find(u); known != values_->end()) return known->second;
-        const auto v = c_.at(u);
-        if (values_->size() < max_values) values_->emplace(u, v);
-        return v;
-    }
-
     point eval(double u) const {
-        const auto [dx, dy] = at(u);
+        const auto [dx, dy] = remembered_at(c_, values_, u);
         const bool finite = std::isfinite(dx) && std::isfinite(dy);
         const double px = finite ? mx_(dx) : 0.0;
         const double py = finite ? my_(dy) : 0.0;
@@ -232,6 +240,32 @@ void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const 
         curve_sampler(c, mx, my, clip, tolerance, x, y, u, nullptr).run();
     }
     if (observer()) observer()(sampled_curve{&c, mx, my, clip, tolerance, x, y, u});
+}
+
+std::vector<std::pair<double, double>> first_values(const curve& c, int at_least) {
+    std::vector<std::pair<double, double>> out;
+    if (!c.at || !(c.u1 > c.u0)) return out;
+    const int pieces = std::clamp(c.pieces, 1, 1 << 16);
+    int halvings = 0;
+    while ((pieces << halvings) < at_least && halvings < 12) ++halvings;
+    std::vector<double> us;
+    const auto halve = [&](auto&& self, double a, double b, int depth) -> void {
+        if (depth == 0) return;
+        const double m = 0.5 * (a + b);  // as the sampler halves
+        self(self, a, m, depth - 1);
+        us.push_back(m);
+        self(self, m, b, depth - 1);
+    };
+    us.push_back(c.u0);
+    for (int i = 1; i <= pieces; ++i) {
+        halve(halve, us.back(), piece_end(c, i, pieces), halvings);
+        us.push_back(piece_end(c, i, pieces));
+    }
+    std::unique_lock<std::mutex> hold;
+    if (c.last) hold = std::unique_lock<std::mutex>(c.last->lock);
+    out.reserve(us.size());
+    for (const double u : us) out.push_back(remembered_at(c, c.last ? &c.last->values : nullptr, u));
+    return out;
 }
 
 void observe_sampled_curves(std::function<void(const sampled_curve&)> f) { observer() = std::move(f); }

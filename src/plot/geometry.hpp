@@ -64,6 +64,11 @@ device_series to_device(const series& s, const axis_map& mx, const axis_map& my)
 void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
                   std::vector<double>& x, std::vector<double>& y);
 
+/// The curve at the parameters sample_curve takes first (its pieces, then halves of them,
+/// at least `at_least` in all), through the curve's memo: another reader of the curve (a
+/// description) and its drawing evaluate a costly function once between them.
+std::vector<std::pair<double, double>> first_values(const curve& c, int at_least);
+
 /// A curve as sample_curve sampled it: the parameter of each vertex too.
 struct sampled_curve {
     const curve* c;

@@ -6,6 +6,7 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/mp_bessel.hpp"
 #include "pendulum/period_error.hpp"
 #include "process.hpp"
 #include "reference.hpp"
@@ -40,6 +41,42 @@ std::vector<near_pi_row> near_pi_rows() {
                         number(f.at(6))});
     }
     return rows;
+}
+
+// The Bessel functions of the MPFR errors against MPFR's own mpfr_jn, correctly rounded: within
+// 4 units of 2^-precision of the largest J (J_{n+1} included), and relative to themselves where they are not
+// near a zero, over arguments from 1e-300 to 4 (zeros of J_0 and J_1 included) and n up to 40.
+TEST(MpBessel, EveryOrderAgainstMpfr) {
+    const double xs[] = {1e-300, 1e-30, 2.5e-6, 1e-3, 0.1, 0.5, 1.0, 2.0, 2.404825557695773, 3.0,
+                         3.141592653589793, 3.6, 3.831705970207512, 4.0, -1.3};
+    for (const mpfr_prec_t bits : {53, 128, 256, 1152}) {
+        for (const double x0 : xs) {
+            for (const int n : {0, 1, 3, 8, 40}) {
+                const pendulum::mp::real x(x0, bits);
+                const auto j = pendulum::mp::bessel_j_upto(n, x);
+                ASSERT_EQ(j.size(), static_cast<std::size_t>(n) + 1);
+                pendulum::mp::real largest(bits);
+                std::vector<pendulum::mp::real> want;
+                for (int m = 0; m <= n + 1; ++m) {  // J_{n+1} too: near a zero of J_n it sets the scale
+                    want.push_back(pendulum::mp::bessel_j(m, x));
+                    if (pendulum::mp::abs(want.back()) > largest) largest = pendulum::mp::abs(want.back());
+                }
+                for (int m = 0; m <= n; ++m) {
+                    const auto& w = want[static_cast<std::size_t>(m)];
+                    const pendulum::mp::real diff = pendulum::mp::abs(j[static_cast<std::size_t>(m)] - w);
+                    const long scale = pendulum::mp::exponent(w) > pendulum::mp::exponent(largest) - 8
+                                           ? pendulum::mp::exponent(largest)
+                                           : pendulum::mp::exponent(w);
+                    const bool near_zero = pendulum::mp::exponent(w) < pendulum::mp::exponent(largest) - 8 &&
+                                           m <= 1 && std::fabs(x0) > 2;
+                    const long limit = (near_zero ? pendulum::mp::exponent(largest) : scale) - static_cast<long>(bits) + 2;
+                    EXPECT_TRUE(diff.is_zero() || pendulum::mp::exponent(diff) <= limit)
+                        << "J_" << m << "(" << x0 << ") with " << bits << " bits (n = " << n << "): off by 2^"
+                        << pendulum::mp::exponent(diff) << ", limit 2^" << limit;
+                }
+            }
+        }
+    }
 }
 
 TEST(NearPi, ExpressionsKeepTheirDistanceFromPiToTheLastBit) {

@@ -3,6 +3,7 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/bessel_series.hpp"
+#include "pendulum/extended_periods.hpp"
 #include "pendulum/gsl_support.hpp"
 #include "pendulum/mp_iteration.hpp"
 
@@ -43,6 +44,11 @@ fourier_solution lowest_order(const amplitude& a) {
     return {std::sqrt(besinc(theta0)), {theta0}};
 }
 
+long double lowest_period_extended(const amplitude& a) {
+    const long double theta0 = a.radians_extended();
+    return 1 / std::sqrt(2 * bessel_j_over_x_series(1, theta0));
+}
+
 fourier_solution first_order(const amplitude& a) {
     const double theta0 = a.radians();
     // Ratios J_n(theta0)/theta0 keep every digit down to the smallest subnormal amplitude.
@@ -52,34 +58,60 @@ fourier_solution first_order(const amplitude& a) {
     return {std::sqrt(2.0 * j1 * (1.0 + eta)), {c1, eta * c1}};
 }
 
-fourier_solution second_order(const amplitude& amp) {
+long double first_period_extended(const amplitude& a) {
+    const long double theta0 = a.radians_extended();
+    const long double j1 = bessel_j_over_x_series(1, theta0);
+    const long double eta = -bessel_j_over_x_series(3, theta0) / (9 * j1);
+    return 1 / std::sqrt(2 * j1 * (1 + eta));
+}
+
+namespace {
+
+/// The second order in extended precision: lambda = (w/w0)^2 and C_{2k+1}/theta0.
+struct second_order_parts {
+    long double theta0;
+    long double lambda;
+    long double C[3];
+};
+
+second_order_parts second_order_extended(const amplitude& amp) {
     // Every step in extended precision, each Bessel value by its series, and the results
     // rounded once: in doubles the chain of eight Bessel values (a few ulps each), eta and
     // the projection cost up to 10 ulps in the period.
     using real = long double;
+    second_order_parts p{};
     const real theta0 = amp.radians_extended();
+    p.theta0 = theta0;
     const real j1 = bessel_j_over_x_series(1, theta0);
     const real eta = -bessel_j_over_x_series(3, theta0) / (9 * j1);
     // The projection and lambda in units of theta0: a/theta0 and b/theta0 are of order one.
     const real a_ratio = 1 / (1 + eta);
     const real b_ratio = eta / (1 + eta);
     const real a = theta0 * a_ratio;
-    real C[3];
     real sum = 0;
     for (int k = 0; k < 3; ++k) {
         // J_{2k-2} with J_{-2} = J_2 (integer-order reflection).
         const real inner = 2 * bessel_j_over_x_series(2 * k + 1, a) * a_ratio +
                            b_ratio * (bessel_j_series(2 * k + 4, a) - bessel_j_series(std::abs(2 * k - 2), a));
-        C[k] = (k % 2 == 0) ? inner : -inner;
-        sum += C[k] / ((2 * k + 1) * (2 * k + 1));
+        p.C[k] = (k % 2 == 0) ? inner : -inner;
+        sum += p.C[k] / ((2 * k + 1) * (2 * k + 1));
     }
-    const real lambda = sum;
-    fourier_solution s{static_cast<double>(std::sqrt(lambda)), {}};
+    p.lambda = sum;
+    return p;
+}
+
+}  // namespace
+
+fourier_solution second_order(const amplitude& amp) {
+    const auto p = second_order_extended(amp);
+    fourier_solution s{static_cast<double>(std::sqrt(p.lambda)), {}};
     for (int k = 0; k < 3; ++k) {
-        s.coefficients.push_back(static_cast<double>(theta0 * (C[k] / ((2 * k + 1) * (2 * k + 1) * lambda))));
+        s.coefficients.push_back(static_cast<double>(p.theta0 * (p.C[k] / ((2 * k + 1) * (2 * k + 1) * p.lambda))));
     }
     return s;
 }
+
+long double second_period_extended(const amplitude& amp) { return 1 / std::sqrt(second_order_extended(amp).lambda); }
 
 fourier_solution polynomial(const amplitude& a) {
     const double theta0 = a.radians();

@@ -2,6 +2,7 @@
 #include "pendulum/exact.hpp"
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/extended_periods.hpp"
 #include "pendulum/gsl_support.hpp"
 
 #include <gsl/gsl_errno.h>
@@ -29,9 +30,6 @@ double agm(double a, double b) {
     return 0.5 * (a + b);
 }
 
-namespace {
-
-/// The AGM in extended precision (a, b > 0 checked by the caller).
 long double agm_extended(long double a, long double b) {
     for (int i = 0; i < 64 && std::fabs(a - b) > 1e-19L * a; ++i) {
         const long double next = 0.5L * (a + b);
@@ -41,7 +39,9 @@ long double agm_extended(long double a, long double b) {
     return 0.5L * (a + b);
 }
 
-}  // namespace
+long double exact_period_extended(const pendulum::amplitude& theta0) {
+    return 1 / agm_extended(1, theta0.kp_extended());
+}
 
 jacobi_values jacobi(double u, double kp) {
     if (!std::isfinite(u)) throw domain_error("jacobi needs a finite argument, got " + format_double(u));

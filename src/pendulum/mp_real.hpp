@@ -44,6 +44,12 @@ public:
         mpfr_init2(v_, bits);
         mpfr_set_d(v_, x, MPFR_RNDN);
     }
+    /// `x` rounded to `bits` of precision.
+    real(const real& x, mpfr_prec_t bits) {
+        detail::free_caches_at_thread_exit();
+        mpfr_init2(v_, bits);
+        mpfr_set(v_, x.v_, MPFR_RNDN);
+    }
     real(const real& o) {
         detail::free_caches_at_thread_exit();
         mpfr_init2(v_, mpfr_get_prec(o.v_));

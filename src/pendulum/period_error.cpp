@@ -7,7 +7,9 @@
 
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
+#include "pendulum/extended_periods.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/mp_bessel.hpp"
 #include "pendulum/mp_iteration.hpp"
 #include "pendulum/mp_real.hpp"
 #include "pendulum/period_formulas.hpp"
@@ -30,6 +32,11 @@ using mp::real;
 
 /// Above this |T_m/T - 1| the doubles' difference is right to 1e-13 relative.
 constexpr double double_enough = 1e-2;
+
+/// Periods in extended precision are within about 12 units of 2^-64 (6.5e-19) of the truth
+/// (both T_m and T), so their difference is right to 1e-13 relative from this error up.
+constexpr long double extended_enough = 1e-5L;
+static_assert(std::numeric_limits<long double>::digits >= 64, "the middle tier needs a 64-bit significand");
 
 /// Precisions tried in turn; the last one decides that an error is below 1e-300 (2^-997).
 constexpr std::array<mpfr_prec_t, 4> precisions = {128, 256, 512, 1152};
@@ -70,10 +77,19 @@ period_error known(const real& error) {
 
 using mp_period = real (*)(const mp_amplitude& x, int n);
 
-/// The error of a closed-form period: doubles where they suffice, MPFR otherwise.
-period_error closed_form_error(const amplitude& a, int n, double (*period)(const amplitude&, int), mp_period f) {
+/// A period in extended precision, for the methods that have one.
+using extended_period = long double (*)(const amplitude& a);
+
+/// The error of a closed-form period: doubles where they suffice, then extended precision
+/// where the method has it and it suffices, MPFR otherwise.
+period_error closed_form_error(const amplitude& a, int n, double (*period)(const amplitude&, int), mp_period f,
+                               extended_period extended = nullptr) {
     const double fast = period(a, n) / period_ratio(a) - 1;
     if (std::fabs(fast) >= double_enough) return {period_error::kind::value, fast};
+    if (extended) {
+        const long double error = extended(a) / exact_period_extended(a) - 1;
+        if (std::fabs(error) >= extended_enough) return {period_error::kind::value, static_cast<double>(error)};
+    }
     for (const mpfr_prec_t bits : precisions) {
         const mp_amplitude x = exact_amplitude(a, bits);
         const real error = f(x, n) / exact_period(x) - 1.0;
@@ -84,7 +100,7 @@ period_error closed_form_error(const amplitude& a, int n, double (*period)(const
 
 real harmonic_mp(const mp_amplitude& x, int) { return real(1.0, x.theta.precision()); }
 
-real lowest_mp(const mp_amplitude& x, int) { return mp::sqrt(x.theta / (2.0 * mp::bessel_j(1, x.theta))); }
+real lowest_mp(const mp_amplitude& x, int) { return mp::sqrt(x.theta / (2.0 * mp::bessel_j_upto(1, x.theta)[1])); }
 
 /// eta = -J3/(9 J1) and J1/theta0 of the first order.
 struct first_order_parts {
@@ -93,8 +109,8 @@ struct first_order_parts {
 };
 
 first_order_parts first_parts(const mp_amplitude& x) {
-    const real j1 = mp::bessel_j(1, x.theta);
-    return {j1 / x.theta, -mp::bessel_j(3, x.theta) / (9.0 * j1)};
+    const auto j = mp::bessel_j_upto(3, x.theta);
+    return {j[1] / x.theta, -j[3] / (9.0 * j[1])};
 }
 
 real first_mp(const mp_amplitude& x, int) {
@@ -108,10 +124,11 @@ real second_mp(const mp_amplitude& x, int) {
     const real a = x.theta / (1.0 + p.eta);
     const real a_ratio = 1.0 / (1.0 + p.eta);
     const real b_ratio = p.eta / (1.0 + p.eta);
+    const auto j = mp::bessel_j_upto(8, a);
     real lambda(x.theta.precision());
     for (int k = 0; k < 3; ++k) {
-        const real inner = 2.0 * mp::bessel_j(2 * k + 1, a) / a * a_ratio +
-                           b_ratio * (mp::bessel_j(2 * k + 4, a) - mp::bessel_j(std::abs(2 * k - 2), a));
+        const auto at = [&](int m) -> const real& { return j[static_cast<std::size_t>(m)]; };
+        const real inner = 2.0 * at(2 * k + 1) / a * a_ratio + b_ratio * (at(2 * k + 4) - at(std::abs(2 * k - 2)));
         const real term = inner / static_cast<double>((2 * k + 1) * (2 * k + 1));
         lambda = k % 2 == 0 ? lambda + term : lambda - term;
     }
@@ -421,13 +438,19 @@ period_error harmonic_period_error(const amplitude& a, int n) {
     return closed_form_error(a, n, [](const amplitude&, int) { return 1.0; }, harmonic_mp);
 }
 period_error lowest_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude& t, int) { return lowest_order(t).period_ratio(); }, lowest_mp);
+    return closed_form_error(
+        a, n, [](const amplitude& t, int) { return lowest_order(t).period_ratio(); }, lowest_mp,
+        lowest_period_extended);
 }
 period_error first_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude& t, int) { return first_order(t).period_ratio(); }, first_mp);
+    return closed_form_error(
+        a, n, [](const amplitude& t, int) { return first_order(t).period_ratio(); }, first_mp,
+        first_period_extended);
 }
 period_error second_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude& t, int) { return second_order(t).period_ratio(); }, second_mp);
+    return closed_form_error(
+        a, n, [](const amplitude& t, int) { return second_order(t).period_ratio(); }, second_mp,
+        second_period_extended);
 }
 period_error polynomial_period_error(const amplitude& a, int n) {
     return closed_form_error(a, n, [](const amplitude& t, int) { return polynomial(t).period_ratio(); }, polynomial_mp);

@@ -33,6 +33,11 @@ AMPLITUDES = [
     ("pi - 1e-17", lambda: mp.pi - f("1e-17")),
     ("pi - 1e-300", lambda: mp.pi - f("1e-300")),
 ]
+# The Bessel methods on a grid of amplitudes, where their errors pass from 1e-2 down to
+# 1e-12: the three ways the program computes an error (doubles, extended precision, MPFR)
+# each meet some of them.
+DENSE = [f"{i / 20:.2f}" for i in range(1, 63)]
+DENSE_METHODS = ["lowest", "first", "second"]
 AGM_STEPS = [1, 2, 3, 5, 10]
 SERIES_TERMS = [1, 2, 3, 10, 20]
 
@@ -89,6 +94,11 @@ def main():
             e = period / exact - 1
             shown = "below" if abs(e) < f("1e-300") else mp.nstr(e, 20, min_fixed=1, max_fixed=0)
             print(f"{text},{name},{shown}")
+    for text in DENSE:
+        row, exact = periods(f(text))
+        for name in DENSE_METHODS:
+            e = row[name] / exact - 1
+            print(f"{text},{name},{mp.nstr(e, 20, min_fixed=1, max_fixed=0)}")
 
 
 if __name__ == "__main__":

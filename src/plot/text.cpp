@@ -6,6 +6,8 @@
 #include <fontconfig/fontconfig.h>
 #include <pango/pangofc-fontmap.h>
 
+#include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -70,6 +72,15 @@ PangoFontMap* thread_font_map() {
         return m;
     }();
     return map.get();
+}
+
+text_shaper& text_shaper::for_thread(const std::string& family) {
+    // Made after the font map, so destroyed before it at the thread's end.
+    thread_font_map();
+    thread_local std::map<std::string, std::unique_ptr<text_shaper>> shapers;
+    auto it = shapers.find(family);
+    if (it == shapers.end()) it = shapers.emplace(family, std::make_unique<text_shaper>(family)).first;
+    return *it->second;
 }
 
 bool first_family_resolves(PangoContext* context, const std::string& font_family) {

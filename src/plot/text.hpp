@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -51,11 +52,17 @@ struct placed_text {
     bool rotate = false; ///< turned by 90 degrees (reading upwards)
 };
 
-/// Text set with Pango in one font family, measured and drawn in points.
-class text_engine {
+/// Texts shaped with Pango in one font family, in points, and kept: a thread's shaper of a
+/// family serves every figure and format the thread draws, so that the PNG, the PDF and the
+/// words of a figure shape each of its texts once.
+class text_shaper {
 public:
-    text_engine(cairo_t* cr, const std::string& family)
-        : cr_(cr), family_(family), context_(pango_font_map_create_context(thread_font_map())) {
+    /// The calling thread's shaper of `family`; its first family must be installed.
+    static text_shaper& for_thread(const std::string& family);
+
+    /// A shaper of `family` in this thread's font map.
+    explicit text_shaper(const std::string& family)
+        : family_(family), context_(pango_font_map_create_context(thread_font_map())) {
         // Text is measured and shaped in points alone, never in the target's pixels: the
         // context keeps the identity matrix whatever cr's scale (a PNG at any dpi, a PDF),
         // glyph positions are not rounded to device units, and there is no hinting, so that
@@ -71,61 +78,6 @@ public:
         check_font_installed();
     }
 
-    /// Logical width and height of the markup at `size` points.
-    std::pair<double, double> measure(const std::string& markup, double size) const {
-        const text_box& b = box(markup, size);
-        return {b.width, b.ascent + b.descent};
-    }
-
-    /// The inked part of the markup at `size` points, relative to the left end of its
-    /// baseline (y down): x, y of the top left corner, width and height.
-    text_ink ink(const std::string& markup, double size) const {
-        const text_box& b = box(markup, size);
-        return {b.ink_x0, b.ink_y0, b.ink_x1 - b.ink_x0, b.ink_y1 - b.ink_y0};
-    }
-
-    /// Draws markup with its box anchored at (x, y): ax, ay in {0, 0.5, 1} pick the
-    /// anchor (left/centre/right, top/middle/bottom). `rotate` turns it by -90 degrees.
-    void draw(const label& text, double size, double x, double y, double ax, double ay,
-              bool rotate = false) const {
-        const text_box& b = box(text.markup, size);
-        if (sink_) {
-            // The anchor on the baseline; LaTeX aligns the text about it by its own width.
-            const double down = -ay * (b.ascent + b.descent) + b.ascent;
-            sink_->push_back({text, size, rotate ? x + down : x, rotate ? y : y + down, ax, rotate});
-            return;
-        }
-        cairo_save(cr_);
-        cairo_translate(cr_, x, y);
-        if (rotate) cairo_rotate(cr_, -M_PI / 2);
-        show(b, -ax * b.width, -ay * (b.ascent + b.descent) + b.ascent);
-        cairo_restore(cr_);
-    }
-
-    /// Draws markup with the left end of its baseline at (x, y), turned by -90 degrees
-    /// about that point with `rotate`.
-    void draw_on_baseline(const label& text, double size, double x, double y, bool rotate = false,
-                          double align = 0) const {
-        const std::string& markup = text.markup;
-        if (sink_) {
-            // The ink's left end, centre or right end as the anchor, so that LaTeX's own
-            // width is what is aligned.
-            const text_ink i = ink(markup, size);
-            const double along = i.x + align * i.w;
-            sink_->push_back({text, size, rotate ? x : x + along, rotate ? y - along : y, align, rotate});
-            return;
-        }
-        cairo_save(cr_);
-        cairo_translate(cr_, x, y);
-        if (rotate) cairo_rotate(cr_, -M_PI / 2);
-        show(box(markup, size), 0, 0);
-        cairo_restore(cr_);
-    }
-
-    /// Texts are recorded in `sink` instead of drawn (null: drawn).
-    void record_into(std::vector<placed_text>* sink) { sink_ = sink; }
-
-private:
     /// A label set as TeX sets math: runs of text on the baseline, and after them
     /// superscripts and subscripts at script size, stacked, each a Pango layout.
     struct text_box {
@@ -142,21 +94,22 @@ private:
         double ink_x0 = 0, ink_y0 = 0, ink_x1 = 0, ink_y1 = 0;
     };
 
-    void show(const text_box& b, double x, double y) const {
-        for (const auto& p : b.parts) {
-            cairo_move_to(cr_, x + p.x, y + p.y - p.baseline);
-            // Metrics are unhinted, so the layout made for measuring draws unchanged here.
-            pango_cairo_show_layout(cr_, p.layout.get());
-        }
-    }
 
-    /// The shaped box of markup at size; each text is shaped once per figure.
-    const text_box& box(const std::string& markup, double size) const {
+    /// The shaped box of markup at size, shaped once while it is kept (the most recent
+    /// `kept_boxes` texts are; an animation's changing clock does not grow the memory).
+    std::shared_ptr<const text_box> box(const std::string& markup, double size) {
         auto key = std::make_pair(markup, size);
         auto it = boxes_.find(key);
-        if (it == boxes_.end()) it = boxes_.emplace(std::move(key), make_box(markup, size)).first;
-        return it->second;
+        if (it != boxes_.end()) return it->second;
+        auto made = std::make_shared<const text_box>(make_box(markup, size));
+        if (boxes_.size() >= kept_boxes) boxes_.clear();
+        boxes_.emplace(std::move(key), made);
+        return made;
     }
+
+private:
+    static constexpr std::size_t kept_boxes = 4096;
+
 
     text_box make_box(const std::string& markup, double size) const {
         const script_metrics m;
@@ -317,11 +270,85 @@ private:
         }
     }
 
-    cairo_t* cr_;
-    std::vector<placed_text>* sink_ = nullptr;
     std::string family_;
     gobject_ptr<PangoContext> context_;
-    mutable std::map<std::pair<std::string, double>, text_box> boxes_;
+    std::map<std::pair<std::string, double>, std::shared_ptr<const text_box>> boxes_;
+};
+
+/// Text set with Pango in one font family, measured and drawn in points.
+class text_engine {
+public:
+    /// An engine drawing into `cr` with this thread's shaper of `family`.
+    text_engine(cairo_t* cr, const std::string& family) : cr_(cr), shaper_(&text_shaper::for_thread(family)) {}
+
+    /// Logical width and height of the markup at `size` points.
+    std::pair<double, double> measure(const std::string& markup, double size) const {
+        const auto b = shaper_->box(markup, size);
+        return {b->width, b->ascent + b->descent};
+    }
+
+    /// The inked part of the markup at `size` points, relative to the left end of its
+    /// baseline (y down): x, y of the top left corner, width and height.
+    text_ink ink(const std::string& markup, double size) const {
+        const auto b = shaper_->box(markup, size);
+        return {b->ink_x0, b->ink_y0, b->ink_x1 - b->ink_x0, b->ink_y1 - b->ink_y0};
+    }
+
+    /// Draws markup with its box anchored at (x, y): ax, ay in {0, 0.5, 1} pick the
+    /// anchor (left/centre/right, top/middle/bottom). `rotate` turns it by -90 degrees.
+    void draw(const label& text, double size, double x, double y, double ax, double ay,
+              bool rotate = false) const {
+        const auto b = shaper_->box(text.markup, size);
+        if (sink_) {
+            // The anchor on the baseline; LaTeX aligns the text about it by its own width.
+            const double down = -ay * (b->ascent + b->descent) + b->ascent;
+            sink_->push_back({text, size, rotate ? x + down : x, rotate ? y : y + down, ax, rotate});
+            return;
+        }
+        cairo_save(cr_);
+        cairo_translate(cr_, x, y);
+        if (rotate) cairo_rotate(cr_, -M_PI / 2);
+        show(*b, -ax * b->width, -ay * (b->ascent + b->descent) + b->ascent);
+        cairo_restore(cr_);
+    }
+
+    /// Draws markup with the left end of its baseline at (x, y), turned by -90 degrees
+    /// about that point with `rotate`.
+    void draw_on_baseline(const label& text, double size, double x, double y, bool rotate = false,
+                          double align = 0) const {
+        const std::string& markup = text.markup;
+        if (sink_) {
+            // The ink's left end, centre or right end as the anchor, so that LaTeX's own
+            // width is what is aligned.
+            const text_ink i = ink(markup, size);
+            const double along = i.x + align * i.w;
+            sink_->push_back({text, size, rotate ? x : x + along, rotate ? y - along : y, align, rotate});
+            return;
+        }
+        cairo_save(cr_);
+        cairo_translate(cr_, x, y);
+        if (rotate) cairo_rotate(cr_, -M_PI / 2);
+        show(*shaper_->box(markup, size), 0, 0);
+        cairo_restore(cr_);
+    }
+
+    /// Texts are recorded in `sink` instead of drawn (null: drawn).
+    void record_into(std::vector<placed_text>* sink) { sink_ = sink; }
+
+private:
+    using text_box = text_shaper::text_box;
+
+    void show(const text_box& b, double x, double y) const {
+        for (const auto& p : b.parts) {
+            cairo_move_to(cr_, x + p.x, y + p.y - p.baseline);
+            // Metrics are unhinted, so the layout made for measuring draws unchanged here.
+            pango_cairo_show_layout(cr_, p.layout.get());
+        }
+    }
+
+    cairo_t* cr_;
+    std::vector<placed_text>* sink_ = nullptr;
+    text_shaper* shaper_;
 };
 
 }  // namespace plot

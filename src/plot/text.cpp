@@ -57,6 +57,9 @@ FcConfig* private_font_config() {
             !FcConfigBuildFonts(c)) {
             throw std::runtime_error("cannot set up the font configuration");
         }
+        // Fontconfig's current configuration too: Pango's start-up (FcInit) then finds one
+        // and does not read the machine's configuration and fonts a second time.
+        if (!FcConfigSetCurrent(c)) throw std::runtime_error("cannot set up the font configuration");
         return c;
     }();
     return config;
@@ -66,9 +69,10 @@ FcConfig* private_font_config() {
 
 PangoFontMap* thread_font_map() {
     thread_local const gobject_ptr<PangoFontMap> map = [] {
+        FcConfig* const config = private_font_config();  // before Pango's own start-up
         gobject_ptr<PangoFontMap> m(pango_cairo_font_map_new_for_font_type(CAIRO_FONT_TYPE_FT));
         if (!m.get()) throw std::runtime_error("cannot create a Pango font map");
-        pango_fc_font_map_set_config(PANGO_FC_FONT_MAP(m.get()), private_font_config());
+        pango_fc_font_map_set_config(PANGO_FC_FONT_MAP(m.get()), config);
         return m;
     }();
     return map.get();

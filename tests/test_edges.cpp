@@ -7,6 +7,7 @@
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
 #include "process.hpp"
+#include "reference.hpp"
 
 #include <gtest/gtest.h>
 
@@ -335,6 +336,23 @@ TEST(Claims, EveryMeasuredNumberIsPinned) {
     }
     EXPECT_EQ(claimed(rows, "first order N without a period (lambda < 0) at pi - 1e-6"), 6);
     for (const auto& r : rows) EXPECT_FALSE(r.verdict.empty()) << r.quantity;
+}
+
+// The claims print 17 digits: their period errors are the correctly rounded ones (MPFR
+// throughout), to the one rounding of the factor 100, at the doubles the claims use
+// (tests/data/make_claims_errors.py).
+TEST(Claims, PeriodErrorsRightToTheLastDigit) {
+    const auto rows = pendulum::paper_claims();
+    const auto ref = test_support::read_reference_text("claims_errors.csv");
+    ASSERT_EQ(ref.size(), 6u);
+    for (std::size_t i = 1; i < ref.size(); ++i) {
+        const std::string quantity =
+            (ref[i].at(0) == "second" ? "second-order" : ref[i].at(0) + "-order") + " T/T - 1 at " + ref[i].at(1);
+        const double want = std::stod(ref[i].at(2));
+        const double got = claimed(rows, quantity);
+        EXPECT_LE(std::fabs(got - want), std::fabs(want) * std::numeric_limits<double>::epsilon())
+            << quantity << ": " << pendulum::format_double(got) << ", want " << ref[i].at(2);
+    }
 }
 
 TEST(Claims, TheLargestDeviationIsTheLargestOfADenseScan) {

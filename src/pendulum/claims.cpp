@@ -126,6 +126,7 @@ double max_deviation_over_period(const std::string& method, double theta0) {
 }
 
 std::vector<claim_measure> paper_claims() {
+    const correctly_rounded_errors every_digit;  // the claims print 17 digits
     std::vector<claim_measure> rows;
     const auto add = [&](const char* claim, const char* where, const char* statement, const char* quantity,
                          double value, const char* unit, const char* verdict) {

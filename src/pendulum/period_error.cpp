@@ -41,6 +41,12 @@ static_assert(std::numeric_limits<long double>::digits >= 64, "the middle tier n
 /// Precisions tried in turn; the last one decides that an error is below 1e-300 (2^-997).
 constexpr std::array<mpfr_prec_t, 4> precisions = {128, 256, 512, 1152};
 
+/// The iteration's precisions, closer together: a run stops at the first level its bits
+/// cannot resolve, and the next run, which repeats every level, costs less the fewer bits
+/// it needs (the convergence figure's errors down to 4e-42 need 200 bits).
+constexpr std::array<mpfr_prec_t, 7> iteration_precisions = {128, 192, 256, 384, 512, 768, 1152};
+static_assert(iteration_precisions.back() == precisions.back(), "both end where an error is below 1e-300");
+
 /// A difference computed with `bits` is kept when it is this many bits above their rounding.
 constexpr long margin_bits = 56;
 
@@ -52,7 +58,9 @@ struct mp_amplitude {
 };
 
 mp_amplitude exact_amplitude(const amplitude& a, mpfr_prec_t bits) {
-    if (a.near_pi()) {
+    // From d where it is the nearer of the two to the exact amplitude; a double theta0 is
+    // the exact amplitude itself (its d is rounded).
+    if (a.near_pi() && !a.exact_radians()) {
         const real d(a.from_pi(), bits);
         const real kp = mp::sin(d / 2.0);
         return {mp::pi(bits) - d, kp, 1.0 - kp};
@@ -77,6 +85,19 @@ period_error known(const real& error) {
 
 using mp_period = real (*)(const mp_amplitude& x, int n);
 
+/// How many correctly_rounded_errors live in this thread.
+thread_local int correctly_rounded_depth = 0;
+
+/// The error of a closed-form period in MPFR, correctly rounded.
+period_error mp_closed_form_error(const amplitude& a, int n, mp_period f) {
+    for (const mpfr_prec_t bits : precisions) {
+        const mp_amplitude x = exact_amplitude(a, bits);
+        const real error = f(x, n) / exact_period(x) - 1.0;
+        if (resolved(error, bits)) return known(error);
+    }
+    return {period_error::kind::below_limit, 0};
+}
+
 /// A period in extended precision, for the methods that have one.
 using extended_period = long double (*)(const amplitude& a);
 
@@ -84,18 +105,14 @@ using extended_period = long double (*)(const amplitude& a);
 /// where the method has it and it suffices, MPFR otherwise.
 period_error closed_form_error(const amplitude& a, int n, double (*period)(const amplitude&, int), mp_period f,
                                extended_period extended = nullptr) {
+    if (correctly_rounded_depth > 0) return mp_closed_form_error(a, n, f);
     const double fast = period(a, n) / period_ratio(a) - 1;
     if (std::fabs(fast) >= double_enough) return {period_error::kind::value, fast};
     if (extended) {
         const long double error = extended(a) / exact_period_extended(a) - 1;
         if (std::fabs(error) >= extended_enough) return {period_error::kind::value, static_cast<double>(error)};
     }
-    for (const mpfr_prec_t bits : precisions) {
-        const mp_amplitude x = exact_amplitude(a, bits);
-        const real error = f(x, n) / exact_period(x) - 1.0;
-        if (resolved(error, bits)) return known(error);
-    }
-    return {period_error::kind::below_limit, 0};
+    return mp_closed_form_error(a, n, f);
 }
 
 real harmonic_mp(const mp_amplitude& x, int) { return real(1.0, x.theta.precision()); }
@@ -380,10 +397,18 @@ std::vector<period_error> iterated_period_errors(const amplitude& a, int order, 
     }
     std::vector<period_error> out(static_cast<std::size_t>(order + 1), {period_error::kind::below_limit, 0});
     std::vector<bool> done(out.size(), false);
-    for (const mpfr_prec_t bits : precisions) {
+    for (const mpfr_prec_t bits : iteration_precisions) {
         const mp_amplitude x = exact_amplitude(a, bits);
         const real exact = exact_period(x);
-        const auto lambdas = mp_lambdas(x, order, bits);
+        // Where more bits will follow, the levels stop at the first whose error these
+        // cannot resolve: the run with more bits computes it and the rest again.
+        const bool more_follow =
+            bits != iteration_precisions.back() && !(std::ldexp(1.0, -static_cast<int>(bits - margin_bits)) < floor);
+        const auto beyond_these_bits = [&](const real& lambda) {
+            return more_follow && lambda.sign() > 0 && !resolved(1.0 / (mp::sqrt(lambda) * exact) - 1.0, bits);
+        };
+        auto lambdas = mp_lambdas(x, order, bits, beyond_these_bits);
+        lambdas.resize(out.size());
         bool all = true;
         for (std::size_t n = 0; n < out.size(); ++n) {
             if (done[n]) continue;
@@ -432,6 +457,9 @@ int first_level_within(const amplitude& a, double tolerance, int up_to) {
     return -1;
 }
 
+correctly_rounded_errors::correctly_rounded_errors() { ++correctly_rounded_depth; }
+correctly_rounded_errors::~correctly_rounded_errors() { --correctly_rounded_depth; }
+
 period_error exact_period_error(const amplitude&, int) { return {period_error::kind::value, 0}; }
 
 period_error harmonic_period_error(const amplitude& a, int n) {
@@ -459,7 +487,7 @@ period_error iterated_period_error(const amplitude& a, int n) {
     // The double iteration where its own rounding (measured against extended precision) is
     // far below the error; MPFR otherwise.
     const auto level = iterated_periods(a, n).back();
-    if (!std::isnan(level.value)) {
+    if (correctly_rounded_depth == 0 && !std::isnan(level.value)) {
         const double exact = period_ratio(a);
         const double error = level.value / exact - 1;
         const double uncertainty = level.rounding / exact + 4 * std::numeric_limits<double>::epsilon();

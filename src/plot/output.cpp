@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/output.hpp"
+#include "plot/page_buffer.hpp"
 
 #include "plot/animation_writers.hpp"
 #include "plot/frames.hpp"
@@ -205,11 +206,13 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
     const double scale = dpi / 72.0;
     const int width = static_cast<int>(std::lround(size.width_pt * scale));
     const int height = static_cast<int>(std::lround(size.height_pt * scale));
-    surface_ptr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
+    const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_RGB24, width);
+    const page_buffer memory(static_cast<std::size_t>(stride) * static_cast<std::size_t>(height));
+    surface_ptr surface(
+        cairo_image_surface_create_for_data(memory.data(), CAIRO_FORMAT_RGB24, width, height, stride));
     draw_on(surface.get(), fig, th, size, scale, "png");
     cairo_surface_flush(surface.get());
-    const unsigned char* data = cairo_image_surface_get_data(surface.get());
-    const int stride = cairo_image_surface_get_stride(surface.get());
+    const unsigned char* data = memory.data();
 
     // The smallest exact pixel format: grey (the paper theme), a palette of at most 256
     // colours, or RGB. Each attempt is one pass that stops at the first pixel it cannot hold.
@@ -217,7 +220,8 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
         return reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride)[x] & 0xffffffu;
     };
     const std::size_t count = static_cast<std::size_t>(width) * height;
-    std::vector<png_byte> pixels(count);
+    // Room for RGB, the largest format; only what a format writes is ever touched.
+    const page_buffer pixels(count * 3);
     int color_type = PNG_COLOR_TYPE_GRAY;
     int channels = 1;
     std::vector<png_color> palette;
@@ -260,7 +264,6 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
         color_type = PNG_COLOR_TYPE_RGB;
         channels = 3;
         palette.clear();
-        pixels.assign(count * 3, 0);
         for (int y = 0; y < height; ++y) {
             png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width * 3;
             for (int x = 0; x < width; ++x) {

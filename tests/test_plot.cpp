@@ -5,6 +5,7 @@
 #include "plot/math_layout.hpp"
 #include "plot/output.hpp"
 #include "plot/render.hpp"
+#include "plot/text.hpp"
 #include "figures/themes.hpp"
 #include "plot/theme.hpp"
 #include "plot/ticks.hpp"
@@ -64,6 +65,33 @@ fs::path temp_dir(const std::string& name) {
 }
 
 }  // namespace
+
+// A thread keeps the texts it has shaped for every figure and format it draws, but no more
+// than a bound: an animation's clock, a new text every frame, does not grow the memory, and
+// a text shaped again is measured as before.
+TEST(Text, ShapedTextsAreKeptUpToABound) {
+    const plot::theme theme = figures::load_theme("paper");
+    cairo_surface_t* surface = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, nullptr);
+    cairo_t* cr = cairo_create(surface);
+    {
+        const plot::text_engine text(cr, theme.font_family);
+        const auto first = text.measure("t = 0.000 s", 9);
+        const plot::text_shaper& shaper = plot::text_shaper::for_thread(theme.font_family);
+        for (int i = 0; i < 3 * static_cast<int>(plot::text_shaper::kept_boxes); ++i) {
+            text.measure("t = " + std::to_string(i) + " s", 9);
+            ASSERT_LE(shaper.kept(), plot::text_shaper::kept_boxes);
+        }
+        EXPECT_EQ(text.measure("t = 0.000 s", 9), first);
+        // Another engine of the same family in this thread finds the texts shaped already.
+        const plot::text_engine again(cr, theme.font_family);
+        const std::size_t before = shaper.kept();
+        again.measure("t = 5 s", 9);
+        again.measure("t = 5 s", 9);
+        EXPECT_LE(shaper.kept(), before + 1);
+    }
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+}
 
 TEST(Ticks, NiceStepsOnUglyRanges) {
     auto t = linear_ticks(0, pi, 6, true);

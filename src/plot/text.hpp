@@ -107,8 +107,13 @@ public:
         return made;
     }
 
-private:
+    /// How many shaped texts are kept.
+    std::size_t kept() const { return boxes_.size(); }
+
+    /// The most texts kept at once.
     static constexpr std::size_t kept_boxes = 4096;
+
+private:
 
 
     text_box make_box(const std::string& markup, double size) const {

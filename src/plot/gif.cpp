@@ -34,6 +34,24 @@ struct color_map_deleter {
                              (GifErrorString(error) ? GifErrorString(error) : "unknown error"));
 }
 
+/// The first x in [from, to) where rows a and b differ, or `to`: whole blocks compared at a
+/// time first, as most pixels of a frame are those of the still part.
+int first_difference(const std::uint32_t* a, const std::uint32_t* b, int from, int to) {
+    constexpr int block = 16;
+    while (to - from >= block && std::memcmp(a + from, b + from, block * 4) == 0) from += block;
+    while (from < to && a[from] == b[from]) ++from;
+    return from;
+}
+
+/// The last x in [0, to) where rows a and b differ, which they must somewhere.
+int last_difference(const std::uint32_t* a, const std::uint32_t* b, int to) {
+    constexpr int block = 16;
+    while (to >= block && std::memcmp(a + to - block, b + to - block, block * 4) == 0) to -= block;
+    do --to;
+    while (a[to] == b[to]);
+    return to;
+}
+
 /// The palette index nearest to each colour of 5 bits per channel.
 using nearest_colours = std::array<std::uint8_t, 32768>;
 
@@ -158,7 +176,7 @@ struct gif_encoder::state {
         const std::uint32_t* under = reference + y * reference_stride;
         int x = 0;
         for (;;) {
-            while (x < width && pixels[x] == under[x]) ++x;
+            x = first_difference(pixels, under, x, width);
             if (x == width) break;
             const int start = x;
             int end = x;  // one past the last pixel that differs
@@ -255,10 +273,8 @@ void gif_encoder::add_frame(const unsigned char* argb, int stride) {
             if (std::memcmp(a, b, static_cast<std::size_t>(w) * 4) == 0) continue;
             y0 = std::min(y0, y);
             y1 = y;
-            int left = 0;
-            while (a[left] == b[left]) ++left;
-            int right = w - 1;
-            while (a[right] == b[right]) --right;
+            const int left = first_difference(a, b, 0, w);
+            const int right = last_difference(a, b, w);
             x0 = std::min(x0, left);
             x1 = std::max(x1, right);
         }

@@ -8,7 +8,9 @@
 #include <gif_lib.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
+#include <utility>
 #include <string>
 
 namespace {
@@ -113,6 +115,53 @@ TEST(Gif, PixelsMapToThePalette) {
 }
 
 TEST(Gif, SameFramesSameBytes) { EXPECT_EQ(encode({1, 2, 3}, 30), encode({1, 2, 3}, 30)); }
+
+TEST(Gif, PreviousFrameKeptAgainstTheStillPart) {
+    // The still part: the frame without the bar (white, the disc). Kept against it, the
+    // previous frame is the bar's pixels only, and the bytes are those of a whole copy,
+    // also for a part primed with the frame before it.
+    surface_ptr still(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 64, 48));
+    {
+        context_ptr cr(cairo_create(still.get()));
+        cairo_set_source_surface(cr.get(), frame(0).get(), 0, 0);
+        cairo_paint(cr.get());
+        cairo_set_source_rgb(cr.get(), 1, 1, 1);
+        cairo_rectangle(cr.get(), 0, 10, 4, 20);
+        cairo_fill(cr.get());
+    }
+    cairo_surface_flush(still.get());
+    const std::vector<int> xs = {5, 9, 9, 13, 34, 38, 20, 61};
+    const auto palette = gif_palette({{0, 0, 0}, {0.0, 0.447, 0.698}}, {1, 1, 1}, 8);
+    for (const bool primed : {false, true}) {
+        const auto run = [&](bool against) {
+            gif_encoder gif(64, 48, palette, 30);
+            if (against) gif.keep_against(cairo_image_surface_get_data(still.get()), cairo_image_surface_get_stride(still.get()));
+            if (primed) {
+                auto s = frame(50);
+                gif.prime(cairo_image_surface_get_data(s.get()), cairo_image_surface_get_stride(s.get()));
+            }
+            std::size_t most_kept = 0;
+            for (int x : xs) {
+                auto s = frame(x);
+                gif.add_frame(cairo_image_surface_get_data(s.get()), cairo_image_surface_get_stride(s.get()));
+                most_kept = std::max(most_kept, gif.kept_pixels());
+            }
+            return std::pair{gif.finish(), most_kept};
+        };
+        const auto [whole, whole_kept] = run(false);
+        const auto [against, kept] = run(true);
+        EXPECT_EQ(against, whole) << (primed ? "primed" : "");
+        EXPECT_EQ(whole_kept, 64u * 48u);
+        // The bar, 4 x 20 pixels, and where it crosses the disc; not the frame.
+        EXPECT_GE(kept, 4u * 20u);
+        EXPECT_LE(kept, 4u * 20u + 8u * 20u);
+    }
+    gif_encoder late(64, 48, palette, 30);
+    auto s = frame(1);
+    late.add_frame(cairo_image_surface_get_data(s.get()), cairo_image_surface_get_stride(s.get()));
+    EXPECT_THROW(late.keep_against(cairo_image_surface_get_data(still.get()), cairo_image_surface_get_stride(still.get())),
+                 std::logic_error);
+}
 
 TEST(Gif, PaletteHasShadesAndStaysSmall) {
     const auto p = gif_palette({{0, 0, 0}, {0.0, 0.447, 0.698}, {0.835, 0.369, 0.0}}, {1, 1, 1}, 16);

@@ -97,14 +97,6 @@ int frames_per_part(int count, unsigned workers, double pixels) {
     return std::clamp(count / static_cast<int>(4 * workers), 1, most);
 }
 
-/// Workers for frames of `bytes` each: each holds a frame (and what of the previous one
-/// differs from the still part), so that large frames do not take memory a worker each
-/// (at 3840 x 2160, 32 MiB a frame, one worker).
-unsigned workers_for_frames(unsigned workers, double bytes) {
-    const double most = 48.0 * 1024 * 1024;
-    return std::clamp(static_cast<unsigned>(most / bytes), 1u, workers);
-}
-
 /// A worker's frame buffer, reused from part to part: a new one per frame is mapped and
 /// unmapped by the allocator when it is large, and the frame it holds last is the one before
 /// the next part when that part goes to the same worker.
@@ -141,8 +133,7 @@ void write_gif_animation(const animation_frames& frames, const theme& th, const 
     // order, so memory stays the same at any length.
     const int count = last - first + 1;
     const unsigned workers =
-        workers_for_frames(worker_count(options.jobs, static_cast<std::size_t>(count)),
-                           static_cast<double>(still_image.stride) * still_image.height);
+        workers_for_frames(worker_count(options.jobs, static_cast<std::size_t>(count)), still_image.data.size());
     const int part_frames = frames_per_part(count, workers, static_cast<double>(width) * height);
     const int parts = (count + part_frames - 1) / part_frames;
     streamed_file file(dir / gif_animation_file(id, frames.first, frames.count));

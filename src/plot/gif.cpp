@@ -149,6 +149,12 @@ struct gif_encoder::state {
         return (*nearest)[(r >> 3) << 10 | (g >> 3) << 5 | (b >> 3)];
     }
 
+    /// Whether a pixel shows as the previous frame's did: its colour or its palette index
+    /// is the same (the screen holds the index of every pixel's colour).
+    bool shown_alike(std::uint32_t pixel, std::uint32_t before) const {
+        return pixel == before || index_of(pixel) == index_of(before);
+    }
+
     /// Row y of the previous frame.
     const std::uint32_t* previous_row(int y) {
         const auto& runs = kept[static_cast<std::size_t>(y)];
@@ -271,10 +277,14 @@ void gif_encoder::add_frame(const unsigned char* argb, int stride) {
             const auto* a = row(y);
             const auto* b = s.previous_row(y);
             if (std::memcmp(a, b, static_cast<std::size_t>(w) * 4) == 0) continue;
+            // What changed on screen: pixels whose colour index changed.
+            int left = first_difference(a, b, 0, w);
+            int right = last_difference(a, b, w);
+            while (left <= right && s.shown_alike(a[left], b[left])) ++left;
+            while (right > left && s.shown_alike(a[right], b[right])) --right;
+            if (left > right) continue;
             y0 = std::min(y0, y);
             y1 = y;
-            const int left = first_difference(a, b, 0, w);
-            const int right = last_difference(a, b, w);
             x0 = std::min(x0, left);
             x1 = std::max(x1, right);
         }
@@ -304,7 +314,7 @@ void gif_encoder::add_frame(const unsigned char* argb, int stride) {
         std::uint32_t last_pixel = a[x0] + 1;
         GifPixelType last_index = 0;
         for (int x = x0; x <= x1; ++x) {
-            if (b && a[x] == b[x]) {
+            if (b && s.shown_alike(a[x], b[x])) {
                 out[x - x0] = static_cast<GifPixelType>(s.transparent);
                 continue;
             }

@@ -223,7 +223,11 @@ void write_video_animation(const animation_frames& frames, const theme& th, cons
         in_order<video_frame>(
             frames.first, frames.last, options.jobs,
             [&](int i) {
-                return video.convert(render_argb(frames.frame(i), th, options.dpi, draw_pass::overlay, &still_image));
+                // A worker's frame buffer, reused: a large one is mapped and unmapped by the
+                // allocator at every frame otherwise.
+                thread_local argb_image image;
+                render_argb(image, frames.frame(i), th, options.dpi, draw_pass::overlay, &still_image);
+                return video.convert(image);
             },
             [&](int, video_frame frame) { video.add(std::move(frame)); });
         video.finish();

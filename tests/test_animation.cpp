@@ -8,6 +8,7 @@
 #include "figures/spec_build.hpp"
 #include "figures/themes.hpp"
 #include "pendulum/exact.hpp"
+#include "plot/frames.hpp"
 #include "plot/workers.hpp"
 #include "process.hpp"
 
@@ -205,6 +206,51 @@ TEST(Workers, OnePerCpuOfTheAffinityMask) {
     EXPECT_EQ(plot::worker_count(5, 100), 5u);
     EXPECT_EQ(plot::worker_count(5, 3), 3u);
     EXPECT_EQ(plot::worker_count(0, 0), 1u);
+}
+
+TEST(Workers, FewerForLargeFrames) {
+    // Each worker holds a frame: at 3840 x 2160 (32 MiB of ARGB32) one, at 1280 x 720 all.
+    const std::size_t uhd = std::size_t{3840} * 2160 * 4;
+    const std::size_t hd = std::size_t{1280} * 720 * 4;
+    EXPECT_EQ(plot::workers_for_frames(2, uhd), 1u);
+    EXPECT_EQ(plot::workers_for_frames(16, uhd), 1u);
+    EXPECT_EQ(plot::workers_for_frames(2, hd), 2u);
+    EXPECT_EQ(plot::workers_for_frames(64, hd), 13u);
+    EXPECT_EQ(plot::workers_for_frames(4, std::size_t{1} << 30), 1u);
+    for (unsigned w : {1u, 2u, 7u, 64u}) {
+        EXPECT_LE(plot::workers_for_frames(w, hd) * hd, std::size_t{48} << 20) << w;
+        EXPECT_GE(plot::workers_for_frames(w, 1), 1u);
+    }
+}
+
+TEST(Animation, PngFramesAreTheFramesDrawnWhole) {
+    // A PNG frame is drawn over what comes before the first thing that moves, drawn once: the
+    // bytes of the frame drawn whole, in every animation and theme.
+    int checked = 0;
+    for (const auto& e : figures::catalog()) {
+        if (!e.spec.animation) continue;
+        for (const auto& theme_row : figures::builtin_themes()) {
+            const auto theme = figures::load_theme(std::string(theme_row.name));
+            auto options = figures::sized_by({}, theme);
+            options.animated = true;
+            const auto plan = figures::plan_animation(e, options);
+            const auto base = figures::build(e, options);
+            const double dpi = 40;
+            plot::argb_image before;
+            plot::render_rgb24(before, figures::animation_frame(e, options, plan, base, 0), theme, dpi,
+                               plot::draw_pass::before_motion);
+            plot::argb_image image;
+            std::vector<unsigned char> rows;
+            for (const int i : {0, plan.frames / 3, plan.frames - 1}) {
+                const auto f = figures::animation_frame(e, options, plan, base, plan.time(i));
+                plot::render_rgb24(image, f, theme, dpi, plot::draw_pass::from_motion, &before);
+                EXPECT_TRUE(plot::png_of_pixels(image, dpi, rows) == plot::render(f, theme, "png", plot::output_options{dpi}))
+                    << e.id << " in " << theme_row.name << ", frame " << i;
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GE(checked, 3 * 3 * 3);
 }
 
 TEST(Animation, BadInputIsExit2AndWritesNothing) {

@@ -8,6 +8,7 @@
 #include "plot/workers.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <condition_variable>
 #include <cstdio>
 #include <deque>
@@ -96,6 +97,18 @@ int frames_per_part(int count, unsigned workers, double pixels) {
     return std::clamp(count / static_cast<int>(4 * workers), 1, most);
 }
 
+/// A worker's frame buffer, reused from part to part: a new one per frame is mapped and
+/// unmapped by the allocator when it is large, and the frame it holds last is the one before
+/// the next part when that part goes to the same worker.
+struct worker_frame {
+    argb_image image;
+    unsigned long animation = 0;  // whose frame it holds (a number per animation, from 1)
+    int frame = -1;               // which
+};
+
+thread_local worker_frame gif_worker_frame;
+std::atomic<unsigned long> gif_animations{0};
+
 }  // namespace
 
 void write_gif_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
@@ -119,10 +132,12 @@ void write_gif_animation(const animation_frames& frames, const theme& th, const 
     // one encoder doing all), several parts at a time; finished parts go to the file in
     // order, so memory stays the same at any length.
     const int count = last - first + 1;
-    const unsigned workers = worker_count(options.jobs, static_cast<std::size_t>(count));
+    const unsigned workers =
+        workers_for_frames(worker_count(options.jobs, static_cast<std::size_t>(count)), still_image.data.size());
     const int part_frames = frames_per_part(count, workers, static_cast<double>(width) * height);
     const int parts = (count + part_frames - 1) / part_frames;
     streamed_file file(dir / gif_animation_file(id, frames.first, frames.count));
+    const unsigned long animation = ++gif_animations;
     struct part {
         std::string head;  // the file's head, kept from the first part only
         std::string body;  // the part's frames
@@ -131,17 +146,25 @@ void write_gif_animation(const animation_frames& frames, const theme& th, const 
                    [&](int p) {
                        const int from = first + p * part_frames;
                        const int to = std::min(last, from + part_frames - 1);
-                       // One frame buffer per worker, reused: a new one per frame is mapped
-                       // and unmapped by the allocator when it is large.
-                       thread_local argb_image image;
+                       worker_frame& mine = gif_worker_frame;
+                       if (mine.animation != animation) mine.frame = -1;
+                       mine.animation = animation;
+                       const auto draw = [&](int i) {
+                           if (mine.frame != i) {
+                               mine.frame = -1;  // until it is drawn
+                               render_argb(mine.image, frames.frame(i), th, dpi, draw_pass::overlay, &still_image);
+                               mine.frame = i;
+                           }
+                       };
                        gif_encoder gif(width, height, palette, frames.fps, from - first);
+                       gif.keep_against(still_image.data.data(), still_image.stride);
                        if (from > first) {
-                           render_argb(image, frames.frame(from - 1), th, dpi, draw_pass::overlay, &still_image);
-                           gif.prime(image.data.data(), image.stride);
+                           draw(from - 1);
+                           gif.prime(mine.image.data.data(), mine.image.stride);
                        }
                        for (int i = from; i <= to; ++i) {
-                           render_argb(image, frames.frame(i), th, dpi, draw_pass::overlay, &still_image);
-                           gif.add_frame(image.data.data(), image.stride);
+                           draw(i);
+                           gif.add_frame(mine.image.data.data(), mine.image.stride);
                        }
                        const std::size_t head_size = gif.head_size();
                        auto [head, body] = gif_encoder::split(gif.finish(), head_size);
@@ -164,10 +187,18 @@ void write_pdf_animation(const animation_frames& frames, const theme& th, const 
 
 void write_png_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
                          const std::string& id, const output_options& options) {
+    // What comes before the first thing that moves is drawn once; each frame draws the rest
+    // over a copy of it, the pixels (and bytes) of the whole frame drawn at once.
+    argb_image before;
+    render_rgb24(before, frames.frame(frames.first), th, options.dpi, draw_pass::before_motion);
     in_order<int>(frames.first, frames.last, options.jobs,
                   [&](int i) {
-                      write_atomically(dir / png_frame_file(id, i, frames.count),
-                                       render(frames.frame(i), th, "png", output_options{options.dpi}));
+                      // A worker's buffers, reused: a large one is mapped and unmapped by the
+                      // allocator at every frame otherwise.
+                      thread_local argb_image image;
+                      thread_local std::vector<unsigned char> rows;
+                      render_rgb24(image, frames.frame(i), th, options.dpi, draw_pass::from_motion, &before);
+                      write_atomically(dir / png_frame_file(id, i, frames.count), png_of_pixels(image, options.dpi, rows));
                       return i;
                   },
                   [](int, int) {});
@@ -192,7 +223,11 @@ void write_video_animation(const animation_frames& frames, const theme& th, cons
         in_order<video_frame>(
             frames.first, frames.last, options.jobs,
             [&](int i) {
-                return video.convert(render_argb(frames.frame(i), th, options.dpi, draw_pass::overlay, &still_image));
+                // A worker's frame buffer, reused: a large one is mapped and unmapped by the
+                // allocator at every frame otherwise.
+                thread_local argb_image image;
+                render_argb(image, frames.frame(i), th, options.dpi, draw_pass::overlay, &still_image);
+                return video.convert(image);
             },
             [&](int, video_frame frame) { video.add(std::move(frame)); });
         video.finish();

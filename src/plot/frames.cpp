@@ -41,11 +41,16 @@ argb_image render_argb(const figure& fig, const theme& th, double dpi, draw_pass
     return image;
 }
 
-void render_argb(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass,
-                 const argb_image* under) {
+namespace {
+
+void render_pixels(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass,
+                   const argb_image* under, bool rgb24) {
     const auto [width, height] = pixel_size(fig, th, dpi);
+    const cairo_format_t format = rgb24 ? CAIRO_FORMAT_RGB24 : CAIRO_FORMAT_ARGB32;
+    image.rgb24 = rgb24;
     if (under) {
         if (under->width != width || under->height != height) throw std::invalid_argument("frames differ in size");
+        if (under->rgb24 != rgb24) throw std::invalid_argument("frames differ in pixel format");
         image.width = under->width;
         image.height = under->height;
         image.stride = under->stride;
@@ -53,11 +58,11 @@ void render_argb(argb_image& image, const figure& fig, const theme& th, double d
     } else {
         image.width = width;
         image.height = height;
-        image.stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32, width);
+        image.stride = cairo_format_stride_for_width(format, width);
         image.data.assign(static_cast<std::size_t>(image.stride) * static_cast<std::size_t>(height), 0);
     }
     surface_ptr surface(
-        cairo_image_surface_create_for_data(image.data.data(), CAIRO_FORMAT_ARGB32, width, height, image.stride));
+        cairo_image_surface_create_for_data(image.data.data(), format, width, height, image.stride));
     check(surface.get());
     {
         context_ptr cr(cairo_create(surface.get()));
@@ -66,6 +71,18 @@ void render_argb(argb_image& image, const figure& fig, const theme& th, double d
         check_cairo(cairo_status(cr.get()), "draw a frame");
     }
     cairo_surface_flush(surface.get());
+}
+
+}  // namespace
+
+void render_argb(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass,
+                 const argb_image* under) {
+    render_pixels(image, fig, th, dpi, pass, under, false);
+}
+
+void render_rgb24(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass,
+                  const argb_image* under) {
+    render_pixels(image, fig, th, dpi, pass, under, true);
 }
 
 std::string render_pdf_pages(int count, const std::function<figure(int)>& frame, const theme& th) {

@@ -11,12 +11,14 @@
 
 namespace plot {
 
-/// A figure drawn into pixels: Cairo's ARGB32 (opaque here), `stride` bytes per row.
+/// A figure drawn into pixels: Cairo's ARGB32 (opaque here), or its RGB24 as a PNG is drawn,
+/// `stride` bytes per row.
 struct argb_image {
     int width = 0;                    ///< pixels
     int height = 0;                   ///< pixels
     int stride = 0;                   ///< bytes per row
     std::vector<unsigned char> data;  ///< height * stride bytes
+    bool rgb24 = false;               ///< Cairo's RGB24 (a PNG's pixels) rather than ARGB32
 };
 
 /// The pixel size of a figure at dpi; throws plot::bad_input naming it if it is out of range.
@@ -31,6 +33,11 @@ argb_image render_argb(const figure& fig, const theme& th, double dpi, draw_pass
 /// much memory as the allocator maps afresh, and unmaps, at every frame otherwise).
 void render_argb(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass = draw_pass::all,
                  const argb_image* under = nullptr);
+
+/// Draws as render_argb does into `image`, in Cairo's RGB24 as render draws a PNG (whose
+/// pixels these are for the pass all, or for from_motion over before_motion).
+void render_rgb24(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass = draw_pass::all,
+                  const argb_image* under = nullptr);
 
 /// A PDF of `count` pages, page i showing frame(i), for Beamer's animate package. Frames
 /// must share one size. Dated by SOURCE_DATE_EPOCH like a still PDF, otherwise undated.

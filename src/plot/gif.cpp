@@ -34,6 +34,24 @@ struct color_map_deleter {
                              (GifErrorString(error) ? GifErrorString(error) : "unknown error"));
 }
 
+/// The first x in [from, to) where rows a and b differ, or `to`: whole blocks compared at a
+/// time first, as most pixels of a frame are those of the still part.
+int first_difference(const std::uint32_t* a, const std::uint32_t* b, int from, int to) {
+    constexpr int block = 16;
+    while (to - from >= block && std::memcmp(a + from, b + from, block * 4) == 0) from += block;
+    while (from < to && a[from] == b[from]) ++from;
+    return from;
+}
+
+/// The last x in [0, to) where rows a and b differ, which they must somewhere.
+int last_difference(const std::uint32_t* a, const std::uint32_t* b, int to) {
+    constexpr int block = 16;
+    while (to >= block && std::memcmp(a + to - block, b + to - block, block * 4) == 0) to -= block;
+    do --to;
+    while (a[to] == b[to]);
+    return to;
+}
+
 /// The palette index nearest to each colour of 5 bits per channel.
 using nearest_colours = std::array<std::uint8_t, 32768>;
 
@@ -103,8 +121,15 @@ struct gif_encoder::state {
     double fps = 30;
     std::vector<rgb8> palette;
     std::shared_ptr<const nearest_colours> nearest;  // 5 bits per channel -> palette index
-    std::vector<std::uint32_t> previous;   // the last frame's pixels, to find what changed
-    std::vector<GifPixelType> rect;        // the changed rectangle, as palette indices
+    const std::uint32_t* reference = nullptr;  // pixels most frames share, or none
+    std::ptrdiff_t reference_stride = 0;        // its pixels per row
+    bool has_previous = false;                  // whether a frame was added or primed
+    // The previous frame, to find what changed: per row its runs of pixels that differ from
+    // the reference, each as its start, its length and its pixels (the whole row as one run
+    // without a reference), so that a still background is not kept twice.
+    std::vector<std::vector<std::uint32_t>> kept;
+    std::vector<std::uint32_t> scratch;  // a previous row put together
+    std::vector<GifPixelType> line;      // a row of the changed rectangle, as palette indices
     int transparent = -1;                  // the index that keeps the previous frame's pixel
     std::size_t head = 0;                  // bytes before the first frame
     std::string bytes;
@@ -122,6 +147,68 @@ struct gif_encoder::state {
         const std::uint32_t g = (pixel >> 8) & 0xff;
         const std::uint32_t b = pixel & 0xff;
         return (*nearest)[(r >> 3) << 10 | (g >> 3) << 5 | (b >> 3)];
+    }
+
+    /// Whether a pixel shows as the previous frame's did: its colour or its palette index
+    /// is the same (the screen holds the index of every pixel's colour).
+    bool shown_alike(std::uint32_t pixel, std::uint32_t before) const {
+        return pixel == before || index_of(pixel) == index_of(before);
+    }
+
+    /// Row y of the previous frame.
+    const std::uint32_t* previous_row(int y) {
+        const auto& runs = kept[static_cast<std::size_t>(y)];
+        if (!reference) return runs.data() + 2;
+        const std::uint32_t* under = reference + y * reference_stride;
+        if (runs.empty()) return under;
+        std::memcpy(scratch.data(), under, static_cast<std::size_t>(width) * 4);
+        for (std::size_t k = 0; k < runs.size(); k += 2 + runs[k + 1]) {
+            std::memcpy(scratch.data() + runs[k], runs.data() + k + 2, runs[k + 1] * std::size_t{4});
+        }
+        return scratch.data();
+    }
+
+    /// Keeps row y of a frame as the previous frame's.
+    void keep(int y, const std::uint32_t* pixels) {
+        auto& runs = kept[static_cast<std::size_t>(y)];
+        runs.clear();
+        if (!reference) {
+            runs.push_back(0);
+            runs.push_back(static_cast<std::uint32_t>(width));
+            runs.insert(runs.end(), pixels, pixels + width);
+            return;
+        }
+        // Runs that differ, joined across fewer equal pixels than a run's start and length take.
+        const std::uint32_t* under = reference + y * reference_stride;
+        int x = 0;
+        for (;;) {
+            x = first_difference(pixels, under, x, width);
+            if (x == width) break;
+            const int start = x;
+            int end = x;  // one past the last pixel that differs
+            while (x < width) {
+                if (pixels[x] != under[x]) {
+                    end = ++x;
+                } else if (x - end >= 2) {
+                    break;
+                } else {
+                    ++x;
+                }
+            }
+            runs.push_back(static_cast<std::uint32_t>(start));
+            runs.push_back(static_cast<std::uint32_t>(end - start));
+            runs.insert(runs.end(), pixels + start, pixels + end);
+            x = end;
+        }
+        // What is kept stays what differs now: a row's memory does not stay at its largest.
+        if (runs.capacity() > 2 * runs.size() + 64) runs.shrink_to_fit();
+    }
+
+    /// Makes room for a previous frame.
+    void start_keeping() {
+        kept.resize(static_cast<std::size_t>(height));
+        if (reference) scratch.resize(static_cast<std::size_t>(width));
+        has_previous = true;
     }
 };
 
@@ -178,8 +265,7 @@ void gif_encoder::add_frame(const unsigned char* argb, int stride) {
     const auto row = [&](int y) {
         return reinterpret_cast<const std::uint32_t*>(argb + static_cast<std::ptrdiff_t>(y) * stride);
     };
-    const auto previous_row = [&](int y) { return s.previous.data() + static_cast<std::ptrdiff_t>(y) * w; };
-    const bool first = s.previous.empty();
+    const bool first = !s.has_previous;
     // The rectangle that changed since the previous frame (the whole frame at first).
     int x0 = 0, y0 = 0, x1 = w - 1, y1 = h - 1;
     if (!first) {
@@ -189,14 +275,16 @@ void gif_encoder::add_frame(const unsigned char* argb, int stride) {
         y1 = -1;
         for (int y = 0; y < h; ++y) {
             const auto* a = row(y);
-            const auto* b = previous_row(y);
+            const auto* b = s.previous_row(y);
             if (std::memcmp(a, b, static_cast<std::size_t>(w) * 4) == 0) continue;
+            // What changed on screen: pixels whose colour index changed.
+            int left = first_difference(a, b, 0, w);
+            int right = last_difference(a, b, w);
+            while (left <= right && s.shown_alike(a[left], b[left])) ++left;
+            while (right > left && s.shown_alike(a[right], b[right])) --right;
+            if (left > right) continue;
             y0 = std::min(y0, y);
             y1 = y;
-            int left = 0;
-            while (a[left] == b[left]) ++left;
-            int right = w - 1;
-            while (a[right] == b[right]) --right;
             x0 = std::min(x0, left);
             x1 = std::max(x1, right);
         }
@@ -204,27 +292,6 @@ void gif_encoder::add_frame(const unsigned char* argb, int stride) {
     }
     const int rw = x1 - x0 + 1;
     const int rh = y1 - y0 + 1;
-    // Palette indices of the rectangle; a pixel equal to the previous frame's is transparent,
-    // which keeps it, so runs of them compress to almost nothing.
-    s.rect.resize(static_cast<std::size_t>(rw) * static_cast<std::size_t>(rh));
-    for (int y = y0; y <= y1; ++y) {
-        const auto* a = row(y);
-        const auto* b = first ? nullptr : previous_row(y);
-        GifPixelType* out = s.rect.data() + static_cast<std::ptrdiff_t>(y - y0) * rw;
-        std::uint32_t last_pixel = a[x0] + 1;
-        GifPixelType last_index = 0;
-        for (int x = x0; x <= x1; ++x) {
-            if (b && a[x] == b[x]) {
-                out[x - x0] = static_cast<GifPixelType>(s.transparent);
-                continue;
-            }
-            if (a[x] != last_pixel) {
-                last_pixel = a[x];
-                last_index = s.index_of(last_pixel);
-            }
-            out[x - x0] = last_index;
-        }
-    }
     // Delays in hundredths of a second, rounded so that they add up to the true time.
     const auto centiseconds = [&](int n) { return static_cast<int>(std::lround(100.0 * n / s.fps)); };
     GraphicsControlBlock gcb{};
@@ -237,24 +304,56 @@ void gif_encoder::add_frame(const unsigned char* argb, int stride) {
     EGifGCBToExtension(&gcb, ext);
     if (EGifPutExtension(s.gif, GRAPHICS_EXT_FUNC_CODE, sizeof ext, ext) == GIF_ERROR) fail("delay", s.gif->Error);
     if (EGifPutImageDesc(s.gif, x0, y0, rw, rh, false, nullptr) == GIF_ERROR) fail("frame", s.gif->Error);
-    for (int y = 0; y < rh; ++y) {
-        if (EGifPutLine(s.gif, s.rect.data() + static_cast<std::ptrdiff_t>(y) * rw, rw) == GIF_ERROR) {
-            fail("pixels", s.gif->Error);
+    // Palette indices of the rectangle, a row at a time; a pixel equal to the previous
+    // frame's is transparent, which keeps it, so runs of them compress to almost nothing.
+    s.line.resize(static_cast<std::size_t>(rw));
+    for (int y = y0; y <= y1; ++y) {
+        const auto* a = row(y);
+        const auto* b = first ? nullptr : s.previous_row(y);
+        GifPixelType* out = s.line.data();
+        std::uint32_t last_pixel = a[x0] + 1;
+        GifPixelType last_index = 0;
+        for (int x = x0; x <= x1; ++x) {
+            if (b && s.shown_alike(a[x], b[x])) {
+                out[x - x0] = static_cast<GifPixelType>(s.transparent);
+                continue;
+            }
+            if (a[x] != last_pixel) {
+                last_pixel = a[x];
+                last_index = s.index_of(last_pixel);
+            }
+            out[x - x0] = last_index;
         }
+        if (EGifPutLine(s.gif, out, rw) == GIF_ERROR) fail("pixels", s.gif->Error);
     }
     // Keep this frame's pixels (only the changed rows differ from the previous ones).
-    if (first) s.previous.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-    for (int y = y0; y <= y1; ++y) std::memcpy(previous_row(y), row(y), static_cast<std::size_t>(w) * 4);
+    if (first) s.start_keeping();
+    for (int y = y0; y <= y1; ++y) s.keep(y, row(y));
     ++frames_;
 }
 
 void gif_encoder::prime(const unsigned char* argb, int stride) {
     auto& s = *state_;
-    s.previous.resize(static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height));
+    s.start_keeping();
     for (int y = 0; y < s.height; ++y) {
-        std::memcpy(s.previous.data() + static_cast<std::ptrdiff_t>(y) * s.width,
-                    argb + static_cast<std::ptrdiff_t>(y) * stride, static_cast<std::size_t>(s.width) * 4);
+        s.keep(y, reinterpret_cast<const std::uint32_t*>(argb + static_cast<std::ptrdiff_t>(y) * stride));
     }
+}
+
+void gif_encoder::keep_against(const unsigned char* argb, int stride) {
+    auto& s = *state_;
+    if (s.has_previous) throw std::logic_error("keep_against comes before the first frame");
+    if (stride < s.width * 4 || stride % 4 != 0) throw std::invalid_argument("a row of the shared pixels is too short");
+    s.reference = reinterpret_cast<const std::uint32_t*>(argb);
+    s.reference_stride = stride / 4;
+}
+
+std::size_t gif_encoder::kept_pixels() const {
+    std::size_t n = 0;
+    for (const auto& runs : state_->kept) {
+        for (std::size_t k = 0; k < runs.size(); k += 2 + runs[k + 1]) n += runs[k + 1];
+    }
+    return n;
 }
 
 std::size_t gif_encoder::head_size() const { return state_->head; }

@@ -41,6 +41,14 @@ public:
     /// encoded on its own then stores only what changed since the frame before the part.
     void prime(const unsigned char* argb, int stride);
 
+    /// Takes the pixels that most frames share (an animation's still part; they must outlive
+    /// the encoder), before any frame: the previous frame is then kept as its rows' runs of
+    /// pixels that differ from them instead of a whole copy. The bytes are the same either way.
+    void keep_against(const unsigned char* argb, int stride);
+
+    /// The pixels kept of the previous frame (a whole frame's without keep_against).
+    std::size_t kept_pixels() const;
+
     /// Ends the file and returns its bytes; the encoder is finished afterwards.
     std::string finish();
 

@@ -200,28 +200,17 @@ bool encode_png(png_sink* sink, png_bytepp rows, png_uint_32 width, png_uint_32 
     return true;
 }
 
-std::string render_png(const figure& fig, const theme& th, double dpi) {
-    check_raster_size(fig, th, dpi);
-    const page_size size = figure_size(fig, th);
-    const double scale = dpi / 72.0;
-    const int width = static_cast<int>(std::lround(size.width_pt * scale));
-    const int height = static_cast<int>(std::lround(size.height_pt * scale));
-    const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_RGB24, width);
-    const page_buffer memory(static_cast<std::size_t>(stride) * static_cast<std::size_t>(height));
-    surface_ptr surface(
-        cairo_image_surface_create_for_data(memory.data(), CAIRO_FORMAT_RGB24, width, height, stride));
-    draw_on(surface.get(), fig, th, size, scale, "png");
-    cairo_surface_flush(surface.get());
-    const unsigned char* data = memory.data();
-
+/// The PNG of width x height pixels of Cairo's RGB24, `stride` bytes a row, drawn at dpi;
+/// `pixels` holds the rows to encode.
+std::string png_of(const unsigned char* data, int stride, int width, int height, double dpi,
+                   std::vector<png_byte>& pixels) {
     // The smallest exact pixel format: grey (the paper theme), a palette of at most 256
     // colours, or RGB. Each attempt is one pass that stops at the first pixel it cannot hold.
     const auto pixel = [&](int x, int y) {
         return reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride)[x] & 0xffffffu;
     };
     const std::size_t count = static_cast<std::size_t>(width) * height;
-    // Room for RGB, the largest format; only what a format writes is ever touched.
-    const page_buffer pixels(count * 3);
+    pixels.resize(count);
     int color_type = PNG_COLOR_TYPE_GRAY;
     int channels = 1;
     std::vector<png_color> palette;
@@ -264,6 +253,7 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
         color_type = PNG_COLOR_TYPE_RGB;
         channels = 3;
         palette.clear();
+        pixels.resize(count * 3);
         for (int y = 0; y < height; ++y) {
             png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width * 3;
             for (int x = 0; x < width; ++x) {
@@ -284,6 +274,22 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
         throw std::runtime_error("cannot encode PNG");
     }
     return std::move(sink.bytes);
+}
+
+std::string render_png(const figure& fig, const theme& th, double dpi) {
+    check_raster_size(fig, th, dpi);
+    const page_size size = figure_size(fig, th);
+    const double scale = dpi / 72.0;
+    const int width = static_cast<int>(std::lround(size.width_pt * scale));
+    const int height = static_cast<int>(std::lround(size.height_pt * scale));
+    const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_RGB24, width);
+    const page_buffer memory(static_cast<std::size_t>(stride) * static_cast<std::size_t>(height));
+    surface_ptr surface(
+        cairo_image_surface_create_for_data(memory.data(), CAIRO_FORMAT_RGB24, width, height, stride));
+    draw_on(surface.get(), fig, th, size, scale, "png");
+    cairo_surface_flush(surface.get());
+    std::vector<png_byte> pixels;
+    return png_of(memory.data(), stride, width, height, dpi, pixels);
 }
 
 /// The SVG with a <title> and a <desc> first in its root element, as SVG's accessibility
@@ -468,6 +474,11 @@ constexpr format_row formats[] = {
 };
 
 }  // namespace
+
+std::string png_of_pixels(const argb_image& image, double dpi, std::vector<unsigned char>& scratch) {
+    if (!image.rgb24) throw std::invalid_argument("a PNG is made of RGB24 pixels");
+    return png_of(image.data.data(), image.stride, image.width, image.height, dpi, scratch);
+}
 
 std::span<const format_row> format_table() { return formats; }
 

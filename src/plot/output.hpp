@@ -135,6 +135,12 @@ std::string pdf_creation_date();
 /// gives the same bytes: dates come from SOURCE_DATE_EPOCH or are left out.
 std::string render(const figure& fig, const theme& th, std::string_view format, const output_options& options);
 
+struct argb_image;
+
+/// The PNG of pixels drawn by render_rgb24 at dpi: the bytes render writes for the same
+/// pixels. `scratch` holds the rows to encode; reused, it spares a large frame's mapping.
+std::string png_of_pixels(const argb_image& image, double dpi, std::vector<unsigned char>& scratch);
+
 /// Writes bytes to path through a temporary file in the same directory and a rename, so the
 /// file is either the old one or the complete new one. Throws std::runtime_error naming the path.
 void write_atomically(const std::filesystem::path& path, const std::string& bytes);

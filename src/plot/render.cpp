@@ -88,14 +88,31 @@ void draw_ticks(cairo_t* cr, const theme& th, const tick_set& t, const axis_map&
     cairo_stroke(cr);
 }
 
+/// Which parts of a figure a pass draws, asked part by part in drawing order.
+struct pass_gate {
+    draw_pass pass = draw_pass::all;
+    bool moved = false;  // whether a part that moves has come
+
+    /// Whether the pass draws the next part, one that moves or one that stays.
+    bool draws(bool moves) {
+        moved = moved || moves;
+        switch (pass) {
+            case draw_pass::all: return true;
+            case draw_pass::still: return !moves;
+            case draw_pass::overlay: return moves;
+            case draw_pass::before_motion: return !moved;
+            case draw_pass::from_motion: return moved;
+        }
+        return true;
+    }
+};
+
 /// Draws one panel; with show_legend, its legend goes inside the axes where it covers no
 /// data, otherwise in a row of its own above them.
 void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
-                const rect& cell, bool show_legend, draw_pass pass) {
+                const rect& cell, bool show_legend, pass_gate& gate) {
     // Which series this pass draws.
-    const auto drawn = [pass](const series& s) {
-        return pass == draw_pass::all || (pass == draw_pass::overlay) == s.overlay;
-    };
+    const auto drawn = [&gate](const series& s) { return gate.draws(s.overlay); };
     const double pad = th.padding_pt;
     const double tolerance = curve_tolerance(cr);
     // Curves are followed closely where their lines show: within a line width of the axes.
@@ -144,12 +161,12 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         draw_markers(cr, th, p.data[k], dev[k], centres);
     }
 
-    if (!p.overlay_label.empty() && pass != draw_pass::still) {
+    if (!p.overlay_label.empty() && gate.draws(true)) {
         set_foreground(cr, th);
         // Inside the top left corner, which a drawing of the pendulum and a phase portrait leave free.
         text.draw(p.overlay_label, th.label_font_pt, area.x + pad, area.y + pad, 0.0, 0.0);
     }
-    if (pass == draw_pass::overlay) return;
+    if (!gate.draws(false)) return;
 
     if (p.frameless) {
         // A drawing: only its title and legend.
@@ -274,7 +291,8 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     if (th.palette.empty()) throw bad_input("theme has no colours");
     text_engine text(cr, th.font_family);
     text.record_into(texts);
-    if (pass != draw_pass::overlay && (!vector || th.opaque_vector_background)) {
+    pass_gate gate{pass};
+    if ((!vector || th.opaque_vector_background) && gate.draws(false)) {
         cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
         cairo_paint(cr);
     }
@@ -307,7 +325,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     if (!fig.title.empty() && th.title_font_pt > 0) {
         const text_ink ink = text.ink(fig.title.markup, th.title_font_pt);
         title_h = th.padding_pt + ink.h + 0.5 * th.padding_pt;
-        if (pass != draw_pass::overlay) {
+        if (gate.draws(false)) {
             set_foreground(cr, th);
             text.draw_on_baseline(fig.title, th.title_font_pt, 0.5 * size.width_pt - ink.x - 0.5 * ink.w,
                                   th.padding_pt - ink.y, false, 0.5);
@@ -370,7 +388,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         check_room();
         record_frames();
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-            draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], true, pass);
+            draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], true, gate);
         }
         return;
     }
@@ -404,7 +422,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     const double band = lg.entries.empty() ? 0.0 : legend_band_height(lg, th, size.width_pt - 2 * th.padding_pt);
     if (!legend_panel && !lg.entries.empty() &&
         (fig.peers.empty() || roomy(make_cells(title_h + band + 0.3 * th.padding_pt)))) {
-        if (pass != draw_pass::overlay && (fig.peers.empty() || fig.place_in_set == 0)) {
+        if ((fig.peers.empty() || fig.place_in_set == 0) && gate.draws(false)) {
             draw_legend_band(cr, text, th, fig.panels[0], lg,
                              rect{th.padding_pt, title_h + 0.3 * th.padding_pt, size.width_pt - 2 * th.padding_pt, band});
         }
@@ -417,7 +435,7 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
         const bool here = legend_panel && i == *legend_panel;
         if (here) plans[i].legend = lg;
-        draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], here, pass);
+        draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], here, gate);
     }
 }
 

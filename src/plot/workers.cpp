@@ -21,4 +21,10 @@ unsigned worker_count(unsigned jobs, std::size_t tasks) {
     return static_cast<unsigned>(std::max<std::size_t>(1, std::min(wanted, tasks)));
 }
 
+unsigned workers_for_frames(unsigned workers, std::size_t frame_bytes) {
+    const std::size_t most = std::size_t{48} << 20;
+    const std::size_t fit = frame_bytes ? most / frame_bytes : workers;
+    return static_cast<unsigned>(std::clamp<std::size_t>(fit, 1, std::max(1u, workers)));
+}
+
 }  // namespace plot

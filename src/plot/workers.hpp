@@ -14,4 +14,9 @@ unsigned usable_cpus();
 /// tasks, never fewer than 1.
 unsigned worker_count(unsigned jobs, std::size_t tasks);
 
+/// At most `workers` workers for frames of `frame_bytes` each, fewer where each would hold
+/// a large frame: their frames in flight take 48 MiB at most, or one frame (at 3840 x 2160,
+/// 32 MiB a frame, one worker).
+unsigned workers_for_frames(unsigned workers, std::size_t frame_bytes);
+
 }  // namespace plot

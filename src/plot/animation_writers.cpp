@@ -187,17 +187,14 @@ void write_pdf_animation(const animation_frames& frames, const theme& th, const 
 
 void write_png_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
                          const std::string& id, const output_options& options) {
-    // What comes before the first thing that moves is drawn once; each frame draws the rest
-    // over a copy of it, the pixels (and bytes) of the whole frame drawn at once.
-    argb_image before;
-    render_rgb24(before, frames.frame(frames.first), th, options.dpi, draw_pass::before_motion);
+    // Each frame is drawn whole, as the still PNG of that figure is, into a worker's buffers.
     in_order<int>(frames.first, frames.last, options.jobs,
                   [&](int i) {
                       // A worker's buffers, reused: a large one is mapped and unmapped by the
                       // allocator at every frame otherwise.
                       thread_local argb_image image;
                       thread_local std::vector<unsigned char> rows;
-                      render_rgb24(image, frames.frame(i), th, options.dpi, draw_pass::from_motion, &before);
+                      render_rgb24(image, frames.frame(i), th, options.dpi);
                       write_atomically(dir / png_frame_file(id, i, frames.count), png_of_pixels(image, options.dpi, rows));
                       return i;
                   },

@@ -35,7 +35,7 @@ void render_argb(argb_image& image, const figure& fig, const theme& th, double d
                  const argb_image* under = nullptr);
 
 /// Draws as render_argb does into `image`, in Cairo's RGB24 as render draws a PNG (whose
-/// pixels these are for the pass all, or for from_motion over before_motion).
+/// pixels these are for the pass all).
 void render_rgb24(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass = draw_pass::all,
                   const argb_image* under = nullptr);
 

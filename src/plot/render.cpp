@@ -88,20 +88,16 @@ void draw_ticks(cairo_t* cr, const theme& th, const tick_set& t, const axis_map&
     cairo_stroke(cr);
 }
 
-/// Which parts of a figure a pass draws, asked part by part in drawing order.
+/// Which parts of a figure a pass draws.
 struct pass_gate {
     draw_pass pass = draw_pass::all;
-    bool moved = false;  // whether a part that moves has come
 
-    /// Whether the pass draws the next part, one that moves or one that stays.
-    bool draws(bool moves) {
-        moved = moved || moves;
+    /// Whether the pass draws a part, one that moves or one that stays.
+    bool draws(bool moves) const {
         switch (pass) {
             case draw_pass::all: return true;
             case draw_pass::still: return !moves;
             case draw_pass::overlay: return moves;
-            case draw_pass::before_motion: return !moved;
-            case draw_pass::from_motion: return moved;
         }
         return true;
     }

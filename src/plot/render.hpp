@@ -23,10 +23,8 @@ struct page_size {
 page_size figure_size(const figure& fig, const theme& th);
 
 /// What draw_figure draws: everything, what stays the same in every frame of an
-/// animation (no overlay series or labels), or only what moves (on top of the former); or,
-/// in drawing order, what comes before the first part that moves (the same in every frame)
-/// and the rest over it, which make the pixels of `all` between them.
-enum class draw_pass { all, still, overlay, before_motion, from_motion };
+/// animation (no overlay series or labels), or only what moves (on top of the former).
+enum class draw_pass { all, still, overlay };
 
 struct placed_text;
 

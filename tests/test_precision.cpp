@@ -7,6 +7,7 @@
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/period_error.hpp"
+#include "pendulum/time_reduction.hpp"
 #include "process.hpp"
 #include "reference.hpp"
 
@@ -16,6 +17,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -433,6 +436,79 @@ TEST(PeriodErrors, IterationAtPiMinus1e12AgainstAnIndependentRun) {
         worst = std::max(worst, rel);
     }
     std::cout << "worst relative error of T_N/T0 at pi - 1e-12: " << worst << "\n";
+}
+
+}  // namespace
+
+namespace {
+
+/// The fields of `text` split at `separator`.
+std::vector<std::string> split_at(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    std::size_t from = 0;
+    for (;;) {
+        const auto at = text.find(separator, from);
+        parts.push_back(text.substr(from, at - from));
+        if (at == std::string::npos) return parts;
+        from = at + 1;
+    }
+}
+
+/// The time unit of a trajectory's --time text (seconds with L = 0.7, g = 9.80665).
+time_scale scale_of(const std::string& unit) {
+    if (unit == "t/T0") return {time_scale::unit::small_periods};
+    if (unit == "t/s") return {time_scale::unit::seconds, 0.7, 9.80665};
+    return {};
+}
+
+TEST(HugeTimes, ApproximantsReduceTheirPhaseExactly) {
+    // approximant_times.csv (make_approximant_times.py): each approximant's own formula, with
+    // the double coefficients and w/w0 written there, at 1e3 to 1.8e308 periods in t/T, t/T0
+    // and seconds. The phase (w/w0) w0 t reduced modulo 2 pi in MPFR keeps theta within a few
+    // ulps of theta0 at any time; formed in doubles it is off by 1e-16 of itself.
+    const auto rows = test_support::read_reference_text("approximant_times.csv");
+    ASSERT_GE(rows.size(), 300u);
+    std::map<std::string, double> worst;
+    double worst_in_doubles_1e6 = 0;
+    int cli_checked = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const auto& f = rows[i];
+        const amplitude a = parse_amplitude(f.at(0));
+        const std::string& method = f.at(1);
+        const double s = number(f.at(3));
+        fourier_solution solution{number(f.at(4)), {}};
+        for (const auto& c : split_at(f.at(5), ';')) solution.coefficients.push_back(number(c));
+        const double want = number(f.at(6));
+        const double ulp = std::nextafter(a.radians(), 4.0) - a.radians();
+        const time_reducer reduce(a, scale_of(f.at(2)), std::fabs(s), solution.frequency_ratio);
+        const double got = solution.theta_at_phase(reduce.phase(s));
+        const double u = std::fabs(got - want) / ulp;
+        EXPECT_LE(u, 4) << f.at(0) << " " << method << " " << f.at(2) << " " << f.at(3) << ": got "
+                        << format_double(got) << ", want " << f.at(6);
+        worst[method] = std::max(worst[method], u);
+        if (f.at(2) == "t/T0" && std::fabs(s) < 2e6) {
+            // The same formula at w0 t in doubles, for comparison.
+            const double naive = solution.theta(2 * std::numbers::pi * s);
+            worst_in_doubles_1e6 = std::max(worst_in_doubles_1e6, std::fabs(naive - want));
+        }
+        // The command line, where the program's own coefficients are these doubles.
+        const fourier_solution own = method_solution(parse_method(method), a);
+        const bool huge = f.at(3) == "1e300" || f.at(3) == "1.7976931348623157e308" || f.at(3) == "999999.3";
+        if (huge && own.frequency_ratio == solution.frequency_ratio && own.coefficients == solution.coefficients) {
+            const std::string args = "trajectory --theta0 " + f.at(0) + " --method " + method + " --time " + f.at(2) +
+                                     " --at " + f.at(3) + (f.at(2) == "t/s" ? " --length 0.7 --g 9.80665" : "");
+            const auto r = test_support::run_cli(args);
+            ASSERT_EQ(r.status, 0) << args << ": " << r.err;
+            const auto line = r.out.substr(r.out.find('\n') + 1);
+            const double cli = number(line.substr(line.find(',') + 1));
+            EXPECT_LE(std::fabs(cli - want) / ulp, 4) << args << ": got " << format_double(cli) << ", want " << f.at(6);
+            ++cli_checked;
+        }
+    }
+    for (const auto& [method, u] : worst) std::cout << method << ": worst error " << u << " ulps of theta0\n";
+    std::cout << "the phase in doubles, up to 1e6 periods: worst error " << worst_in_doubles_1e6 << " rad\n";
+    std::cout << "command-line rows (the program's coefficients are the file's doubles): " << cli_checked << "\n";
+    EXPECT_GE(cli_checked, 21);
 }
 
 }  // namespace

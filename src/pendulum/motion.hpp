@@ -54,6 +54,10 @@ public:
     /// The libration released at rest from amplitude theta0 (the paper's start).
     static motion from_amplitude(const pendulum::amplitude& theta0);
 
+    /// How a motion was given: released at rest from an amplitude, from a state, or an energy.
+    enum class origin { amplitude, state, energy };
+    /// How this motion was given (from_amplitude, from_state or from_energy).
+    origin given_as() const { return origin_; }
     /// The regime of the motion.
     regime kind() const { return kind_; }
     /// The energy E per m g L (from the bottom), rounded once.
@@ -101,6 +105,7 @@ private:
     double forward_velocity(double tau) const;
 
     regime kind_ = regime::libration;
+    origin origin_ = origin::state;
     pendulum_state start_{};
     double energy_ = 0;
     double gap_ = 0;

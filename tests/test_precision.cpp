@@ -6,6 +6,7 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/motion.hpp"
 #include "pendulum/period_error.hpp"
 #include "pendulum/time_reduction.hpp"
 #include "process.hpp"
@@ -509,6 +510,66 @@ TEST(HugeTimes, ApproximantsReduceTheirPhaseExactly) {
     std::cout << "the phase in doubles, up to 1e6 periods: worst error " << worst_in_doubles_1e6 << " rad\n";
     std::cout << "command-line rows (the program's coefficients are the file's doubles): " << cli_checked << "\n";
     EXPECT_GE(cli_checked, 21);
+}
+
+}  // namespace
+
+namespace {
+
+/// The value after `flag ` in a command line, or "" without it.
+std::string argument(const std::string& args, const std::string& flag) {
+    const auto at = args.find(flag + " ");
+    if (at == std::string::npos) return "";
+    const auto from = at + flag.size() + 1;
+    return args.substr(from, args.find(' ', from) - from);
+}
+
+TEST(HugeTimes, StatesAndEnergiesReduceTheTimeExactly) {
+    // state_times.csv (make_state_times.py): librations from a state or an energy, rotations
+    // both ways and the separatrix, up to 1e300 periods on. The period comes from the exact
+    // energy of the state, the time is reduced modulo it in MPFR, and a rotation's whole turns
+    // are added back exactly: theta modulo 2 pi and omega within a few ulps, the unwrapped
+    // angle (1e301 at 1e300 periods) within an ulp or two of itself.
+    const auto rows = test_support::read_reference_text("state_times.csv");
+    ASSERT_GE(rows.size(), 80u);
+    const double two_pi = 2 * std::numbers::pi;
+    const double ulp_two_pi = std::nextafter(two_pi, 7.0) - two_pi;
+    double worst_reduced = 0;
+    double worst_unwrapped = 0;
+    double worst_omega = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const std::string& args = rows[i].at(0);
+        const double s = number(argument(args, "--at"));
+        const std::string energy = argument(args, "--energy");
+        const motion m = energy.empty() ? motion::from_state({number(argument(args, "--theta0")),
+                                                              number(argument(args, "--omega0"))})
+                                        : motion::from_energy(number(energy));
+        const double want_omega = number(rows[i].at(3));
+        // The library: theta at the reduced time is theta modulo 2 pi.
+        if (m.has_period()) {
+            const time_reducer reduce(m, scale_of(argument(args, "--time")), std::fabs(s));
+            const double t = reduce(s);
+            const double off = std::remainder(m.theta(t) - number(rows[i].at(2)), two_pi) / ulp_two_pi;
+            EXPECT_LE(std::fabs(off), 4) << args << ": theta mod 2 pi off by " << off << " ulps of 2 pi";
+            worst_reduced = std::max(worst_reduced, std::fabs(off));
+        }
+        // The command line: the unwrapped angle and omega.
+        const auto r = test_support::run_cli(args);
+        ASSERT_EQ(r.status, 0) << args << ": " << r.err;
+        const auto fields = split_at(r.out.substr(r.out.find('\n') + 1), ',');
+        ASSERT_EQ(fields.size(), 3u) << r.out;
+        const double theta = number(fields[1]);
+        const double want = number(rows[i].at(1));
+        const double scale = std::max(std::fabs(want), two_pi);
+        const double u = std::fabs(theta - want) / (std::nextafter(scale, INFINITY) - scale);
+        EXPECT_LE(u, 4) << args << ": got " << fields[1] << ", want " << rows[i].at(1);
+        worst_unwrapped = std::max(worst_unwrapped, u);
+        const double omega_off = std::fabs(number(fields[2]) - want_omega);
+        EXPECT_LE(omega_off, 2e-15) << args << ": omega " << fields[2] << ", want " << rows[i].at(3);
+        worst_omega = std::max(worst_omega, omega_off);
+    }
+    std::cout << "worst: theta mod 2 pi " << worst_reduced << " ulps of 2 pi, unwrapped theta " << worst_unwrapped
+              << " ulps of itself, omega " << worst_omega << "\n";
 }
 
 }  // namespace

@@ -604,3 +604,18 @@ TEST(PeriodErrors, Order92AtPiMinus1e12AgainstAnIndependentRun) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(NearPi, PeriodRatioAloneIsTheSolutionsOwn) {
+    // period_ratio() skips the nome the coefficients need: the same double as the solution's,
+    // from subnormal amplitudes to pi - 1e-300.
+    std::vector<amplitude> amplitudes{amplitude(5e-324), amplitude(1e-10), amplitude(1.0), amplitude(2.5)};
+    for (const auto& r : near_pi_rows()) amplitudes.push_back(parse_amplitude(r.expression));
+    for (int i = 1; i < 100; ++i) amplitudes.emplace_back(i * std::numbers::pi / 100);
+    for (const auto& a : amplitudes) {
+        EXPECT_EQ(period_ratio(a), exact_solution(a).period_ratio()) << format_double(a.radians());
+    }
+}
+
+}  // namespace

@@ -33,6 +33,9 @@ STARTS = [
     ("--theta0 1 --omega0 0.5", "1", "0.5"),
     ("--theta0 -2 --omega0 -1.2", "-2", "-1.2"),
     ("--theta0 0 --omega0 1.9999999", "0", "1.9999999"),
+    # omega the double nearest 2 cos(theta/2): 1.5e-16 and 1.0e-17 from the separatrix.
+    ("--theta0 0.7 --omega0 1.8787454256947578", "0.7", "1.8787454256947578"),
+    ("--theta0 2.2 --omega0 0.9071922428511546", "2.2", "0.9071922428511546"),
     ("--energy 1.5", None, "1.5"),
     ("--energy 2.5", None, "2.5"),
     ("--energy 2", None, "2"),

@@ -165,10 +165,8 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
         if (unit.name == "t/s") ts = {time_scale::unit::seconds, *o.length, o.g};
         reduce.emplace(m, ts, largest, is_exact ? 0.0 : approx.frequency_ratio);
     }
-    // A libration from a state starts its approximant's clock where the state is: the phase
-    // at time 0, reduced modulo 2 pi once.
-    const double start_phase =
-        is_exact || paper_table ? 0.0 : std::remainder(approx.frequency_ratio * m.libration_clock(0.0), 2 * std::numbers::pi);
+    // A libration from a state runs its approximant on its own clock: the phase at time 0.
+    const double phase_at_start = is_exact || paper_table ? 0.0 : start_phase(m, approx);
     const int turns_per_period = m.start().omega < 0 ? -1 : 1;
     const auto write = [&](double s) {
         if (!is_exact) {
@@ -177,8 +175,8 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
                 writer.row({s, approx.theta_at_phase(x)});
                 return;
             }
-            std::vector<double> row{s, m.libration_center() + approx.theta_at_phase(x + start_phase)};
-            if (state) row.push_back(velocity_at_phase(approx, x + start_phase));
+            std::vector<double> row{s, m.libration_center() + approx.theta_at_phase(x + phase_at_start)};
+            if (state) row.push_back(velocity_at_phase(approx, x + phase_at_start));
             writer.row(row);
             return;
         }

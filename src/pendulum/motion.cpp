@@ -225,6 +225,10 @@ double motion::libration_center() const {
     return mirror_ * turns_ * two_pi_hi + mirror_ * turns_ * two_pi_lo;
 }
 
+double start_phase(const motion& m, const fourier_solution& solution) {
+    return std::remainder(solution.frequency_ratio * m.libration_clock(0.0), 2 * pi);
+}
+
 double motion::forward_theta(double tau) const {
     switch (kind_) {
     case regime::libration: return libration_->theta(tau);

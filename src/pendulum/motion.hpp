@@ -2,6 +2,7 @@
 #pragma once
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 
 #include <optional>
@@ -118,6 +119,11 @@ private:
     std::optional<exact_solution> libration_;
     std::optional<pendulum::amplitude> given_;  ///< the amplitude itself, for from_amplitude()
 };
+
+/// The phase (w/w0) w0 t, reduced modulo 2 pi, that a Fourier solution has at time 0 when it
+/// runs on a libration's own clock (libration_clock(0)); throws as motion::amplitude() does.
+/// theta(t) = libration_center() + solution.theta_at_phase(phase of t + start_phase).
+double start_phase(const motion& m, const fourier_solution& solution);
 
 /// The incomplete elliptic integral of the first kind F(psi | k) for the angle psi in [0, pi]
 /// given as atan2(s, c) (s >= 0, s and c not both 0), with the complementary modulus k':

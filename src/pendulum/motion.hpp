@@ -2,6 +2,7 @@
 #pragma once
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 
 #include <optional>
@@ -54,6 +55,10 @@ public:
     /// The libration released at rest from amplitude theta0 (the paper's start).
     static motion from_amplitude(const pendulum::amplitude& theta0);
 
+    /// How a motion was given: released at rest from an amplitude, from a state, or an energy.
+    enum class origin { amplitude, state, energy };
+    /// How this motion was given (from_amplitude, from_state or from_energy).
+    origin given_as() const { return origin_; }
     /// The regime of the motion.
     regime kind() const { return kind_; }
     /// The energy E per m g L (from the bottom), rounded once.
@@ -101,6 +106,7 @@ private:
     double forward_velocity(double tau) const;
 
     regime kind_ = regime::libration;
+    origin origin_ = origin::state;
     pendulum_state start_{};
     double energy_ = 0;
     double gap_ = 0;
@@ -113,6 +119,11 @@ private:
     std::optional<exact_solution> libration_;
     std::optional<pendulum::amplitude> given_;  ///< the amplitude itself, for from_amplitude()
 };
+
+/// The phase (w/w0) w0 t, reduced modulo 2 pi, that a Fourier solution has at time 0 when it
+/// runs on a libration's own clock (libration_clock(0)); throws as motion::amplitude() does.
+/// theta(t) = libration_center() + solution.theta_at_phase(phase of t + start_phase).
+double start_phase(const motion& m, const fourier_solution& solution);
 
 /// The incomplete elliptic integral of the first kind F(psi | k) for the angle psi in [0, pi]
 /// given as atan2(s, c) (s >= 0, s and c not both 0), with the complementary modulus k':

@@ -42,6 +42,17 @@ double velocity(const fourier_solution& solution, double w0_t) {
     return sum;
 }
 
+double velocity_at_phase(const fourier_solution& solution, double x) {
+    if (!std::isfinite(x)) throw domain_error("phase must be finite, got " + format_double(x));
+    const double w = solution.frequency_ratio;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < solution.coefficients.size(); ++k) {
+        const double h = static_cast<double>(2 * k + 1);
+        sum -= solution.coefficients[k] * h * w * std::sin(h * x);
+    }
+    return sum;
+}
+
 double separatrix_velocity(double theta) {
     if (!(std::fabs(theta) <= M_PI)) {
         throw domain_error("the separatrix is drawn for theta in [-pi, pi], got " + format_double(theta));

@@ -13,6 +13,9 @@ double velocity_at_fraction(const exact_solution& solution, double s);
 /// The angular velocity theta'/w0 of a Fourier solution at time w0 t.
 double velocity(const fourier_solution& solution, double w0_t);
 
+/// The angular velocity theta'/w0 of a Fourier solution at the phase x = (w/w0) w0 t.
+double velocity_at_phase(const fourier_solution& solution, double x);
+
 /// The upper branch of the separatrix: theta'/w0 = 2 cos(theta/2), for theta in [-pi, pi].
 double separatrix_velocity(double theta);
 

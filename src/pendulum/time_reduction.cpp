@@ -4,7 +4,10 @@
 #include "pendulum/mp_real.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <functional>
+#include <numbers>
 
 namespace pendulum {
 
@@ -13,10 +16,15 @@ using mp::real;
 struct time_reducer::state {
     real scale;   // w0 t per unit of time
     real period;  // the period in w0 t
-    long double scale_extended;   // the same, for times within one period
+    real ratio;   // w/w0 of a Fourier solution, 0 without
+    real two_pi;
+    long double scale_extended;  // the same, for times within one period
     long double period_extended;
+    long double ratio_extended;
     mutable real product;
+    mutable real quotient;
     mutable real rest;
+    mutable real turns;  // the whole periods the last reduction took off
 };
 
 namespace {
@@ -30,26 +38,92 @@ real complementary_modulus(const amplitude& a, mpfr_prec_t bits) {
     return mp::cos(real(a.radians(), bits) / 2.0);
 }
 
+/// The period 4 K(k) in w0 t of the libration of amplitude a.
+real libration_period(const amplitude& a, mpfr_prec_t bits) {
+    return 2.0 * mp::pi(bits) / mp::agm(real(1.0, bits), complementary_modulus(a, bits));
+}
+
+/// The period of a motion in w0 t from its exact energy: a libration's 4 K(k) with
+/// k' = sqrt((2 - E)/2), a rotation's revolution 2 k K(k) with k = sqrt(2/E),
+/// k' = sqrt((E - 2)/E). The energy of a state is exact at any precision.
+real motion_period(const motion& m, mpfr_prec_t bits) {
+    if (m.given_as() == motion::origin::amplitude) return libration_period(m.amplitude(), bits);
+    if (!m.has_period()) (void)m.period();  // throws, naming the separatrix
+    // The gap 2 - E of a state may be far below E (a state next to the separatrix): 320 more
+    // bits keep the gap of any two doubles to the precision asked for.
+    const mpfr_prec_t energy_bits = bits + 320;
+    real energy(energy_bits);
+    real gap(energy_bits);
+    if (m.given_as() == motion::origin::energy) {
+        energy = real(m.energy(), energy_bits);
+        gap = 2.0 - energy;
+    } else {
+        const pendulum_state start = m.start();
+        const real half_angle = real(start.theta, energy_bits) / 2.0;
+        const real kinetic = real(start.omega, energy_bits) * real(start.omega, energy_bits) / 2.0;
+        const real s = mp::sin(half_angle);
+        const real c = mp::cos(half_angle);
+        energy = kinetic + 2.0 * s * s;
+        gap = 2.0 * c * c - kinetic;
+    }
+    const real one(1.0, energy_bits);
+    const real exact = m.kind() == regime::libration
+                           ? 2.0 * mp::pi(energy_bits) / mp::agm(one, mp::sqrt(gap / 2.0))
+                           : mp::pi(energy_bits) * mp::sqrt(2.0 / energy) / mp::agm(one, mp::sqrt(-gap / energy));
+    real period(bits);
+    mpfr_set(period.get(), exact.get(), MPFR_RNDN);
+    return period;
+}
+
+/// w0 t per unit of time, `period` being the motion's period in w0 t.
+real unit_scale(const time_scale& scale, const real& period) {
+    const mpfr_prec_t bits = period.precision();
+    if (scale.what == time_scale::unit::small_periods) return 2.0 * mp::pi(bits);
+    if (scale.what == time_scale::unit::seconds) return mp::sqrt(real(scale.g, bits) / real(scale.length, bits));
+    return period;
+}
+
+long double extended(const real& x) { return mpfr_get_ld(x.get(), MPFR_RNDN); }
+
 }  // namespace
 
-time_reducer::time_reducer(const amplitude& a, const time_scale& scale, double largest, double frequency_ratio) {
-    if (!(std::isfinite(largest) && largest >= 0)) throw domain_error("the largest time must be finite, got " + format_double(largest));
-    // Enough bits for the integer part of the largest time in periods and 120 more; w0 per
-    // second may be as large as 5e163.
-    double per_unit = 2 * 3.2;  // an upper bound of w0 t per unit, with a period of at least 2 pi
-    if (scale.what == time_scale::unit::periods) per_unit = 1;
-    if (scale.what == time_scale::unit::seconds) per_unit = std::sqrt(scale.g) / std::sqrt(scale.length);
-    const double cycles = std::max(1.0, largest * per_unit);
-    const mpfr_prec_t bits = 128 + std::max(0, std::ilogb(cycles));
-    const real two_pi = 2.0 * mp::pi(bits);
-    real four_k = two_pi / mp::agm(real(1.0, bits), complementary_modulus(a, bits));
-    real period = frequency_ratio > 0 ? two_pi / real(frequency_ratio, bits) : four_k;
-    real unit_scale = four_k;
-    if (scale.what == time_scale::unit::small_periods) unit_scale = two_pi;
-    if (scale.what == time_scale::unit::seconds) unit_scale = mp::sqrt(real(scale.g, bits) / real(scale.length, bits));
-    const auto extended = [](const real& x) { return mpfr_get_ld(x.get(), MPFR_RNDN); };
-    state_ = std::make_unique<state>(
-        state{unit_scale, period, extended(unit_scale), extended(period), real(bits), real(bits)});
+/// Sets up a reducer's state for a period given at any precision.
+struct reducer_setup {
+    static std::unique_ptr<time_reducer::state> make(const std::function<real(mpfr_prec_t)>& period_at,
+                                                     const time_scale& scale, double largest, double frequency_ratio);
+};
+
+time_reducer::time_reducer(const amplitude& a, const time_scale& scale, double largest, double frequency_ratio)
+    : state_(reducer_setup::make([&a](mpfr_prec_t bits) { return libration_period(a, bits); }, scale, largest,
+                        frequency_ratio)) {}
+
+time_reducer::time_reducer(const motion& m, const time_scale& scale, double largest, double frequency_ratio)
+    : state_(reducer_setup::make([&m](mpfr_prec_t bits) { return motion_period(m, bits); }, scale, largest,
+                        frequency_ratio)) {}
+
+std::unique_ptr<time_reducer::state> reducer_setup::make(const std::function<real(mpfr_prec_t)>& period_at,
+                                                         const time_scale& scale, double largest,
+                                                         double frequency_ratio) {
+    if (!(std::isfinite(largest) && largest >= 0)) {
+        throw domain_error("the largest time must be finite, got " + format_double(largest));
+    }
+    if (!(frequency_ratio >= 0 && std::isfinite(frequency_ratio))) {
+        throw domain_error("a frequency ratio must be finite and > 0, got " + format_double(frequency_ratio));
+    }
+    // Enough bits for the integer part of the largest time in periods (of the motion, and of
+    // the Fourier solution's phase) and 128 more, from the sizes at a low precision first.
+    const real rough_period = period_at(64);
+    const real rough_scale = unit_scale(scale, rough_period);
+    const int time_exponent = std::ilogb(std::max(largest, 1.0));
+    long cycles = time_exponent + mp::exponent(rough_scale) - mp::exponent(rough_period) + 1;
+    if (frequency_ratio > 0) cycles = std::max(cycles, time_exponent + mp::exponent(rough_scale) + std::ilogb(frequency_ratio));
+    const mpfr_prec_t bits = 128 + std::max(0L, cycles);
+    real period = period_at(bits);
+    real per_unit = unit_scale(scale, period);
+    auto s = std::make_unique<time_reducer::state>(time_reducer::state{
+        per_unit, period, real(frequency_ratio, bits), 2.0 * mp::pi(bits), extended(per_unit), extended(period),
+        static_cast<long double>(frequency_ratio), real(bits + 64), real(bits), real(bits), real(0.0, bits)});
+    return s;
 }
 
 time_reducer::~time_reducer() = default;
@@ -58,10 +132,40 @@ double time_reducer::operator()(double s) const {
     if (!std::isfinite(s)) throw domain_error("time must be finite, got " + format_double(s));
     // Within one period the extended product rounded once is right to an ulp of w0 t.
     const long double w = s * state_->scale_extended;
-    if (std::fabs(w) < state_->period_extended) return static_cast<double>(w);
+    if (std::fabs(w) < state_->period_extended) {
+        mpfr_set_zero(state_->turns.get(), 1);
+        return static_cast<double>(w);
+    }
     mpfr_mul_d(state_->product.get(), state_->scale.get(), s, MPFR_RNDN);
-    mpfr_fmod(state_->rest.get(), state_->product.get(), state_->period.get(), MPFR_RNDN);
+    // n = trunc(w0 t / P) (off by one at worst next to a multiple of P, where the rest is
+    // then just outside (-P, P): still the exact difference), rest = w0 t - n P rounded once.
+    mpfr_div(state_->quotient.get(), state_->product.get(), state_->period.get(), MPFR_RNDN);
+    mpfr_trunc(state_->turns.get(), state_->quotient.get());
+    mpfr_fms(state_->rest.get(), state_->turns.get(), state_->period.get(), state_->product.get(), MPFR_RNDN);
+    mpfr_neg(state_->rest.get(), state_->rest.get(), MPFR_RNDN);
     return state_->rest.to_double();
+}
+
+double time_reducer::phase(double s) const {
+    if (!std::isfinite(s)) throw domain_error("time must be finite, got " + format_double(s));
+    if (!(state_->ratio_extended > 0)) throw domain_error("a phase needs the Fourier solution's frequency ratio");
+    // Within one period of the phase: w0 t rounded once, times w/w0 rounded once (an ulp or
+    // two of x, the same as the formula at w0 t in doubles).
+    const double w = static_cast<double>(s * state_->scale_extended);
+    const double x = static_cast<double>(state_->ratio_extended) * w;
+    if (std::fabs(x) < 2 * std::numbers::pi) return x;
+    mpfr_mul_d(state_->product.get(), state_->scale.get(), s, MPFR_RNDN);
+    mpfr_mul(state_->product.get(), state_->product.get(), state_->ratio.get(), MPFR_RNDN);
+    mpfr_remainder(state_->rest.get(), state_->product.get(), state_->two_pi.get(), MPFR_RNDN);
+    return state_->rest.to_double();
+}
+
+double time_reducer::plus_turns(double angle, int turns_per_period) const {
+    if (mpfr_zero_p(state_->turns.get())) return angle;
+    mpfr_mul(state_->product.get(), state_->turns.get(), state_->two_pi.get(), MPFR_RNDN);
+    mpfr_mul_si(state_->product.get(), state_->product.get(), turns_per_period, MPFR_RNDN);
+    mpfr_add_d(state_->product.get(), state_->product.get(), angle, MPFR_RNDN);
+    return mpfr_get_d(state_->product.get(), MPFR_RNDN);
 }
 
 }  // namespace pendulum

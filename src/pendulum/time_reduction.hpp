@@ -2,6 +2,7 @@
 #pragma once
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/motion.hpp"
 
 #include <memory>
 
@@ -16,24 +17,38 @@ struct time_scale {
     double g = 1;       ///< m/s^2, for seconds
 };
 
-/// Turns times into w0 t reduced modulo one period of a motion of amplitude theta0, exactly:
-/// the product with the unit and the reduction are done in MPFR with every bit of the time,
-/// so that a time of a million periods loses nothing (in doubles w0 t alone is off by
-/// 1e-16 of itself). The period is the exact motion's 4 K(k), or 2 pi / (w/w0) of a Fourier
-/// solution of that frequency ratio (taken as exact).
+/// Turns times into w0 t reduced modulo one period of a motion, exactly: the product with
+/// the unit and the reduction are done in MPFR with every bit of the time and enough bits
+/// for its integer part in periods, so that any finite time, up to the largest double, loses
+/// nothing (in doubles w0 t alone is off by 1e-16 of itself). The period is the exact
+/// motion's (4 K(k) of a libration, 2 k K(k) of a rotation's revolution), computed from the
+/// exact amplitude or from the exact energy of a state; a Fourier solution's phase
+/// (w/w0) w0 t is reduced modulo 2 pi with its frequency ratio taken as exact.
 class time_reducer {
 public:
-    /// For times up to `largest` in size in `scale`; frequency_ratio 0 means the exact motion.
+    /// For times up to `largest` in size in `scale` of the libration of amplitude theta0;
+    /// frequency_ratio > 0 also prepares phase() for a Fourier solution of that w/w0.
     time_reducer(const amplitude& theta0, const time_scale& scale, double largest, double frequency_ratio = 0);
+    /// The same for a motion with a period (a libration or a rotation); throws domain_error
+    /// at the separatrix.
+    time_reducer(const motion& m, const time_scale& scale, double largest, double frequency_ratio = 0);
     ~time_reducer();
     time_reducer(const time_reducer&) = delete;
     time_reducer& operator=(const time_reducer&) = delete;
 
-    /// w0 t for the time s, reduced to (-P, P) with the sign of s (P the period in w0 t).
+    /// w0 t for the time s, reduced to (-P, P) with the sign of s (P the period in w0 t); the
+    /// whole periods taken off are kept for plus_turns().
     double operator()(double s) const;
+    /// The phase (w/w0) w0 t of the Fourier solution at the time s, reduced to (-2 pi, 2 pi);
+    /// throws domain_error unless a frequency ratio was given.
+    double phase(double s) const;
+    /// angle + 2 pi n turns_per_period rounded once, n the whole periods (signed) the last
+    /// operator() took off: a rotation's unwrapped angle to the last bit at any time.
+    double plus_turns(double angle, int turns_per_period) const;
 
 private:
     struct state;
+    friend struct reducer_setup;
     std::unique_ptr<state> state_;
 };
 

@@ -30,8 +30,9 @@ EXPRESSION = "pi-1e-12"
 HIGHEST = 100
 
 
-def run(bits):
-    """[(N, lambda)] for N = 0..HIGHEST at `bits` fractional bits."""
+def run(bits, highest=HIGHEST, keep=()):
+    """[(N, lambda)] for N = 0..highest at `bits` fractional bits; for the levels in `keep`
+    (N, lambda, [c_0, .., c_N]) with the coefficients in radians."""
     mp.prec = bits + 64
     one = 1 << bits
     # pi - 1e-12 as the CLI holds it: pi - d with d the double nearest 1e-12 (the iteration
@@ -66,7 +67,7 @@ def run(bits):
     M = 64
     out = []
     tolerance = 1 << 40
-    for level in range(HIGHEST + 1):
+    for level in range(highest + 1):
         count = level + 1
         M = max(M, 4 * count)
         coarse = project(c, count, M)
@@ -79,7 +80,10 @@ def run(bits):
         C = [mp.ldexp(v, -bits) for v in fine]
         lam = mp.fsum(C[k] / (2 * k + 1) ** 2 for k in range(count)) / theta0
         c = [int(mp.nint(C[k] / ((2 * k + 1) ** 2 * lam) * one)) for k in range(count)]
-        out.append((level, lam))
+        if level in keep:
+            out.append((level, lam, [C[k] / ((2 * k + 1) ** 2 * lam) for k in range(count)]))
+        else:
+            out.append((level, lam))
         # Harmonics that fell below the precision only cost time.
         print(bits, level, M, mp.nstr(lam, 20), file=sys.stderr, flush=True)
         M //= 2

@@ -20,6 +20,8 @@ using std::numbers::pi;
 
 double fourier_solution::theta(double w0_t) const {
     if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
+    // A level of the iteration without a period (lambda < 0) has no value at any time.
+    if (std::isnan(frequency_ratio)) return std::numeric_limits<double>::quiet_NaN();
     return theta_at_phase(frequency_ratio * w0_t);
 }
 

@@ -31,26 +31,32 @@ double velocity_at_fraction(const exact_solution& solution, double s) {
     return sign * 2.0 * k * j.cn;
 }
 
-double velocity(const fourier_solution& solution, double w0_t) {
-    if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
+namespace {
+
+/// theta'/w0 of a Fourier solution: -sum c_k h w sin(angle(h)) over h = 2k + 1, where
+/// angle(h) is the harmonic's argument.
+template <class Angle>
+double velocity_sum(const fourier_solution& solution, Angle angle) {
     const double w = solution.frequency_ratio;
     double sum = 0.0;
     for (std::size_t k = 0; k < solution.coefficients.size(); ++k) {
         const double h = static_cast<double>(2 * k + 1);
-        sum -= solution.coefficients[k] * h * w * std::sin(h * w * w0_t);
+        sum -= solution.coefficients[k] * h * w * std::sin(angle(h));
     }
     return sum;
 }
 
+}  // namespace
+
+double velocity(const fourier_solution& solution, double w0_t) {
+    if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
+    const double w = solution.frequency_ratio;
+    return velocity_sum(solution, [&](double h) { return h * w * w0_t; });
+}
+
 double velocity_at_phase(const fourier_solution& solution, double x) {
     if (!std::isfinite(x)) throw domain_error("phase must be finite, got " + format_double(x));
-    const double w = solution.frequency_ratio;
-    double sum = 0.0;
-    for (std::size_t k = 0; k < solution.coefficients.size(); ++k) {
-        const double h = static_cast<double>(2 * k + 1);
-        sum -= solution.coefficients[k] * h * w * std::sin(h * x);
-    }
-    return sum;
+    return velocity_sum(solution, [x](double h) { return h * x; });
 }
 
 double separatrix_velocity(double theta) {

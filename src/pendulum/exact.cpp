@@ -251,7 +251,7 @@ double exact_solution::coefficient_by_quadrature(int n) const {
 
 double period_ratio(const amplitude& theta0) {
     // As exact_solution's, without the nome (a second AGM) that only the coefficients need.
-    return static_cast<double>(1 / agm_extended(1, theta0.kp_extended()));
+    return static_cast<double>(exact_period_extended(theta0));
 }
 
 std::vector<double> fourier_coefficients(const amplitude& theta0, int count) {

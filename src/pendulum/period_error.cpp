@@ -106,10 +106,12 @@ using extended_period = long double (*)(const amplitude& a);
 period_error closed_form_error(const amplitude& a, int n, double (*period)(const amplitude&, int), mp_period f,
                                extended_period extended = nullptr) {
     if (correctly_rounded_depth > 0) return mp_closed_form_error(a, n, f);
-    const double fast = period(a, n) / period_ratio(a) - 1;
+    // One AGM for both tiers: period_ratio(a) is this, rounded to a double.
+    const long double exact = exact_period_extended(a);
+    const double fast = period(a, n) / static_cast<double>(exact) - 1;
     if (std::fabs(fast) >= double_enough) return {period_error::kind::value, fast};
     if (extended) {
-        const long double error = extended(a) / exact_period_extended(a) - 1;
+        const long double error = extended(a) / exact - 1;
         if (std::fabs(error) >= extended_enough) return {period_error::kind::value, static_cast<double>(error)};
     }
     return mp_closed_form_error(a, n, f);

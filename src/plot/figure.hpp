@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <bit>
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -47,6 +50,21 @@ enum class line_style { none, solid, dashed, dotted, dash_dot, dash_dot_dot };
 /// How a series' points are marked.
 enum class marker_style { none, open_circle, filled_circle };
 
+/// A hash of a curve's parameter: its bits, mixed (std::hash<double> hashes them byte by
+/// byte, a tenth of a sampling's work); 0 and -0, equal, hash alike.
+struct parameter_hash {
+    std::size_t operator()(double u) const noexcept {
+        std::uint64_t b = u == 0 ? 0 : std::bit_cast<std::uint64_t>(u);
+        b ^= b >> 33;
+        b *= 0xff51afd7ed558ccdULL;
+        b ^= b >> 33;
+        return static_cast<std::size_t>(b);
+    }
+};
+
+/// A curve's values at the parameters evaluated.
+using curve_values = std::unordered_map<double, std::pair<double, double>, parameter_hash>;
+
 /// A curve given by a function: the points (x(u), y(u)) for u from u0 to u1, a line
 /// wherever both are finite (a non-finite value breaks it). The plot layer samples it when
 /// it draws, as finely as the device needs for the line to stay within a twentieth of a
@@ -72,7 +90,7 @@ struct curve {
         /// The curve at each parameter evaluated, up to a bound: a sampling for another
         /// tolerance (the PNG and the PDF of one figure) evaluates the function at the
         /// same parameters again, and functions may be costly (an error in MPFR).
-        std::unordered_map<double, std::pair<double, double>> values;
+        curve_values values;
     };
     std::shared_ptr<memo> last = std::make_shared<memo>();  ///< see memo
 };

@@ -72,7 +72,7 @@ constexpr std::size_t max_values = std::size_t{1} << 16;
 
 /// The curve at u, from `values` if it is there (kept there if there is room); `values`
 /// may be null. The caller holds the memo's lock.
-std::pair<double, double> remembered_at(const curve& c, std::unordered_map<double, std::pair<double, double>>* values,
+std::pair<double, double> remembered_at(const curve& c, curve_values* values,
                                         double u) {
     if (!values) return c.at(u);
     if (const auto known = values->find(u); known != values->end()) return known->second;
@@ -91,7 +91,7 @@ class curve_sampler {
 public:
     curve_sampler(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
                   std::vector<double>& x, std::vector<double>& y, std::vector<double>& u,
-                  std::unordered_map<double, std::pair<double, double>>* values)
+                  curve_values* values)
         : c_(c), mx_(mx), my_(my), clip_(clip), tolerance_(tolerance), x_(x), y_(y), u_(u), values_(values) {}
 
     void run() {
@@ -206,7 +206,7 @@ private:
     std::vector<double>& x_;
     std::vector<double>& y_;
     std::vector<double>& u_;
-    std::unordered_map<double, std::pair<double, double>>* values_;
+    curve_values* values_;
 };
 
 std::function<void(const sampled_curve&)>& observer() {

@@ -216,25 +216,34 @@ std::string png_of(const unsigned char* data, int stride, int width, int height,
     std::vector<png_color> palette;
     bool fits = true;
     for (int y = 0; y < height && fits; ++y) {
+        // A whole row at a time, without a branch per pixel (the compiler vectorises it).
+        const auto* src = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
         png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width;
+        std::uint32_t off_grey = 0;
         for (int x = 0; x < width; ++x) {
-            const std::uint32_t p = pixel(x, y);
+            const std::uint32_t p = src[x] & 0xffffffu;
             const std::uint32_t b = p & 0xff;
-            if (p != (b | b << 8 | b << 16)) {
-                fits = false;
-                break;
-            }
+            off_grey |= p ^ (b * 0x010101u);
             dst[x] = static_cast<png_byte>(b);
         }
+        fits = off_grey == 0;
     }
     if (!fits) {
         color_type = PNG_COLOR_TYPE_PALETTE;
         fits = true;
         std::unordered_map<std::uint32_t, png_byte> index;
+        // Line art is runs of one colour: a pixel like the one before needs no lookup.
+        std::uint32_t last = 0;
+        png_byte last_index = 0;
+        bool have_last = false;
         for (int y = 0; y < height && fits; ++y) {
             png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width;
             for (int x = 0; x < width; ++x) {
                 const std::uint32_t p = pixel(x, y);
+                if (have_last && p == last) {
+                    dst[x] = last_index;
+                    continue;
+                }
                 auto it = index.find(p);
                 if (it == index.end()) {
                     if (palette.size() == 256) {
@@ -246,6 +255,9 @@ std::string png_of(const unsigned char* data, int stride, int width, int height,
                                                 static_cast<png_byte>(p & 0xff)});
                 }
                 dst[x] = it->second;
+                last = p;
+                last_index = it->second;
+                have_last = true;
             }
         }
     }

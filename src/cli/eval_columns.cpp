@@ -7,6 +7,8 @@ namespace pendulum::cli {
 
 eval_point::eval_point(const amplitude& t, unsigned needs) : theta0(t.radians()), from_pi(t.from_pi()) {
     if (needs & need_exact) exact.emplace(t);
+    // The same rounding of the same AGM as the solution's.
+    if (needs & need_exact_period) exact_period = exact ? exact->period_ratio() : pendulum::period_ratio(t);
     if (needs & need_lowest) lowest.emplace(lowest_order(t));
     if (needs & need_first) first.emplace(first_order(t));
     if (needs & need_second) second.emplace(second_order(t));
@@ -17,7 +19,7 @@ namespace {
 
 constexpr std::array<eval_column, 18> columns = {{
     {"theta0", "the amplitude in radians", 0, [](const eval_point& p) { return p.theta0; }},
-    {"period_exact", "T/T0, exact", need_exact, [](const eval_point& p) { return p.exact->period_ratio(); }},
+    {"period_exact", "T/T0, exact", need_exact_period, [](const eval_point& p) { return *p.exact_period; }},
     {"period_lowest", "T/T0, lowest order", need_lowest, [](const eval_point& p) { return p.lowest->period_ratio(); }},
     {"period_first", "T/T0, first order", need_first, [](const eval_point& p) { return p.first->period_ratio(); }},
     {"period_second", "T/T0, second order", need_second, [](const eval_point& p) { return p.second->period_ratio(); }},

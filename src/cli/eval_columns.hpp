@@ -18,6 +18,7 @@ enum eval_need : unsigned {
     need_first = 4,        ///< first order
     need_second = 8,       ///< second order
     need_polynomial = 16,  ///< polynomial approximant
+    need_exact_period = 32,  ///< the exact period alone (one AGM; the solution needs two)
 };
 
 /// Everything eval computes once per amplitude: the solutions `needs` names (eval_need flags).
@@ -27,6 +28,7 @@ struct eval_point {
     double theta0;                               ///< the amplitude
     double from_pi;                              ///< its distance pi - theta0, exact close to pi
     std::optional<exact_solution> exact;         ///< the exact solution
+    std::optional<double> exact_period;          ///< T/T0, exact
     std::optional<fourier_solution> lowest;      ///< lowest order
     std::optional<fourier_solution> first;       ///< first order
     std::optional<fourier_solution> second;      ///< second order

@@ -198,7 +198,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     const auto amplitudes = parse_amplitude_values(o.theta0);
     const auto [fixed, seconds] = chosen_columns(o);
     // Only the solutions the chosen columns read are computed.
-    unsigned needs = seconds ? static_cast<unsigned>(need_exact) : 0u;
+    unsigned needs = seconds ? static_cast<unsigned>(need_exact_period) : 0u;
     for (const auto* c : fixed) needs |= c->needs;
     std::vector<std::string> columns;
     for (const auto* c : fixed) columns.emplace_back(c->name);
@@ -216,7 +216,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         row.clear();
         for (const auto* c : fixed) row.push_back(c->value(point));
         for (double x : method_periods(value, orders, methods, highest, broken)) row.push_back(x);
-        if (seconds) row.push_back(period_seconds(point.exact->period_ratio(), small_period_s));
+        if (seconds) row.push_back(period_seconds(*point.exact_period, small_period_s));
         writer.row(row);
         if (!broken.empty()) {
             writer.flush();  // the warning follows its row

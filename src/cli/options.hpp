@@ -65,13 +65,19 @@ void for_each_item(const std::string& text, const std::string& option, Take take
             throw usage_error(option + " " + text + ": line " + std::to_string(number) + " is longer than " +
                               std::to_string(max_list_line_bytes) + " bytes");
         }
-        line = line.substr(0, line.find('#'));
+        if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        for (auto& item : split_list(line)) {
+        // The comma-separated items, trimmed, as split_list cuts them (an empty one included).
+        for (std::string_view rest = line;;) {
+            const auto comma = rest.find(',');
+            std::string_view item = rest.substr(0, comma);
             const auto first = item.find_first_not_of(" \t\r");
-            take(first == std::string::npos ? std::string()
-                                             : item.substr(first, item.find_last_not_of(" \t\r") - first + 1));
+            item = first == std::string_view::npos ? std::string_view()
+                                                   : item.substr(first, item.find_last_not_of(" \t\r") - first + 1);
+            take(std::string(item));
             any = true;
+            if (comma == std::string_view::npos) break;
+            rest.remove_prefix(comma + 1);
         }
     }
     if (!any) throw usage_error(option + " " + text + ": no values");

@@ -28,6 +28,7 @@ from reference_csv import write_reference
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from make_approximant_times import double_solution  # noqa: E402
+from make_state_times import start_state  # noqa: E402
 
 STARTS = [
     ("--theta0 1 --omega0 0.5", "1", "0.5"),
@@ -43,13 +44,7 @@ def main():
     rows = []
     for args, theta_text, second in STARTS:
         mp.prec = 1300
-        if theta_text is None:
-            energy = mp.mpf(float(second))
-            theta_s, omega_s = mp.mpf(0), mp.sqrt(2 * energy)
-        else:
-            theta_s, omega_s = mp.mpf(float(theta_text)), mp.mpf(float(second))
-            energy = omega_s ** 2 / 2 + 2 * mp.sin(theta_s / 2) ** 2
-        mirror = -1 if omega_s < 0 else 1
+        theta_s, omega_s, energy, mirror = start_state(theta_text, second)
         m = energy / 2
         k = mp.sqrt(m)
         n = mp.nint(mirror * theta_s / (2 * mp.pi))

@@ -71,16 +71,23 @@ def motion(theta_s, omega_s, energy, unit, s):
     return 2 * mp.pi * n + 2 * am(v, m), mp.sqrt(2 * energy) * mp.ellipfun("dn", v, m=m)
 
 
+def start_state(theta_text, second):
+    """(theta_s, omega_s, E, mirror) of a start: the state's doubles taken exactly, or with
+    theta_text None the energy's double, launched from the bottom forwards; mirror is -1 for a
+    backwards start."""
+    if theta_text is None:
+        energy = mp.mpf(float(second))
+        theta_s, omega_s = mp.mpf(0), mp.sqrt(2 * energy)
+    else:
+        theta_s, omega_s = mp.mpf(float(theta_text)), mp.mpf(float(second))
+        energy = omega_s ** 2 / 2 + 2 * mp.sin(theta_s / 2) ** 2
+    return theta_s, omega_s, energy, -1 if omega_s < 0 else 1
+
+
 def main():
     rows = []
     for args, theta_text, second in STARTS:
-        if theta_text is None:
-            energy = mp.mpf(float(second))
-            theta_s, omega_s = mp.mpf(0), mp.sqrt(2 * energy)
-        else:
-            theta_s, omega_s = mp.mpf(float(theta_text)), mp.mpf(float(second))
-            energy = omega_s ** 2 / 2 + 2 * mp.sin(theta_s / 2) ** 2
-        mirror = -1 if omega_s < 0 else 1
+        theta_s, omega_s, energy, mirror = start_state(theta_text, second)
         for unit in ["t/T0", "t/T"]:
             if unit == "t/T" and energy == 2:
                 continue

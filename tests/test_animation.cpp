@@ -26,6 +26,7 @@
 #include <numbers>
 #include <set>
 #include <string>
+#include <string_view>
 
 namespace {
 
@@ -72,6 +73,23 @@ gif_facts read_gif(const std::string& bytes) {
     DGifCloseFile(gif, &error);
     f.loops = bytes.find("NETSCAPE2.0") != std::string::npos;
     return f;
+}
+
+/// An animation as a theme draws it: its build options, frame plan and still base figure.
+struct animated_build {
+    plot::theme theme;
+    figures::build_options options;
+    figures::animation_plan plan;
+    plot::figure base;
+};
+
+animated_build build_animated(const figures::entry& e, std::string_view theme_name) {
+    animated_build b{figures::load_theme(std::string(theme_name)), {}, {}, {}};
+    b.options = figures::sized_by({}, b.theme);
+    b.options.animated = true;
+    b.plan = figures::plan_animation(e, b.options);
+    b.base = figures::build(e, b.options);
+    return b;
 }
 
 TEST(Animation, FramesOfTheSwing) {
@@ -231,11 +249,7 @@ TEST(Animation, PngFramesAreTheFramesDrawnWhole) {
     for (const auto& e : figures::catalog()) {
         if (!e.spec.animation) continue;
         for (const auto& theme_row : figures::builtin_themes()) {
-            const auto theme = figures::load_theme(std::string(theme_row.name));
-            auto options = figures::sized_by({}, theme);
-            options.animated = true;
-            const auto plan = figures::plan_animation(e, options);
-            const auto base = figures::build(e, options);
+            const auto [theme, options, plan, base] = build_animated(e, theme_row.name);
             const double dpi = 150;
             plot::argb_image image;
             std::vector<unsigned char> rows;
@@ -332,11 +346,7 @@ TEST(Animation, NoStrobingInAnyBuiltinAnimationOrTheme) {
         if (drawings.empty()) continue;
         ++animations;
         for (const auto& theme_row : figures::builtin_themes()) {
-            const auto theme = figures::load_theme(std::string(theme_row.name));
-            auto options = figures::sized_by({}, theme);
-            options.animated = true;
-            const auto plan = figures::plan_animation(e, options);
-            const auto base = figures::build(e, options);
+            const auto [theme, options, plan, base] = build_animated(e, theme_row.name);
             // The bob's diameter in rod lengths, at least: the shorter side of the panel's cell
             // (of a figure of fixed size, its share of it) holds the drawing's 2.4 rod lengths,
             // and the plot area inside it is smaller still.

@@ -205,10 +205,12 @@ bool encode_png(png_sink* sink, png_bytepp rows, png_uint_32 width, png_uint_32 
 std::string png_of(const unsigned char* data, int stride, int width, int height, double dpi,
                    std::vector<png_byte>& pixels) {
     // The smallest exact pixel format: grey (the paper theme), a palette of at most 256
-    // colours, or RGB. Each attempt is one pass that stops at the first pixel it cannot hold.
-    const auto pixel = [&](int x, int y) {
-        return reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride)[x] & 0xffffffu;
+    // colours, or RGB. Each attempt is one pass that stops at the first pixel (the grey
+    // one: row) it cannot hold.
+    const auto row = [&](int y) {
+        return reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
     };
+    const auto pixel = [&](int x, int y) { return row(y)[x] & 0xffffffu; };
     const std::size_t count = static_cast<std::size_t>(width) * height;
     pixels.resize(count);
     int color_type = PNG_COLOR_TYPE_GRAY;
@@ -217,7 +219,7 @@ std::string png_of(const unsigned char* data, int stride, int width, int height,
     bool fits = true;
     for (int y = 0; y < height && fits; ++y) {
         // A whole row at a time, without a branch per pixel (the compiler vectorises it).
-        const auto* src = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+        const std::uint32_t* src = row(y);
         png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width;
         std::uint32_t off_grey = 0;
         for (int x = 0; x < width; ++x) {
@@ -232,15 +234,15 @@ std::string png_of(const unsigned char* data, int stride, int width, int height,
         color_type = PNG_COLOR_TYPE_PALETTE;
         fits = true;
         std::unordered_map<std::uint32_t, png_byte> index;
-        // Line art is runs of one colour: a pixel like the one before needs no lookup.
-        std::uint32_t last = 0;
+        // Line art is runs of one colour: a pixel like the one before needs no lookup
+        // (`last` starts as no pixel: pixels have 24 bits).
+        std::uint32_t last = 0xffffffffu;
         png_byte last_index = 0;
-        bool have_last = false;
         for (int y = 0; y < height && fits; ++y) {
             png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width;
             for (int x = 0; x < width; ++x) {
                 const std::uint32_t p = pixel(x, y);
-                if (have_last && p == last) {
+                if (p == last) {
                     dst[x] = last_index;
                     continue;
                 }
@@ -257,7 +259,6 @@ std::string png_of(const unsigned char* data, int stride, int width, int height,
                 dst[x] = it->second;
                 last = p;
                 last_index = it->second;
-                have_last = true;
             }
         }
     }

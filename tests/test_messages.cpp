@@ -2,6 +2,8 @@
 // Messages that name what is wrong: bad input is exit 2 before anything is written, and
 // the message names the key or option, its value, and what is allowed.
 #include "cli/table.hpp"
+#include "plot/errors.hpp"
+#include "plot/latex_overlay.hpp"
 #include "plot/output.hpp"
 #include "plot/ticks.hpp"
 #include "process.hpp"
@@ -233,6 +235,58 @@ TEST(Messages, EveryAcceptedYRangeHasTwoDistinctTickLabels) {
                 EXPECT_GE(distinct.size(), 2u) << lo << " " << hi << " " << expand << " " << n;
                 EXPECT_EQ(distinct.size(), t.labels.size()) << lo << " " << hi;
             }
+        }
+    }
+}
+
+}  // namespace
+
+namespace {
+
+/// Every line of text starts with prefix.
+bool every_line_starts_with(const std::string& text, const std::string& prefix) {
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind(prefix, 0) != 0) return false;
+    }
+    return true;
+}
+
+TEST(Messages, ALineBreakInAStrangersKeyStartsNoLineOfItsOwn) {
+    const auto dir = temp_dir("forged-lines");
+    // A quoted key with line breaks, and a second problem: two lines of the message, and the
+    // breaks inside the key; every line is the program's.
+    std::ofstream(dir / "f.toml") << "\"x\\n::error file=a.c,line=1::forged\\n\" = 1\n[[panel]]\nplot = \"nonesuch\"\n";
+    const auto r = run_cli("describe f.toml", dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_TRUE(has(r.err, "::error")) << r.err;
+    EXPECT_TRUE(every_line_starts_with(r.err, "pendulum-figures: error: ")) << r.err;
+    fs::remove_all(dir);
+}
+
+TEST(Messages, AnOverlaysDrawingNameLaTeXCannotTakeIsBadInput) {
+    const auto dir = temp_dir("overlay-name");
+    for (const std::string name : {"a%b", "a b", "a{b", "a#b", "a~b", "a\\\\b"}) {
+        const auto r = run_cli("plot period --methods exact -f pdf_tex --name '" + name + "'", dir);
+        EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+        EXPECT_TRUE(has(r.err, "LaTeX cannot take in a file name")) << r.err;
+        EXPECT_TRUE(files_in(dir).empty()) << name;
+    }
+    const auto ok = run_cli("plot period --methods exact -f pdf_tex --name 'Fig.1_a+b-c'", dir);
+    EXPECT_EQ(ok.status, 0) << ok.err;
+    EXPECT_EQ(files_in(dir), (std::set<std::string>{"Fig.1_a+b-c.pdf", "Fig.1_a+b-c.pdf_tex"}));
+    fs::remove_all(dir);
+}
+
+TEST(Messages, EveryByteOfAnOverlaysDrawingNameIsRefusedOrPlain) {
+    for (int b = 0; b < 256; ++b) {
+        const std::string name = std::string("a") + static_cast<char>(b) + "b.pdf";
+        const bool plain = (b >= 'a' && b <= 'z') || (b >= 'A' && b <= 'Z') || (b >= '0' && b <= '9') || b == '.' ||
+                           b == '_' || b == '+' || b == '-';
+        if (plain) {
+            EXPECT_NO_THROW(plot::check_latex_file_name(name)) << "byte " << b;
+        } else {
+            EXPECT_THROW(plot::check_latex_file_name(name), plot::bad_input) << "byte " << b;
         }
     }
 }

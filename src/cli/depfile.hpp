@@ -8,9 +8,10 @@
 
 namespace pendulum::cli {
 
-/// A file name as a Make rule writes it: space and # after a backslash, $ doubled. Throws
-/// std::invalid_argument for a name Make cannot write (a newline, or a backslash before a
-/// space or # or at the end).
+/// A file name as a Make rule writes it, read alike by GNU make and ninja: space and # after a
+/// backslash, $ doubled. Throws std::invalid_argument, naming the character, for a name that
+/// Make would read as more than a file name: a control character, a backslash, any of
+/// : ; = % | & * ? [ ] ( ) " ' < > ^ `, a leading ~, or a special target's form (.PHONY).
 std::string make_escaped(std::string_view name);
 
 /// One Make rule, "TARGET...: PREREQUISITE...", wrapped with backslash-newlines, each name

@@ -60,16 +60,24 @@ std::string program_file() {
     return self.string();
 }
 
-/// The --depfile rule: every output of the render (or --depfile-target) depends on the spec
-/// files, the style files used and the program.
-std::string dependency_rule(const render_options& o,
-                            const std::vector<std::pair<std::string, std::vector<const figures::entry*>>>& groups,
-                            const std::vector<figures::figure_file>& stills,
-                            const std::vector<figures::animation_job>& animations,
-                            const std::vector<std::string>& formats, std::optional<double> at) {
-    std::vector<std::string> inputs;
+/// The files of a --depfile rule: the render's outputs (or --depfile-target) and what they
+/// depend on.
+struct dependencies {
+    std::vector<std::string> targets;  ///< as given or as written, lexically normal
+    std::vector<std::string> outputs;  ///< the files the render writes
+    std::vector<std::string> inputs;   ///< spec files, style files, the program
+};
+
+/// The --depfile rule's files: every output of the render (or --depfile-target) depends on the
+/// spec files, the style files used and the program.
+dependencies dependency_files(const render_options& o,
+                              const std::vector<std::pair<std::string, std::vector<const figures::entry*>>>& groups,
+                              const std::vector<figures::figure_file>& stills,
+                              const std::vector<figures::animation_job>& animations,
+                              const std::vector<std::string>& formats, std::optional<double> at) {
+    dependencies d;
     const auto add = [&](const std::string& file) {
-        if (std::find(inputs.begin(), inputs.end(), file) == inputs.end()) inputs.push_back(file);
+        if (std::find(d.inputs.begin(), d.inputs.end(), file) == d.inputs.end()) d.inputs.push_back(file);
     };
     // Spec files are the ids ending in .toml (as selected_figures reads them); built-in
     // figures are in the program.
@@ -81,16 +89,34 @@ std::string dependency_rule(const render_options& o,
         if (!g.first.empty()) add(g.first);
     }
     add(program_file());
-    std::vector<std::string> targets;
-    if (!o.depfile_target.empty()) {
-        targets.push_back(o.depfile_target);
-    } else {
-        for (const auto& [path, what] : figures::render_outputs(stills, animations, formats, o.dir, at.has_value())) {
-            targets.push_back(path.lexically_normal().string());
+    for (const auto& [path, what] : figures::render_outputs(stills, animations, formats, o.dir, at.has_value())) {
+        d.outputs.push_back(path.lexically_normal().string());
+    }
+    d.targets = o.depfile_target.empty() ? d.outputs : std::vector<std::string>{o.depfile_target};
+    return d;
+}
+
+/// True when a and b name one file: the same path, or the same existing file by another path.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+    if (std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal()) return true;
+    std::error_code ec;
+    return std::filesystem::equivalent(a, b, ec) && !ec;
+}
+
+/// The --depfile rule, after checking that the dependency file is none of the files it names
+/// (a spec, a style, an output): refused before any work.
+std::string dependency_rule(const render_options& o, const dependencies& d) {
+    for (const auto* list : {&d.inputs, &d.outputs}) {
+        for (const auto& file : *list) {
+            if (same_file(o.depfile, file)) {
+                throw usage_error("--depfile '" + shown_text(o.depfile) + "' is " +
+                                  (list == &d.inputs ? "an input" : "an output") + " of the render (" +
+                                  shown_text(file) + "); name another file");
+            }
         }
     }
     try {
-        return make_rule(targets, inputs);
+        return make_rule(d.targets, d.inputs);
     } catch (const std::invalid_argument& e) {
         throw usage_error(std::string("--depfile: ") + e.what());
     }
@@ -252,7 +278,8 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
     }
     figures::check_distinct_outputs(all_jobs, all_moving, formats, o.dir, at.has_value());
     const std::string depfile =
-        o.depfile.empty() ? std::string() : dependency_rule(o, groups, all_jobs, all_moving, formats, at);
+        o.depfile.empty() ? std::string()
+                          : dependency_rule(o, dependency_files(o, groups, all_jobs, all_moving, formats, at));
     for (std::size_t g = 0; g < groups.size(); ++g) {
         figures::write_render(jobs[g], moving[g], formats, o.dir, build, styles[g], at);
     }

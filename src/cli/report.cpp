@@ -7,11 +7,15 @@
 namespace pendulum::cli {
 
 void report_error(const std::string& message) {
-    std::string out = "pendulum-figures: error: ";
+    // Every line starts with the program's name, as gcc's do: a line break in a spec's key or
+    // a file's name cannot begin a line of its own (a CI log's "::error ..." command).
+    static constexpr std::string_view prefix = "pendulum-figures: error: ";
+    std::string out(prefix);
     for (const char c : message) {
         const auto u = static_cast<unsigned char>(c);
         if (c == '\n') {
             out += '\n';
+            out += prefix;
         } else if (u < 0x20 || u == 0x7f) {
             char buf[8];
             std::snprintf(buf, sizeof buf, "\\x%02x", u);

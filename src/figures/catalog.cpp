@@ -43,6 +43,12 @@ const entry& find(std::string_view id) {
 entry load(std::string_view id_or_file) {
     if (!id_or_file.ends_with(".toml")) return find(id_or_file);
     const std::filesystem::path path(id_or_file);
+    // The figure's files are named after the spec, and the name reaches Make (--depfile),
+    // LaTeX (an overlay's \includegraphics) and XML: it is held to the rule of paper_file.
+    if (const std::string why = file_name_problem(path.stem().string()); !why.empty()) {
+        throw bad_input("spec file '" + path.string() + "': the name before .toml " + why +
+                        " (the figure's files are named after it; rename the spec)");
+    }
     entry e;
     e.source = read_input_file(path, "spec file");
     e.spec = parse_spec(e.source, path.string());

@@ -106,8 +106,25 @@ const tex_sizing_row& find_tex_sizing(std::string_view name) {
     throw bad_input("unknown text sizing '" + std::string(name) + "'; sizings: " + list);
 }
 
+void check_latex_file_name(std::string_view name) {
+    for (const char c : name) {
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+                        c == '_' || c == '+' || c == '-';
+        if (ok) continue;
+        const auto u = static_cast<unsigned char>(c);
+        char shown[16];
+        std::snprintf(shown, sizeof shown, u < 0x20 || u >= 0x7f ? "\\x%02x" : "'%c'", u);
+        std::string safe;
+        for (const char d : name) safe += (static_cast<unsigned char>(d) < 0x20 || static_cast<unsigned char>(d) >= 0x7f) ? '?' : d;
+        throw bad_input("an overlay's drawing '" + safe + "' has the character " + shown +
+                        ", which LaTeX cannot take in a file name as written; name the file with letters, "
+                        "digits and . _ + -");
+    }
+}
+
 std::string latex_picture(const std::vector<placed_text>& texts, page_size size, const theme& th,
                           const std::string& graphics_name, const output_options& options) {
+    check_latex_file_name(graphics_name);
     const double w = size.width_pt;
     const double h = size.height_pt;
     const bool black = th.foreground.r == 0 && th.foreground.g == 0 && th.foreground.b == 0;

@@ -8,6 +8,7 @@
 #include "plot/theme.hpp"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace plot {
@@ -21,6 +22,10 @@ theme latex_sized_theme(const theme& th, const output_options& options);
 /// What sets text of size_pt (a size of the sized theme): the LaTeX size command of that size
 /// in the document, or \fontsize for absolute sizes.
 std::string latex_size_command(double size_pt, const output_options& options);
+
+/// Throws bad_input for a drawing's file name that an overlay cannot write into LaTeX as it
+/// is (\includegraphics, \typeout, a comment): anything but ASCII letters, digits and . _ + -.
+void check_latex_file_name(std::string_view name);
 
 /// A picture environment (as Inkscape's pdf_tex files) that includes graphics_name at the
 /// figure's size, or at \figurewidth if the document defines it (the text keeps its size),

@@ -277,16 +277,17 @@ TEST(HostileOutputs, TwoRunsWritingOnePdfTexPairNeverTearIt) {
     ASSERT_NE(alone[0].second, alone[1].second);
     const fs::path shared = dir / "shared";
     fs::create_directories(shared);
-    constexpr int rounds = 30;
+    constexpr int rounds = 40;
     int torn = 0;
     for (int round = 0; round < rounds; ++round) {
         // Half the rounds with --force (both runs rename both files), half without (a run
         // writes the pair only if it differs from what is there).
         const std::string force = round % 2 == 0 ? " --force" : "";
-        pid_t pids[2];
-        for (int i = 0; i < 2; ++i) {
-            pids[i] = start("exec '" + exe + "' render fig1 -f pdf_tex --jobs 1" + force + " " + settings[i] + " -o '" +
-                            shared.string() + "' 2>/dev/null");
+        // Two runs at each setting, started together: more renames meet.
+        pid_t pids[4];
+        for (int i = 0; i < 4; ++i) {
+            pids[i] = start("exec '" + exe + "' render fig1 -f pdf_tex --jobs 1" + force + " " + settings[i % 2] +
+                            " -o '" + shared.string() + "' 2>/dev/null");
             ASSERT_GT(pids[i], 0);
         }
         for (const pid_t pid : pids) EXPECT_EQ(status_of(pid), 0) << "round " << round;
@@ -294,7 +295,7 @@ TEST(HostileOutputs, TwoRunsWritingOnePdfTexPairNeverTearIt) {
         if (now != alone[0] && now != alone[1]) ++torn;
         EXPECT_EQ(files_in(shared), (std::set<std::string>{"c1-lowest.pdf", "c1-lowest.pdf_tex"})) << round;
     }
-    EXPECT_EQ(torn, 0) << torn << " of " << rounds << " rounds left a pdf of one run and a pdf_tex of the other";
+    EXPECT_EQ(torn, 0) << torn << " of " << rounds << " rounds left a pdf of one run and a pdf_tex of another";
     fs::remove_all(dir);
 }
 

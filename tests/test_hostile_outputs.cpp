@@ -36,11 +36,12 @@ using test_support::slurp;
 using test_support::temp_dir;
 
 /// What stands at an output's path.
-enum class hostile { link_to_file, dangling_link, link_to_device, fifo, socket, directory, device };
+enum class hostile { link_to_file, dangling_link, link_to_device, fifo, socket, directory, device, block_device };
 
 /// Every kind, in the order the sweep tries them.
 constexpr hostile all_kinds[] = {hostile::link_to_file, hostile::dangling_link, hostile::link_to_device, hostile::fifo,
-                                 hostile::socket,       hostile::directory,     hostile::device};
+                                 hostile::socket,       hostile::directory,     hostile::device,
+                                 hostile::block_device};
 
 /// How the refusal names a kind: "'PATH' is " and this.
 std::string words(hostile kind) {
@@ -52,6 +53,7 @@ std::string words(hostile kind) {
         case hostile::socket: return "a socket";
         case hostile::directory: return "a directory";
         case hostile::device: return "a character device";
+        case hostile::block_device: return "a block device";
     }
     return "";
 }
@@ -102,7 +104,9 @@ struct scene {
                 fs::create_directories(path);
                 std::ofstream(path / "keep") << "mine";
                 return true;
-            case hostile::device: return ::mknod(path.c_str(), S_IFCHR | 0600, ::makedev(1, 3)) == 0;
+            case hostile::device: return ::mknod(path.c_str(), S_IFCHR | 0600, ::makedev(1, 3)) == 0;  // as /dev/null
+            // Major 240 is for local use: no driver here, so even a write through it would go nowhere.
+            case hostile::block_device: return ::mknod(path.c_str(), S_IFBLK | 0600, ::makedev(240, 0)) == 0;
         }
         return false;
     }
@@ -124,6 +128,7 @@ struct scene {
                 EXPECT_EQ(slurp(path / "keep"), "mine") << context;
                 break;
             case hostile::device: EXPECT_TRUE(S_ISCHR(st.st_mode)) << context; break;
+            case hostile::block_device: EXPECT_TRUE(S_ISBLK(st.st_mode)) << context; break;
         }
         // No figure, no temporary: out holds what was planted and nothing else.
         EXPECT_EQ(files_in(out), (std::set<std::string>{name})) << context;
@@ -171,7 +176,7 @@ TEST(HostileOutputs, EveryKindAtEveryCommandsOutputIsRefusedAndNothingIsWritten)
             const std::string context = words(kind) + " at " + file + ": " + args;
             if (!s.plant(kind, file)) {
                 // Only a device node needs privileges; the link to /dev/null covers devices then.
-                EXPECT_EQ(kind, hostile::device) << context;
+                EXPECT_TRUE(kind == hostile::device || kind == hostile::block_device) << context;
                 continue;
             }
             const auto r = run_guarded(args, s.out);

@@ -3,9 +3,9 @@
 # A LaTeX overlay and its drawing change together. Both are on disk under temporary names
 # before the first is renamed, so only a kill between the two renames (microseconds) can
 # leave a torn pair, and the next run that completes repairs it (it rewrites the file that
-# differs). Renders of one figure at two aspect ratios are killed (SIGKILL) at random
+# differs; both when either differs). Renders of one figure at two aspect ratios are killed (SIGKILL) at random
 # moments; after each, a render that completes leaves a matching pair. A render whose
-# overlay cannot be written leaves the drawing as it was, and no temporary behind.
+# overlay is a link is refused and leaves the drawing as it was, and no temporary behind.
 # Usage: overlay_kill_test.sh PENDULUM_FIGURES [KILLS]
 set -euo pipefail
 exe=$1
@@ -44,20 +44,23 @@ for i in $(seq 1 "$kills"); do
 done
 [ -s p.pdf ] && [ -s p.pdf_tex ] || fail "no pair was written"
 # Fault injection, the killed runs' temporaries out of the way: the overlay cannot be
-# written (it is a link into a directory that does not exist), so the drawing must not
-# change either.
+# written (it is a link into a directory that does not exist, which is refused as bad input
+# before any work: no output is written through a link), so the drawing must not change
+# either.
 rm -f .pendulum-figures-*
 "$exe" render wide/p.toml -f pdf_tex -o .
 before=$(cksum < p.pdf)
 rm p.pdf_tex
 ln -s "$dir/missing/p.pdf_tex" p.pdf_tex
 set +e
-"$exe" render tall/p.toml -f pdf_tex -o . 2>/dev/null
+message=$("$exe" render tall/p.toml -f pdf_tex -o . 2>&1)
 status=$?
 set -e
-[ "$status" = 1 ] || fail "writing into a missing directory: exit $status, not 1"
+[ "$status" = 2 ] || fail "an overlay that is a dangling link: exit $status, not 2"
+case $message in *"'./p.pdf_tex' is a symbolic link"*) ;; *) fail "the refusal does not name p.pdf_tex: $message" ;; esac
+[ ! -e "$dir/missing" ] || fail "the link's target was created"
 [ "$(cksum < p.pdf)" = "$before" ] || fail "the drawing changed though its overlay could not be written"
 [ -z "$(find . -name '.pendulum-figures-*')" ] || fail "a failed write left a temporary"
 rm p.pdf_tex
 
-echo "ok: $kills kills ($torn left a torn pair, each repaired by the next complete run); an overlay that cannot be written leaves its drawing alone"
+echo "ok: $kills kills ($torn left a torn pair, each repaired by the next complete run); an overlay that is a link is refused and leaves its drawing alone"

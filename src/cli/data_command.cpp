@@ -55,11 +55,8 @@ command add_data_command(CLI::App& app) {
     return {cmd, [o] {
                 std::string file = o->file == "-" ? "" : o->file;  // - is standard output
                 if (!file.empty()) {
-                    // Where the file goes is checked before the work, as render checks its directory.
-                    std::error_code ec;
-                    if (std::filesystem::is_directory(file, ec)) {
-                        throw usage_error("--output '" + file + "' is a directory; give a file name");
-                    }
+                    // Where the file goes is checked before the work, as render checks its outputs.
+                    plot::check_output_file(file);
                     const auto parent = std::filesystem::path(file).parent_path();
                     if (!parent.empty()) check_output_dir(parent.string());
                 }

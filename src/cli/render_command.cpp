@@ -277,6 +277,13 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
         throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
     }
     figures::check_distinct_outputs(all_jobs, all_moving, formats, o.dir, at.has_value());
+    // Every output, the depfile too, is a new file or replaces a regular one: checked before any work.
+    std::vector<std::filesystem::path> outputs;
+    for (const auto& output : figures::render_outputs(all_jobs, all_moving, formats, o.dir, at.has_value())) {
+        outputs.push_back(output.first);
+    }
+    if (!o.depfile.empty()) outputs.emplace_back(o.depfile);
+    plot::check_output_files(outputs);
     const std::string depfile =
         o.depfile.empty() ? std::string()
                           : dependency_rule(o, dependency_files(o, groups, all_jobs, all_moving, formats, at));

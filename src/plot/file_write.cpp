@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Writing output files: whole or not at all, into what the path names.
+// Writing output files: whole or not at all, as a new regular file at the path (never through
+// a link, device or FIFO), the renames of a group exclusive between processes.
 #include "plot/output.hpp"
 #include "plot/streamed_file.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -21,14 +23,21 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 namespace plot {
 
-namespace {
-
 namespace fs = std::filesystem;
+
+/// A file written under a temporary name beside its path and on disk, waiting to take its name.
+struct prepared_file {
+    fs::path path;     ///< as given: what the temporary is renamed to, and named in messages
+    std::string temp;  ///< the temporary's name; empty once renamed or removed
+};
+
+namespace {
 
 /// strerror, lowercased to match the project's messages ("no space left on device").
 std::string error_text(int e) {
@@ -53,21 +62,6 @@ int write_all(int fd, std::string_view bytes) {
         done += static_cast<std::size_t>(n);
     }
     return 0;
-}
-
-/// The file a path leads to through any symbolic links (which are kept: their target is
-/// what gets replaced).
-fs::path resolve_links(const fs::path& path) {
-    fs::path target = path;
-    for (int i = 0; i < 40; ++i) {
-        struct stat st {};
-        if (::lstat(target.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return target;
-        std::error_code ec;
-        const fs::path link = fs::read_symlink(target, ec);
-        if (ec) fail(path, ec.value());
-        target = link.is_absolute() ? link : target.parent_path() / link;
-    }
-    fail(path, ELOOP);
 }
 
 /// Temporary files are named ".pendulum-figures-H-XXXXXX" beside their target, H the hash
@@ -109,36 +103,130 @@ void remove_stale_temporaries(const fs::path& dir, const fs::path& target) {
     ::closedir(d);
 }
 
+/// The directory a file at `path` is in: its parent, or "." for a bare name.
+fs::path directory_of(const fs::path& path) {
+    return path.has_parent_path() ? path.parent_path() : fs::path(".");
+}
+
+/// An open file descriptor, closed when it goes.
+class descriptor {
+public:
+    explicit descriptor(int fd) : fd_(fd) {}
+    ~descriptor() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    descriptor(descriptor&& other) noexcept : fd_(std::exchange(other.fd_, -1)) {}
+    descriptor(const descriptor&) = delete;
+    descriptor& operator=(const descriptor&) = delete;
+    descriptor& operator=(descriptor&&) = delete;
+    /// The descriptor, or -1.
+    int get() const { return fd_; }
+
+private:
+    int fd_;
+};
+
+/// In words, what stands at an output's path that is not a regular file.
+std::string_view kind_of(mode_t mode) {
+    if (S_ISLNK(mode)) return "a symbolic link";
+    if (S_ISDIR(mode)) return "a directory";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISFIFO(mode)) return "a FIFO";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a regular file";
+}
+
+/// The message refusing to write at `path`, where a `mode` file stands that is not regular.
+std::string refusal(const fs::path& path, mode_t mode) {
+    const std::string named = "'" + path.string() + "' is " + std::string(kind_of(mode));
+    if (S_ISDIR(mode)) return named + "; give a file name, or move the directory away";
+    return named + ": an output replaces a regular file or makes a new one, and is never written through a "
+                   "link, device, FIFO or socket; remove it, or write to standard output (-o -) and redirect "
+                   "that, e.g. -o - > '" + path.string() + "'";
+}
+
+/// True if a regular file stands at path, its status in st; false if nothing does. Throws
+/// plot::bad_input naming the path if anything else does (see check_output_file).
+bool check_existing_output(const fs::path& path, struct stat& st) {
+    // O_PATH opens nothing (a FIFO does not block, a device is not touched) and, with
+    // O_NOFOLLOW, a symbolic link is the link itself, never what it leads to.
+    const descriptor fd(::open(path.c_str(), O_PATH | O_NOFOLLOW | O_CLOEXEC));
+    if (fd.get() < 0) {
+        // Nothing there, or a file above it in its place: for the directory checks and the write to report.
+        if (errno == ENOENT || errno == ENOTDIR) return false;
+        fail(path, errno);
+    }
+    if (::fstat(fd.get(), &st) != 0) fail(path, errno);
+    if (!S_ISREG(st.st_mode)) throw bad_input(refusal(path, st.st_mode));
+    return true;
+}
+
 }  // namespace
 
-/// A file written under a temporary name and on disk, waiting to take its name; or a
-/// device, FIFO or socket, written through in place.
-struct prepared_file {
-    fs::path path;    ///< as given, for messages
-    fs::path target;  ///< what the path leads to
-    std::string temp; ///< the temporary's name; empty when written in place
-};
+void check_output_file(const std::filesystem::path& path) {
+    struct stat st {};
+    check_existing_output(path, st);
+}
+
+void check_output_files(const std::vector<std::filesystem::path>& paths) {
+    for (const auto& path : paths) check_output_file(path);
+}
 
 namespace {
 
-/// Opens the file `path` leads to for writing: a temporary beside it, or a device, FIFO or
-/// socket itself (written through, in place, never replaced). fd is the open descriptor.
-prepared_file open_for(const fs::path& path, int& fd, struct stat& st, bool& exists) {
-    prepared_file out{path, resolve_links(path), {}};
-    exists = ::stat(out.target.c_str(), &st) == 0;
-    if (exists && S_ISDIR(st.st_mode)) fail(path, EISDIR);
-    if (exists && !S_ISREG(st.st_mode)) {
-        fd = ::open(out.target.c_str(), O_WRONLY | O_CLOEXEC);
-        if (fd < 0) fail(path, errno);
-        return out;
+/// Exclusive flock(2) on the directories of a group of renames, held while it lives: another
+/// process's group of renames into one of them waits, so a pair that belongs together (a
+/// drawing and its LaTeX overlay) is never half one run's and half another's. The lock is on
+/// the directory itself, so nothing is left behind and a killed run's lock goes with it.
+/// Best effort: a directory that cannot be opened for reading, or a file system without
+/// flock (NFS emulates it only for files open for writing), is renamed into unlocked.
+class directory_locks {
+public:
+    explicit directory_locks(const std::vector<const prepared_file*>& files) {
+        struct held {
+            dev_t dev;
+            ino_t ino;
+            std::size_t index;
+        };
+        std::vector<held> order;
+        fs::path previous;  // the frames of an animation are all in one directory
+        for (const prepared_file* f : files) {
+            const fs::path dir = directory_of(f->path);
+            if (!previous.empty() && dir == previous) continue;
+            previous = dir;
+            descriptor fd(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+            struct stat st {};
+            if (fd.get() < 0 || ::fstat(fd.get(), &st) != 0) continue;
+            const auto same = [&](const held& h) { return h.dev == st.st_dev && h.ino == st.st_ino; };
+            if (std::any_of(order.begin(), order.end(), same)) continue;
+            order.push_back({st.st_dev, st.st_ino, fds_.size()});
+            fds_.push_back(std::move(fd));
+        }
+        // Taken in one order (device, inode) by every process, so that two never wait on each other.
+        std::sort(order.begin(), order.end(),
+                  [](const held& a, const held& b) { return std::tie(a.dev, a.ino) < std::tie(b.dev, b.ino); });
+        for (const held& h : order) {
+            while (::flock(fds_[h.index].get(), LOCK_EX) != 0 && errno == EINTR) {
+            }
+        }
     }
-    const fs::path dir = out.target.has_parent_path() ? out.target.parent_path() : fs::path(".");
-    remove_stale_temporaries(dir, out.target);
-    std::string temp = (dir / (temp_stem(out.target) + "XXXXXX")).string();
+
+private:
+    std::vector<descriptor> fds_;
+};
+
+/// Creates the temporary for `path`, which check_existing_output has found fit, beside it
+/// with O_EXCL (mkstemp): a new file no one else has, whatever stands at `path`. fd is the
+/// open descriptor.
+prepared_file open_for(const fs::path& path, int& fd, struct stat& st, bool& exists) {
+    exists = check_existing_output(path, st);
+    const fs::path dir = directory_of(path);
+    remove_stale_temporaries(dir, path);
+    std::string temp = (dir / (temp_stem(path) + "XXXXXX")).string();
     fd = ::mkstemp(temp.data());
     if (fd < 0) fail(path, errno);
-    out.temp = std::move(temp);
-    return out;
+    return {path, std::move(temp)};
 }
 
 /// Closes fd after an error e and removes the temporary; throws naming the path.
@@ -152,13 +240,9 @@ prepared_file open_for(const fs::path& path, int& fd, struct stat& st, bool& exi
 /// The batch that defers the syncing and renaming of this process's files, if one is open.
 std::atomic<durable_batch*> open_batch{nullptr};
 
-/// Ends the writing of fd: a temporary gets the mode (and owner) of the file it replaces
-/// and is on disk (unless a batch syncs it later), closed; a device is closed.
+/// Ends the writing of fd: the temporary gets the mode (and owner) of the file it replaces
+/// and is on disk (unless a batch syncs it later), closed.
 void close_written(prepared_file& f, int fd, const struct stat& st, bool exists) {
-    if (f.temp.empty()) {
-        if (::close(fd) != 0) fail(f.path, errno);
-        return;
-    }
     // An existing file keeps its mode (and owner, where we may set it); a new one gets the
     // usual 0666 less the umask, which is read once: reading it means setting it.
     static const mode_t mask = [] {
@@ -192,24 +276,37 @@ prepared_file prepare(const fs::path& path, const std::string& bytes) {
     return out;
 }
 
-/// Gives a prepared file its name.
-void commit(prepared_file& f) {
-    if (f.temp.empty()) return;
-    if (std::rename(f.temp.c_str(), f.target.c_str()) != 0) {
-        const int e = errno;
-        ::unlink(f.temp.c_str());
-        f.temp.clear();
-        fail(f.path, e);
-    }
-    f.temp.clear();
-}
-
 /// Removes what a failed write prepared and did not rename.
 void discard(std::vector<prepared_file>& files) {
     for (auto& f : files) {
         if (!f.temp.empty()) ::unlink(f.temp.c_str());
         f.temp.clear();
     }
+}
+
+/// Gives prepared files their names, in order, as one group: rename(2), which replaces the
+/// directory entry (a link that took the name meanwhile is replaced, never followed), under
+/// the lock of their directories. On a failure, the files not yet renamed are removed.
+void commit(std::vector<prepared_file>& files) {
+    std::vector<const prepared_file*> group;
+    for (const auto& f : files) group.push_back(&f);
+    const directory_locks lock(group);
+    for (auto& f : files) {
+        if (f.temp.empty()) continue;
+        if (std::rename(f.temp.c_str(), f.path.c_str()) != 0) {
+            const int e = errno;
+            discard(files);
+            fail(f.path, e);
+        }
+        f.temp.clear();
+    }
+}
+
+/// Gives one prepared file its name.
+void commit(prepared_file& f) {
+    std::vector<prepared_file> one;
+    one.push_back(std::exchange(f, {}));
+    commit(one);
 }
 
 }  // namespace
@@ -227,10 +324,10 @@ void write_atomically_by(const std::filesystem::path& path,
     bool exists = false;
     prepared_file f = open_for(path, fd, st, exists);
     try {
-        fill(f.temp.empty() ? f.target : fs::path(f.temp));
+        fill(fs::path(f.temp));
     } catch (...) {
         ::close(fd);
-        if (!f.temp.empty()) ::unlink(f.temp.c_str());
+        ::unlink(f.temp.c_str());
         throw;
     }
     close_written(f, fd, st, exists);
@@ -248,7 +345,7 @@ void write_atomically(const std::vector<std::pair<std::filesystem::path, std::st
             for (auto& f : ready) batch->defer(std::move(f));  // renamed in this order too
             return;
         }
-        for (auto& f : ready) commit(f);
+        commit(ready);
     } catch (...) {
         discard(ready);
         throw;
@@ -303,7 +400,7 @@ durable_batch::~durable_batch() {
 }
 
 void durable_batch::defer(prepared_file&& f) {
-    if (f.temp.empty()) return;  // a device, written through
+    if (f.temp.empty()) return;
     std::lock_guard lock(state_->mutex);
     state_->files.push_back(std::move(f));
 }
@@ -329,7 +426,7 @@ void durable_batch::commit() {
             if (status != 0) fail(f.path, e);
             synced.push_back(dir);
         }
-        for (auto& f : files) plot::commit(f);
+        plot::commit(files);
     } catch (...) {
         discard(files);
         throw;

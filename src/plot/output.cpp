@@ -584,10 +584,11 @@ std::string render(const figure& fig, const theme& th, std::string_view format, 
 
 namespace {
 
-/// True if path is a regular file that holds exactly these bytes.
+/// True if path is a regular file (not a link to one) that holds exactly these bytes.
 bool holds(const std::filesystem::path& path, const std::string& bytes) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) != bytes.size() || ec) {
+    if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(path, ec)) ||
+        std::filesystem::file_size(path, ec) != bytes.size() || ec) {
         return false;
     }
     std::ifstream in(path, std::ios::binary);
@@ -637,11 +638,11 @@ void save_unnamed(const figure& fig, const theme& th, const std::filesystem::pat
         graphics.replace_extension(row.graphics);
         const overlay_files files = render_overlay(fig, th, row.graphics, graphics.filename().string(), options);
         // The pair changes together: both on disk before either is renamed, the drawing
-        // first, so that the text never refers to a missing file.
-        std::vector<std::pair<std::filesystem::path, std::string>> changed;
-        if (options.force || !holds(graphics, files.graphics)) changed.emplace_back(graphics, files.graphics);
-        if (options.force || !holds(path, files.tex)) changed.emplace_back(path, files.tex);
-        write_atomically(changed);
+        // first, so that the text never refers to a missing file; and both are written if
+        // either changed, so that a pair another run renamed meanwhile is replaced whole.
+        if (options.force || !holds(graphics, files.graphics) || !holds(path, files.tex)) {
+            write_atomically({{graphics, files.graphics}, {path, files.tex}});
+        }
         return;
     }
     write(path, row.write(fig, th, options));

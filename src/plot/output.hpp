@@ -141,20 +141,35 @@ struct argb_image;
 /// pixels. `scratch` holds the rows to encode; reused, it spares a large frame's mapping.
 std::string png_of_pixels(const argb_image& image, double dpi, std::vector<unsigned char>& scratch);
 
-/// Writes bytes to path through a temporary file in the same directory and a rename, so the
-/// file is either the old one or the complete new one. Throws std::runtime_error naming the path.
+/// Throws plot::bad_input naming the path, and saying that -o - writes through such a thing,
+/// if a symbolic link (dangling or not), a directory, a device, a FIFO or a socket stands at
+/// path: an output is a new file or replaces a regular one, and never writes through
+/// anything. The links of the directories above it are followed. Nothing is opened: a FIFO
+/// does not block. Throws std::runtime_error naming the path if it cannot be looked at.
+void check_output_file(const std::filesystem::path& path);
+
+/// check_output_file for each path, in order: every output of a command, before any work.
+void check_output_files(const std::vector<std::filesystem::path>& paths);
+
+/// Writes bytes to path through a temporary file in the same directory (created with O_EXCL)
+/// and a rename, so the file is either the old one or the complete new one; an existing file
+/// keeps its mode. Throws plot::bad_input as check_output_file does, std::runtime_error naming
+/// the path if writing fails. Renames into a directory wait for another process's group of
+/// renames into it (see write_atomically of several files).
 void write_atomically(const std::filesystem::path& path, const std::string& bytes);
 
 /// Writes the file as write_atomically does, its contents written by fill(file) into the
-/// file it is given by name (a temporary beside path, or a device path leads to): for a
-/// writer that opens its file itself, and a file that need not be held in memory.
+/// file it is given by name (a temporary beside path): for a writer that opens its file
+/// itself, and a file that need not be held in memory.
 void write_atomically_by(const std::filesystem::path& path,
                          const std::function<void(const std::filesystem::path& file)>& fill);
 
 /// Writes the files as write_atomically does one, each complete under a temporary name and
 /// on disk before the first is renamed, then renamed in order: a pair that belongs together
-/// (a LaTeX overlay and its drawing) changes together. Throws std::runtime_error naming
-/// the path that failed; then no file has changed unless its rename had already been done.
+/// (a LaTeX overlay and its drawing) changes together. The renames hold an exclusive flock
+/// on their directories, so two processes writing one pair never leave it half one's and
+/// half the other's. Throws std::runtime_error naming the path that failed; then no file
+/// has changed unless its rename had already been done.
 void write_atomically(const std::vector<std::pair<std::filesystem::path, std::string>>& files);
 
 /// Writes bytes to path unless it is a regular file that already holds them (so its

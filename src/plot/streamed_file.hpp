@@ -9,11 +9,12 @@ namespace plot {
 
 /// A file written piece by piece, as write_atomically writes one whole: under a temporary
 /// name beside it, on disk, then renamed by commit(), so that a failure or a crash leaves
-/// the old file or the complete new one. A device, FIFO or socket is written through. A file
+/// the old file or the complete new one. What check_output_file refuses is refused. A file
 /// destroyed before commit() is removed.
 class streamed_file {
 public:
-    /// Opens the temporary for path; throws std::runtime_error naming the path.
+    /// Opens the temporary for path; throws plot::bad_input as check_output_file does, or
+    /// std::runtime_error naming the path.
     explicit streamed_file(const std::filesystem::path& path);
     ~streamed_file();
     streamed_file(const streamed_file&) = delete;

@@ -721,7 +721,8 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
 std::string outside_problem(const std::filesystem::path& tree, const std::filesystem::path& file) {
     std::error_code ec;
     const auto root = std::filesystem::weakly_canonical(std::filesystem::absolute(tree, ec), ec);
-    const auto target = ec ? std::filesystem::path() : std::filesystem::weakly_canonical(file, ec);
+    const auto target = ec ? std::filesystem::path()
+                           : std::filesystem::weakly_canonical(std::filesystem::absolute(file, ec), ec);
     if (ec) return "cannot be resolved: " + ec.message();
     const auto relative = target.lexically_relative(root);
     if (relative.empty() || *relative.begin() == "..") {

@@ -145,6 +145,9 @@ install: deps
 # of its seed corpus fuzz/corpus/NAME. The test Fuzz.BuildAndRunBriefly does the same briefly.
 FUZZ_SECONDS ?= 60
 FUZZ_BUILD ?= build-fuzz
+# Inputs up to the largest spec or style file (1 MiB, src/figures/input_file.hpp): libFuzzer's
+# default of 4096 bytes would never try a key 50,000 deep.
+FUZZ_MAX_LEN ?= 1048576
 fuzz: deps
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DPENDULUM_BUILD_FUZZERS=ON \
@@ -152,7 +155,7 @@ fuzz: deps
 	cmake --build $(FUZZ_BUILD) --target fuzzers -j $(JOBS)
 	for name in $$(cat $(FUZZ_BUILD)/fuzzers.txt); do \
 	  rm -rf $(FUZZ_BUILD)/corpus-$$name && cp -r fuzz/corpus/$$name $(FUZZ_BUILD)/corpus-$$name && \
-	  $(FUZZ_BUILD)/fuzz/$${name}_fuzzer -max_total_time=$(FUZZ_SECONDS) -artifact_prefix=$(FUZZ_BUILD)/ \
+	  $(FUZZ_BUILD)/fuzz/$${name}_fuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=$(FUZZ_MAX_LEN) -artifact_prefix=$(FUZZ_BUILD)/ \
 	    $(FUZZ_BUILD)/corpus-$$name || exit 1; \
 	done
 

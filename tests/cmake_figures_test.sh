@@ -39,13 +39,15 @@ add_custom_target(document ALL DEPENDS document.txt)
 CMAKE
 cat >"$work/src/specs/period.toml" <<'TOML'
 [figure]
-style = "../house.toml"
+style = "styles/house.toml"
 
 [[panel]]
 plot = "period"
 methods = ["exact", "lowest"]
 TOML
-cat >"$work/src/house.toml" <<'TOML'
+# The style file inside the spec's directory tree, where a spec's inputs must be.
+mkdir -p "$work/src/specs/styles"
+cat >"$work/src/specs/styles/house.toml" <<'TOML'
 # The house style.
 base = "paper"
 line_width_pt = 1.2
@@ -67,7 +69,7 @@ runs() { [ -f "$1/document-runs" ] && wc -l <"$1/document-runs" || echo 0; }
 
 for generator in Ninja "Unix Makefiles"; do
     dir="$work/build-${generator// /-}"
-    cp "$work/src/house.toml" "$work/house.toml.orig"
+    cp "$work/src/specs/styles/house.toml" "$work/house.toml.orig"
     cmake -S "$work/src" -B "$dir" -G "$generator" -DCMAKE_PREFIX_PATH="$root" >"$work/log" 2>&1 ||
         { cat "$work/log"; fail "$generator: cmake fails"; continue; }
     # The program of the package, not one on PATH.
@@ -83,7 +85,7 @@ for generator in Ninja "Unix Makefiles"; do
     [ "$(renders "$work/log")" -eq 0 ] || fail "$generator: a second build renders again"
     [ "$(runs "$dir")" -eq 1 ] || fail "$generator: the document was made $(runs "$dir") times, not once"
     sleep 1
-    echo '# a comment changes no figure' >>"$work/src/house.toml"
+    echo '# a comment changes no figure' >>"$work/src/specs/styles/house.toml"
     cmake --build "$dir" >"$work/log" 2>&1
     [ "$(renders "$work/log")" -eq 1 ] ||
         fail "$generator: after a comment in the spec's style file, $(renders "$work/log") renders, not 1"
@@ -95,7 +97,7 @@ for generator in Ninja "Unix Makefiles"; do
         [ "$(ninja -C "$dir" -n)" = "ninja: Entering directory \`$dir'"$'\n'"ninja: no work to do." ] ||
             fail "Ninja: ninja -n has work after the build"
     fi
-    cp "$work/house.toml.orig" "$work/src/house.toml"
+    cp "$work/house.toml.orig" "$work/src/specs/styles/house.toml"
 done
 
 [ "$failures" -eq 0 ] && echo "pendulum_add_figures: Ninja and Unix Makefiles render once, then are up to date"

@@ -469,8 +469,9 @@ TEST(Depfile, ListsEveryOutputAndInputAndFollowsTheSpecsStyle) {
     const fs::path dir = fs::temp_directory_path() / ("pendulum-depfile-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir / "specs" / "out dir");
-    std::ofstream(dir / "house.toml") << "# a house style\nbase = \"slides\"\n";
-    std::ofstream(dir / "specs" / "a.toml") << "[figure]\nstyle = \"../house.toml\"\n[[panel]]\nplot = \"period\"\nmethods = [\"exact\"]\n";
+    // The style file inside the spec's directory: a spec's inputs stay in its tree.
+    std::ofstream(dir / "specs" / "house.toml") << "# a house style\nbase = \"slides\"\n";
+    std::ofstream(dir / "specs" / "a.toml") << "[figure]\nstyle = \"house.toml\"\n[[panel]]\nplot = \"period\"\nmethods = [\"exact\"]\n";
     auto r = run_cli("render specs/a.toml fig1 -f svg,pdf_tex -o 'specs/out dir' --depfile 'specs/out dir/a.d'", dir);
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string rule = test_support::slurp(dir / "specs" / "out dir" / "a.d");
@@ -479,12 +480,12 @@ TEST(Depfile, ListsEveryOutputAndInputAndFollowsTheSpecsStyle) {
                                "specs/out\\ dir/c1-lowest.svg", "specs/out\\ dir/c1-lowest.pdf_tex"}) {
         EXPECT_NE(head.find(target), std::string::npos) << target << " not a target of\n" << rule;
     }
-    for (const char* input : {"  specs/a.toml", "  house.toml", "/pendulum-figures"}) {
+    for (const char* input : {"  specs/a.toml", "  specs/house.toml", "/pendulum-figures"}) {
         EXPECT_NE(rule.find(input), std::string::npos) << input << " not an input of\n" << rule;
     }
     // The spec's style file draws it (slides' sans serif), the built-in figure keeps paper's.
     const std::string styled = test_support::slurp(dir / "specs" / "out dir" / "a.svg");
-    auto same = run_cli("render specs/a.toml -f svg -o - --theme house.toml", dir);
+    auto same = run_cli("render specs/a.toml -f svg -o - --theme specs/house.toml", dir);
     EXPECT_EQ(same.out, styled);
     auto paper = run_cli("render specs/a.toml -f svg -o - --theme paper", dir);
     EXPECT_NE(paper.out, styled);
@@ -492,10 +493,10 @@ TEST(Depfile, ListsEveryOutputAndInputAndFollowsTheSpecsStyle) {
     r = run_cli("render specs/a.toml -f svg -o 'specs/out dir' --depfile s.d --depfile-target s.d", dir);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(test_support::slurp(dir / "s.d").substr(0, 5), "s.d: ");
-    fs::remove(dir / "house.toml");
+    fs::remove(dir / "specs" / "house.toml");
     r = run_cli("render specs/a.toml -f svg -o 'specs/out dir'", dir);
     EXPECT_EQ(r.status, 2);
-    EXPECT_NE(r.err.find("[figure] style = house.toml"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("[figure] style = specs/house.toml"), std::string::npos) << r.err;
     EXPECT_EQ(run_cli("render fig1 -o - -f svg --depfile x.d", dir).status, 2);
     fs::remove_all(dir);
 }

@@ -53,7 +53,7 @@ std::vector<limit_case> cases() {
         {"orders", "[[panel]]\nplot = \"period\"\nmethods = [\"order:200\", \"order:150\", \"order:60\"]\n",
          "render SPEC -f png -o OUT", {"the orders of the order:N methods add up to 410", "at most 400"}},
         {"title", "[figure]\ntitle = \"" + std::string(1'000'000, 'x') + "\"\n" + period_panel,
-         "render SPEC -f png -o OUT", {"'title': label of 1000000 bytes: at most 1000"}},
+         "render SPEC -f png -o OUT", {"'title' has 1000000 bytes; at most 1000"}},
         {"spec-size", period_panel + std::string(2'000'000, 'k') + " = 1\n", "render SPEC -f png -o OUT",
          {"has 2000051 bytes; at most 1048576"}},
         {"unknown-key", period_panel + std::string(500'000, 'k') + " = 1\n", "render SPEC -f png -o OUT",

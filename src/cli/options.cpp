@@ -2,6 +2,7 @@
 #include "cli/options.hpp"
 
 #include "figures/themes.hpp"
+#include "plot/tex_markup.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -62,6 +63,20 @@ std::vector<figures::amplitude> parse_amplitudes(const std::string& given, std::
         values.push_back({item, v.radians(), v});
     });
     return values;
+}
+
+void check_list_item(const std::string& option, const std::string& text, std::size_t count, std::string_view item) {
+    if (count > max_list_items) {
+        throw usage_error(option + " " + (text.size() <= 80 ? shown_text(text) : std::string("LIST")) + ": more than " +
+                          std::to_string(max_list_items) + " values; a list takes at most " +
+                          std::to_string(max_list_items));
+    }
+    if (const std::string why = plot::text_problem(item); !why.empty()) {
+        const std::string shown = shown_text(item.size() <= 80 ? std::string(item)
+                                                               : std::string(item.substr(0, 40)) + "..." +
+                                                                     std::string(item.substr(item.size() - 20)));
+        throw usage_error(option + " '" + shown + "' " + why);
+    }
 }
 
 bool read_line(std::istream& in, std::string& line) {

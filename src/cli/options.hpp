@@ -33,6 +33,14 @@ extern const CLI::Validator non_empty;
 /// The longest line of a list file (@FILE, -): far more than any list of amplitudes needs.
 inline constexpr std::size_t max_list_line_bytes = 65536;
 
+/// The most values a list option takes, from its text, @FILE or standard input (-): the
+/// million amplitudes make bench evaluates, 8 MB of values. Reading stops at the next one.
+inline constexpr std::size_t max_list_items = 1'000'000;
+
+/// Refuses the item number `count` of a list option past max_list_items, and an item that
+/// is not one line of printable UTF-8 of at most plot::max_label_bytes (titles show it).
+void check_list_item(const std::string& option, const std::string& text, std::size_t count, std::string_view item);
+
 /// Reads a line as std::getline does, but stops after max_list_line_bytes + 1 bytes (a
 /// line that long is refused by the caller): a file of no newlines, /dev/zero, takes no
 /// more time or memory than that.
@@ -43,8 +51,12 @@ bool read_line(std::istream& in, std::string& line);
 /// they come, so that a million amplitudes need no more memory than their values.
 template <class Take>
 void for_each_item(const std::string& text, const std::string& option, Take take) {
+    std::size_t count = 0;
     if (text != "-" && (text.empty() || text[0] != '@')) {
-        for (const auto& item : split_list(text)) take(item);
+        for (const auto& item : split_list(text)) {
+            check_list_item(option, text, ++count, item);
+            take(item);
+        }
         return;
     }
     std::ifstream file;
@@ -74,6 +86,7 @@ void for_each_item(const std::string& text, const std::string& option, Take take
             const auto first = item.find_first_not_of(" \t\r");
             item = first == std::string_view::npos ? std::string_view()
                                                    : item.substr(first, item.find_last_not_of(" \t\r") - first + 1);
+            check_list_item(option, text, ++count, item);
             take(std::string(item));
             any = true;
             if (comma == std::string_view::npos) break;

@@ -13,6 +13,7 @@
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 namespace figures {
 
@@ -88,6 +89,8 @@ plot::panel start_trajectory_panel(const panel_context& c, const panel_spec& p) 
 
 plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
     if (!p.starts.empty()) return start_trajectory_panel(c, p);
+    // parse_spec refuses an empty list; a panel without a start is a bug, never a crash.
+    if (p.theta0.empty()) throw std::logic_error("a trajectory panel without a start or an amplitude");
     const amplitude& a = p.theta0.front();
     const pendulum::exact_solution exact(a.theta0());
     const double period = 4 * exact.quarter_period();  // T in units of 1/w0

@@ -371,9 +371,50 @@ void check_energy_axis(reader& r, const toml::table& t, const panel_spec& p) {
     }
 }
 
+/// Reports every empty list under `n` (the value of `key`), the lists of [[panel.line]]
+/// tables too: no list key of any panel means anything empty. True if there was one.
+bool empty_lists(reader& r, const toml::node& n, std::string_view key) {
+    bool any = false;
+    if (const auto* a = n.as_array()) {
+        if (a->empty()) {
+            r.problem(n, "'" + std::string(key) + "' is an empty list; give at least one value, or leave the key out");
+            return true;
+        }
+        for (const auto& e : *a) any = empty_lists(r, e, key) || any;
+    } else if (const auto* t = n.as_table()) {
+        for (const auto& [k, v] : *t) any = empty_lists(r, v, k.str()) || any;
+    }
+    return any;
+}
+
+/// [figure] style: a style file NAME.toml inside the spec's directory (its tree; a symbolic
+/// link leading out of it is refused when the spec is loaded, see load_spec).
+void read_style(reader& r, const toml::node& n, const std::string& v, figure_spec& f) {
+    const std::filesystem::path given(v);
+    if (!v.ends_with(".toml") || v.size() == 5) {
+        r.problem(n, "'style' names a style file NAME.toml, relative to the spec; a built-in theme is chosen with --theme");
+    } else if (given.is_absolute() || given.has_root_name() || given.has_root_directory()) {
+        r.problem(n, "'style' must be a path relative to the spec's directory, not an absolute path");
+    } else if (const auto normal = given.lexically_normal(); normal.empty() || *normal.begin() == "..") {
+        r.problem(n, "'style' must stay inside the spec's directory: no '..' leading out of it");
+    } else {
+        // Resolved now, through symbolic links: a link in the spec's tree may lead anywhere.
+        const auto dir = std::filesystem::path(r.file()).parent_path();
+        const auto style = dir / normal;
+        if (const std::string why = outside_problem(dir.empty() ? "." : dir, style); !why.empty()) {
+            r.problem(n, "'style' = \"" + v + "\" " + why);
+        } else {
+            f.style = style.string();
+        }
+    }
+}
+
 std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figure_spec& f) {
     panel_spec p;
     p.where = r.at(t.source());
+    // An empty list is refused before the keys are read: the panel's builders take the first
+    // start, amplitude or method of each list.
+    if (empty_lists(r, t, "panel")) return std::nullopt;
     const toml::node* plot_node = t.get("plot");
     if (!plot_node || !plot_node->is_string()) {
         r.problem(plot_node ? r.at(plot_node->source()) : p.where,
@@ -602,7 +643,7 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
     f.id = std::filesystem::path(file).stem().string();
     toml::table doc;
     try {
-        doc = toml::parse(text, file);
+        doc = parse_toml(text, file);
     } catch (const toml::parse_error& e) {
         throw spec_error({{r.at(e.source()), "not valid TOML: " + std::string(e.description())}});
     }
@@ -617,14 +658,7 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
             if (auto v = r.choice(*t, "legend", legend_modes)) f.legend = *v;
             if (auto v = r.label(*t, "title")) f.title = *v;
             if (auto v = r.string(*t, "description")) f.description = *v;
-            if (auto v = r.string(*t, "style")) {
-                if (!v->ends_with(".toml") || v->size() == 5) {
-                    r.problem(*t->get("style"), "'style' names a style file NAME.toml, relative to the spec; "
-                                                "a built-in theme is chosen with --theme");
-                } else {
-                    f.style = (std::filesystem::path(file).parent_path() / *v).lexically_normal().string();
-                }
-            }
+            if (auto v = r.string(*t, "style")) read_style(r, *t->get("style"), *v, f);
         } else {
             r.problem(*n, "'figure' must be a table: [figure]");
         }
@@ -682,6 +716,19 @@ figure_spec parse_spec(std::string_view text, const std::string& file) {
         throw spec_error(std::move(problems));
     }
     return f;
+}
+
+std::string outside_problem(const std::filesystem::path& tree, const std::filesystem::path& file) {
+    std::error_code ec;
+    const auto root = std::filesystem::weakly_canonical(std::filesystem::absolute(tree, ec), ec);
+    const auto target = ec ? std::filesystem::path()
+                           : std::filesystem::weakly_canonical(std::filesystem::absolute(file, ec), ec);
+    if (ec) return "cannot be resolved: " + ec.message();
+    const auto relative = target.lexically_relative(root);
+    if (relative.empty() || *relative.begin() == "..") {
+        return "leads out of the spec's directory (through a symbolic link); a spec's style file stays inside it";
+    }
+    return {};
 }
 
 figure_spec load_spec(const std::filesystem::path& path) {

@@ -149,7 +149,8 @@ struct figure_spec {
     std::vector<panel_spec> panels;             ///< at least one
 };
 
-/// Reads a spec from TOML text; `file` names it in messages and gives the id (its stem).
+/// Reads a spec from TOML text; `file` names it in messages and gives the id (its stem),
+/// and its directory is the tree its style file must be in (symbolic links resolved).
 /// Throws spec_error listing every problem found.
 figure_spec parse_spec(std::string_view text, const std::string& file);
 
@@ -173,6 +174,10 @@ inline constexpr std::size_t max_file_name_bytes = 100;
 /// Why `name` is not a file name a spec may give (empty if it is): letters, digits and
 /// . _ + - only, no directory, not starting with . or -, no "..", at most max_file_name_bytes.
 std::string file_name_problem(std::string_view name);
+
+/// Why `file` (a spec's input) is not inside the directory `tree` once both are resolved
+/// through symbolic links (empty if it is inside).
+std::string outside_problem(const std::filesystem::path& tree, const std::filesystem::path& file);
 
 /// The closest of `names` to `word` when it is a likely misspelling, else empty.
 std::string suggest(std::string_view word, const std::vector<std::string>& names);

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <utility>
+#include <variant>
 
 namespace figures {
 
@@ -90,6 +91,36 @@ std::optional<plot::rgb> color(reader& r, const toml::node& n, std::string_view 
     return c;
 }
 
+/// The keys of a style file whose values are strings: --set takes their values as typed
+/// (--set size_px=0x10 is the text 0x10, not the TOML number 16).
+constexpr std::string_view string_keys[] = {"base", "description", "font_family", "size_px", "svg_text", "svg_size"};
+
+/// The smallest and largest side of a raster in pixels.
+constexpr int min_side_px = 16;
+constexpr int max_side_px = 20000;
+
+/// A raster's size "WIDTHxHEIGHT" in pixels, or what is wrong with it.
+std::variant<std::pair<int, int>, std::string> parse_size_px(const std::string& text) {
+    // A side: up to 6 digits, else -1.
+    const auto side = [](std::string_view digits) {
+        if (digits.empty() || digits.size() > 6 || digits.find_first_not_of("0123456789") != std::string_view::npos) {
+            return -1;
+        }
+        return std::stoi(std::string(digits));
+    };
+    const auto x = text.find('x');
+    const int w = x == std::string::npos ? -1 : side(std::string_view(text).substr(0, x));
+    const int h = x == std::string::npos ? -1 : side(std::string_view(text).substr(x + 1));
+    const std::string range = std::to_string(min_side_px) + " to " + std::to_string(max_side_px) + " pixels";
+    if (w < 0 || h < 0) return "not WIDTHxHEIGHT, two whole numbers of pixels (" + range + " each), e.g. \"1920x1080\"";
+    for (const auto& [name, v] : {std::pair{"width", w}, std::pair{"height", h}}) {
+        if (v < min_side_px || v > max_side_px) {
+            return std::string("the ") + name + " " + std::to_string(v) + " is out of range; each side is " + range;
+        }
+    }
+    return std::pair{w, h};
+}
+
 /// Applies the keys of one style file (or --set line) to `t`.
 void apply(reader& r, const toml::table& doc, plot::theme& t) {
     r.check_keys(doc, all_keys(), "a style file");
@@ -101,17 +132,12 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
         }
     }
     if (auto v = r.string(doc, "size_px")) {
-        int w = 0;
-        int h = 0;
-        char x = 0;
-        char rest = 0;
-        if (std::sscanf(v->c_str(), "%d%c%d%c", &w, &x, &h, &rest) == 3 && x == 'x' && w >= 16 && h >= 16 &&
-            w <= 20000 && h <= 20000) {
-            t.width_px = w;
-            t.height_px = h;
+        const auto size = parse_size_px(*v);
+        if (const auto* why = std::get_if<std::string>(&size)) {
+            r.problem(*doc.get("size_px"), "'size_px' = \"" + *v + "\": " + *why);
         } else {
-            r.problem(*doc.get("size_px"), "'size_px' = \"" + *v + "\" must be WIDTHxHEIGHT in pixels, 16 to 20000 each, "
-                                           "e.g. \"1920x1080\"");
+            t.width_px = std::get<0>(size).first;
+            t.height_px = std::get<0>(size).second;
         }
     }
     for (const auto& k : number_keys) {
@@ -174,7 +200,7 @@ std::string read_file(const std::string& path) { return read_input_file(path, "s
 
 toml::table parse(reader& r, std::string_view text) {
     try {
-        return toml::parse(text, r.file());
+        return parse_toml(text, r.file());
     } catch (const toml::parse_error& e) {
         throw spec_error({{r.at(e.source()), "not valid TOML: " + std::string(e.description())}});
     }
@@ -200,6 +226,37 @@ void check_font(const std::string& family, const std::string& from) {
     const std::string package = first.starts_with("CMU ") ? " (Debian package fonts-cmu)" : "";
     throw_option_problem(from, "'font_family' = \"" + family + "\": font '" + first + "' is not installed" + package +
                                    "; fc-list : family lists the installed families");
+}
+
+/// The TOML of one --set KEY=VALUE. A value that is not TOML, or is given to a key that
+/// takes a string, is a string: --set font_family=DejaVu Sans, --set size_px=0x10.
+toml::table parse_set(const std::string& key, const std::string& value) {
+    std::string quoted = "\"";
+    for (char c : value) {
+        if (c == '"' || c == '\\') quoted += '\\';
+        quoted += c;
+    }
+    quoted += '"';
+    const bool key_shown = plot::text_problem(key).empty();
+    if (const std::string why = plot::text_problem(value); !why.empty()) {
+        throw_option_problem(key_shown ? "--set " + key : std::string("--set"), "the value " + why);
+    }
+    const bool is_string_key = std::find(std::begin(string_keys), std::end(string_keys), key) != std::end(string_keys);
+    const bool typed_string = value.starts_with('"') || value.starts_with('\'');
+    try {
+        try {
+            return parse_toml(key + " = " + (is_string_key && !typed_string ? quoted : value), "--set");
+        } catch (const toml::parse_error&) {
+            return parse_toml(key + " = " + quoted, "--set");
+        }
+    } catch (const toml::parse_error& e) {
+        throw_option_problem("--set " + key, "not a value: " + std::string(e.description()));
+    } catch (const spec_error& e) {
+        // Positions in a one-line --set mean nothing: the option is named instead.
+        std::vector<spec_problem> problems = e.problems();
+        for (auto& p : problems) p.where = {key_shown ? "--set " + key : std::string("--set"), 0, 0};
+        throw spec_error(std::move(problems));
+    }
 }
 
 plot::theme load(std::string_view name_or_file, int depth) {
@@ -240,7 +297,7 @@ std::span<const builtin_theme> builtin_themes() {
             for (const auto& [file, text] : sources) {
                 if (file == name) {
                     const std::string file = std::string(name) + ".toml";
-                    const auto doc = toml::parse(text, std::string_view(file));
+                    const auto doc = parse_toml(text, file);
                     v.push_back({name, text, doc["description"].value_or(std::string())});
                 }
             }
@@ -272,7 +329,8 @@ std::string_view theme_source(std::string_view name) {
     std::vector<std::string> names;
     for (const auto& t : builtin_themes()) names.emplace_back(t.name);
     const std::string guess = suggest(name, names);
-    throw bad_input("unknown theme '" + std::string(name) + "'; themes: " + theme_names() +
+    const std::string shown = plot::text_problem(name).empty() ? "'" + std::string(name) + "'" : std::string("name");
+    throw bad_input("unknown theme " + shown + "; themes: " + theme_names() +
                                 ", or a style file NAME.toml" + (guess.empty() ? "" : "; did you mean " + guess + "?"));
 }
 
@@ -282,29 +340,13 @@ plot::theme load_theme(std::string_view name_or_file, const std::vector<std::str
     for (const auto& set : sets) {
         const auto eq = set.find('=');
         if (eq == std::string::npos || eq == 0) {
-            throw_option_problem("--set", "'" + set + "' must be KEY=VALUE, e.g. tick_font_pt=9");
+            const std::string shown = plot::text_problem(set).empty() ? "'" + set + "'" : std::string("the value");
+            throw_option_problem("--set", shown + " must be KEY=VALUE, e.g. tick_font_pt=9");
         }
         const std::string key = set.substr(0, eq);
         std::string value = set.substr(eq + 1);
-        // A value that is not TOML is a string: --set font_family=DejaVu Sans.
-        toml::table doc;
+        const toml::table doc = parse_set(key, value);
         reader r("--set " + key);
-        try {
-            const std::string line = key + " = " + value;
-            doc = toml::parse(std::string_view(line), std::string_view("--set"));
-        } catch (const toml::parse_error&) {
-            std::string quoted = "\"";
-            for (char c : value) {
-                if (c == '"' || c == '\\') quoted += '\\';
-                quoted += c;
-            }
-            try {
-                const std::string line = key + " = " + quoted + "\"";
-                doc = toml::parse(std::string_view(line), std::string_view("--set"));
-            } catch (const toml::parse_error& e) {
-                throw_option_problem("--set " + key, "not a value: " + std::string(e.description()));
-            }
-        }
         apply(r, doc, t);
         // Positions in a one-line --set mean nothing: name the option instead.
         for (auto& p : r.problems()) p.where = {"--set " + set, 0, 0};

@@ -47,6 +47,20 @@ inline constexpr std::array<std::pair<std::string_view, plot::marker_style>, 2> 
     {"circle", plot::marker_style::open_circle},
 }};
 
+/// The deepest a spec, style file or --set line may nest its keys: dotted keys, [table] and
+/// [[array.of.tables]] headers, with the inline tables and lists around a key, counted
+/// together. toml++ bounds the nesting of values (TOML_MAX_NESTED_VALUES, 256) but not of
+/// keys, and a key 50,000 deep overflows the stack; this is the same bound for keys.
+inline constexpr std::size_t max_toml_depth = 256;
+
+/// Parses TOML text from a spec, style file or --set line (`file` names it in messages):
+/// the one way such text is parsed. First measures how deep its keys nest (without
+/// parsing: strings and comments skipped, a quoted key's dots not counted) and refuses
+/// text deeper than max_toml_depth; then parses it; then checks every key and string in it
+/// with plot::text_problem. Throws spec_error (with file, line and column) for text too
+/// deep or with a bad key or string, and toml::parse_error for text that is not TOML.
+toml::table parse_toml(std::string_view text, const std::string& file);
+
 /// Reads typed values from TOML tables, collecting one problem per bad value with its
 /// file, line and column (specs and style files).
 class reader {
@@ -69,8 +83,13 @@ public:
         for (const auto& [key, value] : table) {
             const std::string name(key.str());
             if (contains(allowed, name)) continue;
-            // A long key is shown by its ends.
-            const std::string shown = name.size() <= 80 ? name : name.substr(0, 40) + "..." + name.substr(name.size() - 20);
+            // A long key is shown by its ends, cut between UTF-8 characters.
+            const auto boundary = [&](std::size_t i) {
+                while (i > 0 && (static_cast<unsigned char>(name[i]) & 0xc0) == 0x80) --i;
+                return i;
+            };
+            const std::string shown =
+                name.size() <= 80 ? name : name.substr(0, boundary(40)) + "..." + name.substr(boundary(name.size() - 20));
             std::string what = "unknown key '" + shown + "' in " + context;
             if (contains(elsewhere, name)) {
                 what = "key '" + name + "' " + elsewhere_why;

@@ -49,6 +49,40 @@ constexpr std::array<symbol, 62> symbols = {{
     {"lvert", "|", false},         {"rvert", "|", false},
 }};
 
+/// The code point of the UTF-8 sequence at text[i] and its length, or a length of 0 where
+/// the bytes are not valid UTF-8 (the shortest form, no surrogate, at most U+10FFFF).
+std::pair<char32_t, std::size_t> utf8_at(std::string_view text, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char b = byte(i);
+    if (b < 0x80) return {b, 1};
+    std::size_t length = 0;
+    unsigned char lo = 0x80;
+    unsigned char hi = 0xbf;
+    char32_t cp = 0;
+    if (b >= 0xc2 && b <= 0xdf) {
+        length = 2, cp = b & 0x1f;
+    } else if (b >= 0xe0 && b <= 0xef) {
+        length = 3, cp = b & 0x0f, lo = b == 0xe0 ? 0xa0 : 0x80, hi = b == 0xed ? 0x9f : 0xbf;
+    } else if (b >= 0xf0 && b <= 0xf4) {
+        length = 4, cp = b & 0x07, lo = b == 0xf0 ? 0x90 : 0x80, hi = b == 0xf4 ? 0x8f : 0xbf;
+    } else {
+        return {0, 0};
+    }
+    if (i + length > text.size()) return {0, 0};
+    for (std::size_t k = 1; k < length; ++k) {
+        const unsigned char c = byte(i + k);
+        if (c < (k == 1 ? lo : 0x80) || c > (k == 1 ? hi : 0xbf)) return {0, 0};
+        cp = (cp << 6) | (c & 0x3f);
+    }
+    return {cp, length};
+}
+
+std::string code_point(char32_t cp) {
+    char out[16];
+    std::snprintf(out, sizeof out, "U+%04X", static_cast<unsigned>(cp));
+    return out;
+}
+
 std::string math_character(const std::string& c, const std::string& whole);
 std::string text_character(const std::string& c);
 std::string_view text_escape(char c);
@@ -73,15 +107,7 @@ public:
             throw bad_input("label of " + std::to_string(tex_.size()) + " bytes: at most " +
                                         std::to_string(max_label_bytes));
         }
-        if (!g_utf8_validate(tex_.data(), static_cast<gssize>(tex_.size()), nullptr)) fail("not valid UTF-8");
-        for (const char c : tex_) {
-            const auto u = static_cast<unsigned char>(c);
-            if (u < 0x20 || u == 0x7f) {
-                char code[8];
-                std::snprintf(code, sizeof code, "%02x", u);
-                fail(std::string("control character U+00") + code + " (a label is one line of text)");
-            }
-        }
+        if (const std::string why = text_problem(tex_, max_label_bytes); !why.empty()) fail(why);
         std::string out;
         while (pos_ < tex_.size()) {
             const char c = tex_[pos_];
@@ -596,6 +622,29 @@ std::string text_of(const std::vector<markup_node>& nodes, const std::string& wh
 }
 
 }  // namespace
+
+std::string text_problem(std::string_view text, std::size_t max_bytes) {
+    if (text.size() > max_bytes) {
+        return "has " + std::to_string(text.size()) + " bytes; at most " + std::to_string(max_bytes);
+    }
+    for (std::size_t i = 0; i < text.size();) {
+        const auto [cp, length] = utf8_at(text, i);
+        if (length == 0) {
+            char shown[64];
+            std::snprintf(shown, sizeof shown, "is not valid UTF-8 (byte 0x%02x at byte %zu)",
+                          static_cast<unsigned char>(text[i]), i + 1);
+            return shown;
+        }
+        if (cp < 0x20 || (cp >= 0x7f && cp <= 0x9f)) {
+            return "has the control character " + code_point(cp) + " (text here is one line of printable characters)";
+        }
+        if ((cp >= 0xfdd0 && cp <= 0xfdef) || (cp & 0xfffe) == 0xfffe) {
+            return "has the noncharacter " + code_point(cp) + ", which no document may hold";
+        }
+        i += length;
+    }
+    return {};
+}
 
 std::string tex_to_markup(std::string_view tex) { return converter(tex, target::markup).run(); }
 

@@ -13,6 +13,14 @@ namespace plot {
 /// bounds the work a label can ask for.
 inline constexpr std::size_t max_label_bytes = 1000;
 
+/// Why `text` cannot be drawn or printed as it is (empty if it can): more than `max_bytes`
+/// bytes, not valid UTF-8 (overlong forms, surrogates and code points past U+10FFFF are
+/// refused), a C0 or C1 control character or DEL (a label, title or description is one line
+/// of text), or a noncharacter (U+FDD0..U+FDEF, U+xxFFFE, U+xxFFFF), which XML forbids. The
+/// one check of every text a spec, style file or command line gives; the reason does not
+/// quote the text.
+std::string text_problem(std::string_view text, std::size_t max_bytes = max_label_bytes);
+
 /// Turns a label written with TeX math in $...$ into Pango markup: plain text outside
 /// the dollars (escaped), and inside them italic letters, Greek letters (\vartheta, \pi,
 /// ...), primes, _ and ^ with braces, \, and a few symbols, set as TeX sets them.

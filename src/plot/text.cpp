@@ -3,9 +3,14 @@
 
 #include "plot/theme.hpp"
 
+#include "plot/errors.hpp"
+#include "plot/tex_markup.hpp"
+
 #include <fontconfig/fontconfig.h>
+#include <sys/stat.h>
 #include <pango/pangofc-fontmap.h>
 
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -35,8 +40,29 @@ std::string xml_escaped(const char* text) {
 /// with their caches; none of the machine's or the user's font settings (substitutions,
 /// hinting, subpixel order), which would otherwise change the pictures from one machine to
 /// the next.
+/// The largest FONTCONFIG_FILE read: a fonts.conf has a few kilobytes.
+constexpr off_t max_fontconfig_file_bytes = 1 << 20;
+
+/// Refuses a FONTCONFIG_FILE that fontconfig would read without bound: a device
+/// (/dev/zero), FIFO or directory, or a file of more than max_fontconfig_file_bytes. One it
+/// cannot find is fontconfig's to report, as before.
+void check_fontconfig_file() {
+    const char* file = std::getenv("FONTCONFIG_FILE");
+    struct stat st {};
+    if (!file || !*file || ::stat(file, &st) != 0) return;
+    const std::string named = "FONTCONFIG_FILE" + (text_problem(file).empty() ? "='" + std::string(file) + "'" : std::string());
+    if (!S_ISREG(st.st_mode)) {
+        throw bad_input(named + " is not a regular file (a device, FIFO or directory); unset it or name a fonts.conf");
+    }
+    if (st.st_size > max_fontconfig_file_bytes) {
+        throw bad_input(named + " has " + std::to_string(st.st_size) + " bytes; a fontconfig file here has at most " +
+                        std::to_string(max_fontconfig_file_bytes));
+    }
+}
+
 FcConfig* private_font_config() {
     static FcConfig* const config = [] {
+        check_fontconfig_file();  // before fontconfig reads its configuration
         std::string xml =
             "<?xml version=\"1.0\"?><!DOCTYPE fontconfig SYSTEM \"urn:fontconfig:fonts.dtd\">"
             "<fontconfig><dir>/usr/share/fonts</dir><cachedir>/var/cache/fontconfig</cachedir>"

@@ -251,6 +251,7 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
         throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
     }
     figures::check_distinct_outputs(all_jobs, all_moving, formats, o.dir, at.has_value());
+    figures::check_render_cost(jobs, moving, formats, build, styles, at.has_value());
     const std::string depfile =
         o.depfile.empty() ? std::string() : dependency_rule(o, groups, all_jobs, all_moving, formats, at);
     for (std::size_t g = 0; g < groups.size(); ++g) {

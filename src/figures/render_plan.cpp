@@ -117,6 +117,12 @@ void check_render_cost(const std::vector<std::vector<figure_file>>& stills,
                        const std::vector<std::vector<animation_job>>& animations,
                        const std::vector<std::string>& formats, const build_options& build,
                        const std::vector<render_style>& styles, bool at) {
+    // The specific limits first (an animation's pixels, a video's memory), then the whole.
+    if (!at) {
+        for (std::size_t g = 0; g < styles.size() && g < animations.size(); ++g) {
+            check_animation_work(animations[g], formats, build, styles[g]);
+        }
+    }
     std::vector<costed_figure> all;
     for (std::size_t g = 0; g < styles.size(); ++g) {
         const auto group = costed(g < stills.size() ? stills[g] : std::vector<figure_file>{},

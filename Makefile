@@ -136,7 +136,7 @@ update-baselines: build
 PREFIX ?= /usr/local
 INSTALLED_TARGETS := pendulum-figures pendulum_core
 install: deps
-	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_INSTALL_PREFIX=$(PREFIX)
 	cmake --build $(BUILD) -j $(JOBS) --target $(INSTALLED_TARGETS)
 	DESTDIR=$(DESTDIR) cmake --install $(BUILD) --prefix $(PREFIX)
 

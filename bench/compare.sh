@@ -5,7 +5,10 @@
 # the medians over the rounds and their ratio. Then callgrind's instruction counts (the
 # paper's figures, the catalog, one animation frame) and the peak memory of the swing GIF
 # for 1 and 30 periods at 720p and 4K.
-# Usage: compare.sh EXE [ROUNDS]   (BENCH_MEMORY=0 leaves out the memory rows)
+# Last, the worst accepted spec (bench/worst_accepted.toml, estimated just under the render
+# bound): its time and peak memory.
+# Usage: compare.sh EXE [ROUNDS]   (BENCH_MEMORY=0 leaves out the memory rows, BENCH_WORST=0
+# the worst accepted spec, which takes minutes)
 set -euo pipefail
 exe=$(realpath "${1:?usage: compare.sh EXE [ROUNDS]}")
 rounds=${2:-5}
@@ -109,3 +112,13 @@ for size in 1280x720 3840x2160; do
     printf '%-48s %6d MB\n' "$size, $periods period(s)${frames:+ (frames 1..2400)}" $(( $(cat "$out/rss") / 1024 ))
   done
 done
+
+[ "${BENCH_WORST:-1}" = 0 ] && exit 0
+# The most a render may cost: a spec estimated just under the bound (bench/calibrate_costs.md).
+echo
+echo "The worst accepted spec (bench/worst_accepted.toml, png + pdf, $(nproc) CPUs usable):"
+/usr/bin/time -f '%e %U %S %M' -o "$out/worst" "$exe" render "$here/worst_accepted.toml" -f png,pdf --force \
+  -o "$out/ours" >/dev/null
+read -r wall user sys kb <"$out/worst"
+printf '%-48s %6.0f s (%.0f s of CPU), %d MB\n' "15 trajectory panels, 12 x order:100 close to pi" "$wall" \
+  "$(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }')" $((kb / 1024))

@@ -6,6 +6,7 @@
 #include "cli/report.hpp"
 #include "figures/batch.hpp"
 #include "figures/plots.hpp"
+#include "figures/render_cost.hpp"
 #include "figures/render_plan.hpp"
 #include "plot/output.hpp"
 
@@ -30,6 +31,7 @@ std::string figure_data(const std::string& id, const std::string& theta0) {
         }
         build.amplitudes = parse_amplitudes(theta0, figures::max_amplitudes_per_panel);
     }
+    figures::check_cost({figures::costed_figure{&e, 0, {"csv"}, 0}}, build);  // with the amplitudes of --theta0
     return figures::figure_csv(figures::build(e, build));
 }
 

@@ -284,6 +284,7 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
     }
     if (!o.depfile.empty()) outputs.emplace_back(o.depfile);
     plot::check_output_files(outputs);
+    figures::check_render_cost(jobs, moving, formats, build, styles, at.has_value());
     const std::string depfile =
         o.depfile.empty() ? std::string()
                           : dependency_rule(o, dependency_files(o, groups, all_jobs, all_moving, formats, at));

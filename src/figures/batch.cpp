@@ -3,6 +3,7 @@
 
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
+#include "plot/frames.hpp"
 #include "plot/workers.hpp"
 
 #include <algorithm>
@@ -96,6 +97,21 @@ plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
 
 namespace {
 
+/// What a worker holds at most while writing one of the files: the largest raster's bytes
+/// (a panel alone is smaller than its figure, whose size bounds it).
+double largest_raster_bytes(const std::vector<figure_file>& files, const build_options& options,
+                            const plot::theme& theme, const plot::output_options& output) {
+    double most = 0;
+    for (const auto& f : files) {
+        std::string ext = f.path.extension().string();
+        if (!ext.empty()) ext.erase(0, 1);
+        if (!plot::find_format(ext).raster) continue;
+        const auto [w, h] = plot::pixel_size(figure_grid(f.figure->spec, sized_by(options, theme)), theme, output.dpi);
+        most = std::max(most, plot::raster_bytes_per_pixel * w * h);
+    }
+    return most;
+}
+
 /// Work for the pool: build a figure, or write one file of a built figure.
 struct task {
     std::size_t figure;  // index into the distinct figures
@@ -157,7 +173,9 @@ void write_figures(const std::vector<figure_file>& files, const build_options& o
             changed.notify_all();
         }
     };
-    const unsigned workers = plot::worker_count(output.jobs, files.size());
+    // As many workers as there are files, or CPUs, or rasters that fit the memory budget.
+    const unsigned workers = plot::workers_within_budget(plot::worker_count(output.jobs, files.size()),
+                                                         largest_raster_bytes(files, options, theme, output));
     std::vector<std::thread> threads;
     for (unsigned i = 1; i < workers; ++i) threads.emplace_back(worker);
     worker();

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/render_plan.hpp"
 
+#include "figures/render_cost.hpp"
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
 #include "plot/frames.hpp"
 #include "plot/streamed_file.hpp"
+#include "plot/video.hpp"
+#include "plot/workers.hpp"
 
 #include <algorithm>
 #include <exception>
@@ -14,13 +17,17 @@
 namespace figures {
 
 entry load_input(std::string_view id_or_file) {
+    entry e;
     try {
-        return load(id_or_file);
-    } catch (const spec_error& e) {
-        throw bad_input(std::string("bad figure spec:\n") + e.what());
-    } catch (const std::runtime_error& e) {
-        throw bad_input(e.what());
+        e = load(id_or_file);
+    } catch (const spec_error& err) {
+        throw bad_input(std::string("bad figure spec:\n") + err.what());
+    } catch (const std::runtime_error& err) {
+        throw bad_input(err.what());
     }
+    // Built once, as data and describe build it: refused before any work if too costly.
+    check_cost({costed_figure{&e, 0, {"svg"}, 0}}, {});
+    return e;
 }
 
 std::vector<const entry*> selected_figures(const std::vector<std::string>& ids, bool all,
@@ -57,7 +64,12 @@ void check_raster_sizes(const std::vector<const entry*>& figures, const std::vec
         for (const auto& f : formats) {
             if (!plot::find_format(f).raster) continue;
             try {
-                plot::check_raster_size(figure_grid(e->spec, grid), th, moving ? style.moving.dpi : style.still.dpi);
+                const double dpi = moving ? style.moving.dpi : style.still.dpi;
+                const plot::figure layout = figure_grid(e->spec, grid);
+                plot::check_raster_size(layout, th, dpi);
+                const auto [w, h] = plot::pixel_size(layout, th, dpi);
+                plot::check_worker_memory(plot::raster_bytes_per_pixel * w * h, "a raster of " + std::to_string(w) +
+                                          " x " + std::to_string(h) + " pixels", "lower --dpi or size_px");
             } catch (const plot::bad_input& err) {
                 throw bad_input(e->id + "." + f + ": " + err.what());
             }
@@ -65,10 +77,68 @@ void check_raster_sizes(const std::vector<const entry*>& figures, const std::vec
     }
 }
 
+namespace {
+
+/// The pixels of one raster of the figure, 0 if no format is a raster.
+double raster_pixels(const entry& e, const std::vector<std::string>& formats, const build_options& build,
+                     const plot::theme& theme, double dpi) {
+    if (std::none_of(formats.begin(), formats.end(), [](const auto& f) { return plot::find_format(f).raster; })) {
+        return 0;
+    }
+    const auto [w, h] = plot::pixel_size(figure_grid(e.spec, sized_by(build, theme)), theme, dpi);
+    return static_cast<double>(w) * h;
+}
+
+/// A group's figures as the cost estimate takes them: each still figure with its files, each
+/// animation with its frames (one with --at) in every format.
+std::vector<costed_figure> costed(const std::vector<figure_file>& stills, const std::vector<animation_job>& animations,
+                                  const std::vector<std::string>& formats, const build_options& build,
+                                  const render_style& style, bool at) {
+    std::vector<costed_figure> out;
+    for (const auto& f : stills) {
+        auto same = std::find_if(out.begin(), out.end(), [&](const auto& c) { return c.figure == f.figure; });
+        if (same == out.end()) {
+            out.push_back({f.figure, 0, {}, raster_pixels(*f.figure, formats, build, style.still_theme, style.still.dpi)});
+            same = out.end() - 1;
+        }
+        std::string ext = f.path.extension().string();
+        same->formats.push_back(ext.empty() ? ext : ext.substr(1));
+    }
+    for (const auto& m : animations) {
+        const double pixels = raster_pixels(*m.figure, formats, build, style.moving_theme, style.moving.dpi);
+        out.push_back({m.figure, at ? 1 : m.last - m.first + 1, formats, pixels});
+    }
+    return out;
+}
+
+}  // namespace
+
+void check_render_cost(const std::vector<std::vector<figure_file>>& stills,
+                       const std::vector<std::vector<animation_job>>& animations,
+                       const std::vector<std::string>& formats, const build_options& build,
+                       const std::vector<render_style>& styles, bool at) {
+    // The specific limits first (an animation's pixels, a video's memory), then the whole.
+    if (!at) {
+        for (std::size_t g = 0; g < styles.size() && g < animations.size(); ++g) {
+            check_animation_work(animations[g], formats, build, styles[g]);
+        }
+    }
+    std::vector<costed_figure> all;
+    for (std::size_t g = 0; g < styles.size(); ++g) {
+        const auto group = costed(g < stills.size() ? stills[g] : std::vector<figure_file>{},
+                                  g < animations.size() ? animations[g] : std::vector<animation_job>{}, formats, build,
+                                  styles[g], at);
+        all.insert(all.end(), group.begin(), group.end());
+    }
+    check_cost(all, build);
+}
+
 std::string render_one(const entry& e, const build_options& build, const plot::theme& theme,
                        std::string_view format, const plot::output_options& output) {
     const build_options one = sized_by(build, theme);
     plot::check_raster_size(figure_grid(e.spec, one), theme, output.dpi);
+    check_cost({costed_figure{&e, 0, {std::string(format)}, raster_pixels(e, {std::string(format)}, build, theme, output.dpi)}},
+               build);
     return plot::render(figures::build(e, one), theme, format, output);
 }
 
@@ -131,6 +201,12 @@ void check_animation_work(const std::vector<animation_job>& animations, const st
         const double pixels = frames * w * h;
         for (const auto& f : formats) {
             const plot::format_row& row = plot::find_format(f);
+            try {
+                if (f == "mp4") plot::check_video_memory(plot::mp4_video, w, h);
+                if (f == "webm") plot::check_video_memory(plot::webm_video, w, h);
+            } catch (const plot::bad_input& err) {
+                throw bad_input(m.figure->id + "." + f + ": " + err.what());
+            }
             if (!row.raster || !row.animate || pixels <= max_animation_pixels) continue;
             throw bad_input(m.figure->id + "." + f + ": " + pendulum::format_double(frames) + " frames of " +
                             std::to_string(w) + " x " + std::to_string(h) + " pixels are " +
@@ -214,6 +290,7 @@ void write_render(const std::vector<figure_file>& stills, const std::vector<anim
         check_frame_rates(animations, formats);
         check_animation_work(animations, formats, build, style);
     }
+    check_render_cost({stills}, {animations}, formats, build, {style}, at.has_value());
     // The files are synced together and then renamed, when all are written; on a failure,
     // those finished before it are kept, as they would have been one by one, and the
     // failure is what is reported.

@@ -75,6 +75,14 @@ inline constexpr double max_animation_pixels = 2e10;
 void check_animation_work(const std::vector<animation_job>& animations, const std::vector<std::string>& formats,
                           const build_options& build, const render_style& style);
 
+/// Throws bad_input, before any work, if the render of every group (its still files and its
+/// animations' frames, with the group's style) is estimated to take more than a render may
+/// (figures::check_cost): the seconds of computing and drawing, and the series' memory.
+void check_render_cost(const std::vector<std::vector<figure_file>>& stills,
+                       const std::vector<std::vector<animation_job>>& animations,
+                       const std::vector<std::string>& formats, const build_options& build,
+                       const std::vector<render_style>& styles, bool at);
+
 /// Writes a render (after check_distinct_outputs and check_animation_work): the still figures' files, then each animation in each format, all its
 /// frames where the format holds an animation, otherwise one frame, at t/T = `at` if given
 /// (in every format) or the first frame written.

@@ -180,15 +180,23 @@ void write_gif_animation(const animation_frames& frames, const theme& th, const 
 
 void write_pdf_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
                          const std::string& id, const output_options&) {
-    const std::string bytes =
-        render_pdf_pages(frames.last - frames.first + 1, [&](int i) { return frames.frame(frames.first + i); }, th);
-    write_atomically(dir / pdf_animation_file(id, frames.first, frames.count), bytes);
+    // Page by page into the file, as a GIF's parts are: memory stays the same at any length.
+    streamed_file file(dir / pdf_animation_file(id, frames.first, frames.count));
+    render_pdf_pages(
+        frames.last - frames.first + 1, [&](int i) { return frames.frame(frames.first + i); }, th,
+        [&](std::string_view bytes) { file.write(bytes); });
+    file.commit();
 }
 
 void write_png_animation(const animation_frames& frames, const theme& th, const std::filesystem::path& dir,
                          const std::string& id, const output_options& options) {
-    // Each frame is drawn whole, as the still PNG of that figure is, into a worker's buffers.
-    in_order<int>(frames.first, frames.last, options.jobs,
+    // Each frame is drawn whole, as the still PNG of that figure is, into a worker's buffers:
+    // as many workers as the memory budget holds.
+    const auto [width, height] = pixel_size(frames.frame(frames.first), th, options.dpi);
+    const unsigned jobs =
+        workers_within_budget(worker_count(options.jobs, static_cast<std::size_t>(frames.last - frames.first + 1)),
+                              raster_bytes_per_pixel * width * height);
+    in_order<int>(frames.first, frames.last, jobs,
                   [&](int i) {
                       // A worker's buffers, reused: a large one is mapped and unmapped by the
                       // allocator at every frame otherwise.
@@ -215,10 +223,14 @@ void write_video_animation(const animation_frames& frames, const theme& th, cons
     // What stays is drawn once; each frame draws what moves over a copy of it.
     const argb_image still_image = render_argb(first_frame, th, options.dpi, draw_pass::still);
     const std::string name = id + "." + kind.container;
+    // As many workers as the encoder's memory leaves room for (check_video_memory: one at least).
+    const video_settings settings = video_settings_for(kind, width, height);
+    unsigned workers = worker_count(options.jobs, static_cast<std::size_t>(frames.last - frames.first + 1));
+    while (workers > 1 && video_memory(kind, width, height, settings, workers) > raster_budget_bytes) --workers;
     write_atomically_by(dir / name, [&](const std::filesystem::path& file) {
         video_encoder video(file, name, kind, width, height, frames.fps);
         in_order<video_frame>(
-            frames.first, frames.last, options.jobs,
+            frames.first, frames.last, workers,
             [&](int i) {
                 // A worker's frame buffer, reused: a large one is mapped and unmapped by the
                 // allocator at every frame otherwise.

@@ -8,6 +8,7 @@
 #include <cairo-pdf.h>
 
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 
 namespace plot {
@@ -16,8 +17,22 @@ namespace {
 
 void check(cairo_surface_t* s) { check_cairo(cairo_surface_status(s), "draw a frame"); }
 
-cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
-    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+/// Where Cairo's PDF bytes go, and the first failure of writing them (Cairo's callback
+/// must not throw: the failure is kept, and thrown once Cairo has stopped).
+struct pdf_sink {
+    const std::function<void(std::string_view)>* write;
+    std::exception_ptr error;
+};
+
+cairo_status_t pass_on(void* closure, const unsigned char* data, unsigned int length) {
+    auto* sink = static_cast<pdf_sink*>(closure);
+    if (sink->error) return CAIRO_STATUS_WRITE_ERROR;
+    try {
+        (*sink->write)(std::string_view(reinterpret_cast<const char*>(data), length));
+    } catch (...) {
+        sink->error = std::current_exception();
+        return CAIRO_STATUS_WRITE_ERROR;
+    }
     return CAIRO_STATUS_SUCCESS;
 }
 
@@ -85,23 +100,24 @@ void render_rgb24(argb_image& image, const figure& fig, const theme& th, double 
     render_pixels(image, fig, th, dpi, pass, under, true);
 }
 
-std::string render_pdf_pages(int count, const std::function<figure(int)>& frame, const theme& th) {
-    std::string bytes;
+void render_pdf_pages(int count, const std::function<figure(int)>& frame, const theme& th,
+                      const std::function<void(std::string_view)>& write) {
     if (count < 1) throw std::invalid_argument("a PDF of frames needs at least one frame");
+    pdf_sink sink{&write, nullptr};
     const figure first = frame(0);
     const page_size size = figure_size(first, th);
-    surface_ptr surface(cairo_pdf_surface_create_for_stream(append, &bytes, size.width_pt, size.height_pt));
+    surface_ptr surface(cairo_pdf_surface_create_for_stream(pass_on, &sink, size.width_pt, size.height_pt));
     check(surface.get());
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
     context_ptr cr(cairo_create(surface.get()));
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < count && !sink.error; ++i) {
         draw_figure(cr.get(), i == 0 ? first : frame(i), th, size, draw_pass::all, nullptr, true);
         cairo_show_page(cr.get());
     }
     cr.reset();
     cairo_surface_finish(surface.get());
+    if (sink.error) std::rethrow_exception(sink.error);
     check(surface.get());
-    return bytes;
 }
 
 }  // namespace plot

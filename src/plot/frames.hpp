@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace plot {
@@ -39,8 +40,11 @@ void render_argb(argb_image& image, const figure& fig, const theme& th, double d
 void render_rgb24(argb_image& image, const figure& fig, const theme& th, double dpi, draw_pass pass = draw_pass::all,
                   const argb_image* under = nullptr);
 
-/// A PDF of `count` pages, page i showing frame(i), for Beamer's animate package. Frames
-/// must share one size. Dated by SOURCE_DATE_EPOCH like a still PDF, otherwise undated.
-std::string render_pdf_pages(int count, const std::function<figure(int)>& frame, const theme& th);
+/// A PDF of `count` pages, page i showing frame(i), for Beamer's animate package, handed to
+/// `write` piece by piece as Cairo finishes them (memory does not grow with the pages).
+/// Frames must share one size. Dated by SOURCE_DATE_EPOCH like a still PDF, otherwise
+/// undated. An exception from `write` stops the drawing and is thrown again.
+void render_pdf_pages(int count, const std::function<figure(int)>& frame, const theme& th,
+                      const std::function<void(std::string_view)>& write);
 
 }  // namespace plot

@@ -6,6 +6,8 @@
 
 #include "plot/frames.hpp"
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -29,6 +31,28 @@ inline constexpr video_kind mp4_video{"mp4", "libx264", "preset=medium:tune=anim
 /// WebM holding VP9 (yuv420p, constant quality): browsers and Google Slides play it.
 inline constexpr video_kind webm_video{"webm", "libvpx-vp9",
                                        "b=0:crf=34:deadline=good:cpu-used=4:row-mt=0:tile-columns=2", "", 4};
+
+/// How many threads the encoder runs and how many frames it looks ahead (x264's
+/// rc-lookahead, libvpx's lag-in-frames): the frames it holds grow with both.
+struct video_settings {
+    int threads = 1;    ///< the encoder's threads
+    int lookahead = 0;  ///< frames looked ahead
+};
+
+/// The settings for frames of width x height: the kind's own, with fewer threads and a
+/// shorter look-ahead where they would take more than raster_budget_bytes (video_memory).
+/// They depend on the size alone: the same frames give the same bytes on any machine.
+video_settings video_settings_for(const video_kind& kind, int width, int height);
+
+/// The memory of writing a video of width x height with `settings`, `workers` drawing
+/// frames: the encoder's frames (bytes a pixel per frame held, measured with
+/// /usr/bin/time -v at 1080p and 4K) and ours in flight (a drawing per worker, two
+/// converted frames per worker, the still drawing).
+double video_memory(const video_kind& kind, int width, int height, video_settings settings, unsigned workers);
+
+/// Throws plot::bad_input, before any work, if a video of width x height cannot be written
+/// within raster_budget_bytes even with one worker and the encoder's least settings.
+void check_video_memory(const video_kind& kind, int width, int height);
 
 /// A frame converted for the encoder (yuv420p, BT.709, limited range); empty by default.
 struct video_frame {
@@ -72,6 +96,17 @@ public:
 private:
     std::unique_ptr<video_sink> sink_;
 };
+
+/// Where the program at `program` loads the video module from, fixed when it was built:
+/// the build directory for the build's program, LIBDIR/pendulum-figures of the installation
+/// (or of the Debian package, for /usr/bin/pendulum-figures) for any other. Never beside a
+/// copy of the program, where a repository could have put a module of its own.
+std::filesystem::path video_module_path(const std::filesystem::path& program);
+
+/// Why a module file with `file`'s status in a directory with `dir`'s may not be loaded
+/// (empty if it may): not a regular file, owned by someone other than root or this user, or
+/// it or its directory writable by its group or by others.
+std::string module_file_problem(const struct stat& file, const struct stat& dir);
 
 /// The frame rate as libavformat takes it: a fraction that is fps within 1e-6.
 std::pair<int, int> video_frame_rate(double fps);

@@ -3,6 +3,7 @@
 // How many threads the writers run: the CPUs this process may use, or what was asked for.
 
 #include <cstddef>
+#include <string>
 
 namespace plot {
 
@@ -18,5 +19,23 @@ unsigned worker_count(unsigned jobs, std::size_t tasks);
 /// a large frame: their frames in flight take 48 MiB at most, or one frame (at 3840 x 2160,
 /// 32 MiB a frame, one worker).
 unsigned workers_for_frames(unsigned workers, std::size_t frame_bytes);
+
+/// The most memory the rasters of a render's workers may hold together: 2 GiB. Workers
+/// are fewer where each would hold a large raster; what one worker cannot hold within it is
+/// refused before any work.
+inline constexpr double raster_budget_bytes = 2.0 * 1024 * 1024 * 1024;
+
+/// What a worker holds to write one PNG (or a still GIF) of `pixels` pixels: the raster (4
+/// bytes a pixel), the pixels as the PNG stores them (up to 3) and its bytes (up to 3, for
+/// pixels that do not compress), measured at 10000 x 10000 (see bench/calibrate_costs.sh).
+inline constexpr double raster_bytes_per_pixel = 10;
+
+/// At most `workers`, fewer so that each holding `bytes_each` they take at most
+/// raster_budget_bytes together; at least 1 (check_worker_memory refuses what 1 cannot).
+unsigned workers_within_budget(unsigned workers, double bytes_each);
+
+/// Throws plot::bad_input if one worker holding `bytes_each` would take more than
+/// raster_budget_bytes: `what` names the file, `reduce` what to make smaller.
+void check_worker_memory(double bytes_each, const std::string& what, const std::string& reduce);
 
 }  // namespace plot

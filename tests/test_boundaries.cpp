@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -60,7 +61,9 @@ TEST(Boundaries, ExactThetaAtTheZeroCrossing) {
         EXPECT_LE(relative, 8 * std::numeric_limits<double>::epsilon())
             << "theta0 = " << row[0] << ", s = " << row[1] << ": " << theta << " against " << row[2];
     }
-    RecordProperty("worst_relative_error", std::to_string(worst));
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", worst);
+    RecordProperty("worst_relative_error", text);
 }
 
 namespace {
@@ -215,6 +218,18 @@ TEST(Boundaries, WhatMovesBetweenFramesDoesNotMoveTheLegend) {
     EXPECT_EQ(plot::overlap(box, data, dev, 1.6), 0);
 }
 
+TEST(Boundaries, AMarkerCountsAsFarAsItsRadius) {
+    // A marker's centre outside the box but within its radius of it covers the box's edge.
+    const plot::rect box{50, 50, 40, 20};
+    const std::vector<plot::series> data = {
+        plot::series{.line = plot::line_style::none, .marker = plot::marker_style::open_circle}};
+    std::vector<plot::device_series> dev(1);
+    dev[0].x = {48.5, 91.5, 70, 70};
+    dev[0].y = {60, 60, 48.5, 71.5};
+    EXPECT_EQ(plot::overlap(box, data, dev, 1.6), 4);
+    EXPECT_EQ(plot::overlap(box, data, dev, 1.4), 0);
+}
+
 // ---------------------------------------------------------------------------------------
 // Encoders, read back with their own libraries: a PNG's colour type and palette, a GIF's loop.
 
@@ -348,6 +363,30 @@ TEST(Boundaries, GifLoopsForever) {
     EXPECT_EQ(apps[0][0], "NETSCAPE2.0");
     // Sub-block 1 (looping), then the loop count, little-endian: 0 is forever.
     EXPECT_EQ(apps[0][1], std::string("\x01\x00\x00", 3));
+}
+
+TEST(Boundaries, GifColourTableHoldsThePaletteAndTheTransparentIndex) {
+    // The table has a power of two entries, at least the palette's and one more (the index
+    // of unchanged pixels): 3 colours take 4 entries, 4 take 8, 127 take 128, 128 take 256.
+    plot::surface_ptr s(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 8, 8));
+    plot::context_ptr cr(cairo_create(s.get()));
+    cairo_set_source_rgb(cr.get(), 1, 1, 1);
+    cairo_paint(cr.get());
+    cairo_surface_flush(s.get());
+    for (const auto& [colours, entries] : std::vector<std::pair<int, int>>{{1, 2}, {3, 4}, {4, 8}, {127, 128}, {128, 256}, {255, 256}}) {
+        std::vector<plot::rgb8> palette(static_cast<std::size_t>(colours));
+        for (int i = 0; i < colours; ++i) palette[static_cast<std::size_t>(i)] = {static_cast<std::uint8_t>(255 - i), 255, 255};
+        plot::gif_encoder gif(8, 8, palette, 10);
+        gif.add_frame(cairo_image_surface_get_data(s.get()), cairo_image_surface_get_stride(s.get()));
+        gif.add_frame(cairo_image_surface_get_data(s.get()), cairo_image_surface_get_stride(s.get()));
+        const std::string bytes = gif.finish();
+        // The logical screen descriptor's packed byte: global table of 2^(n + 1) entries.
+        ASSERT_GT(bytes.size(), 13u);
+        const auto packed = static_cast<unsigned char>(bytes[10]);
+        EXPECT_TRUE(packed & 0x80) << "a global colour table";
+        EXPECT_EQ(2 << (packed & 7), entries) << colours << " colours";
+        EXPECT_EQ(application_extensions(bytes).size(), 1u) << "giflib reads it";
+    }
 }
 
 // ---------------------------------------------------------------------------------------

@@ -315,6 +315,60 @@ TEST(Boundaries, PngPaletteOfAnImageStartingWithBlackOrWhite) {
 
 namespace {
 
+/// The pHYs chunk of a PNG as libpng reads it: pixels per metre on x and y, and the unit.
+struct png_physical {
+    png_uint_32 x = 0;
+    png_uint_32 y = 0;
+    int unit = -1;
+};
+
+struct png_memory {
+    const std::string* bytes;
+    std::size_t pos = 0;
+};
+
+void read_memory(png_structp png, png_bytep out, png_size_t n) {
+    auto* in = static_cast<png_memory*>(png_get_io_ptr(png));
+    if (in->pos + n > in->bytes->size()) png_error(png, "truncated");
+    std::memcpy(out, in->bytes->data() + in->pos, n);
+    in->pos += n;
+}
+
+/// Kept free of objects with destructors: libpng reports errors by longjmp.
+bool read_physical(png_memory* in, png_physical* out) {
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    if (!png) return false;
+    png_infop info = png_create_info_struct(png);
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        return false;
+    }
+    png_set_read_fn(png, in, read_memory);
+    png_read_info(png, info);
+    const bool found = png_get_pHYs(png, info, &out->x, &out->y, &out->unit) != 0;
+    png_destroy_read_struct(&png, &info, nullptr);
+    return found;
+}
+
+}  // namespace
+
+TEST(Boundaries, PngResolutionRoundsToTheNearestPixelPerMetre) {
+    // dpi / 0.0254 to the nearest whole number: 72 dpi is 2834.6 (2835), 300 dpi 11811.02 (11811).
+    std::vector<unsigned char> scratch;
+    const std::vector<std::uint32_t> pixels(4, 0x0072b2u);
+    for (const auto& [dpi, ppm] : std::vector<std::pair<double, png_uint_32>>{{72, 2835}, {300, 11811}, {96, 3780}, {10, 394}}) {
+        const std::string png = plot::png_of_pixels(rgb24(pixels, 2), dpi, scratch);
+        png_memory in{&png};
+        png_physical phys;
+        ASSERT_TRUE(read_physical(&in, &phys)) << dpi;
+        EXPECT_EQ(phys.x, ppm) << dpi << " dpi";
+        EXPECT_EQ(phys.y, ppm) << dpi << " dpi";
+        EXPECT_EQ(phys.unit, PNG_RESOLUTION_METER);
+    }
+}
+
+namespace {
+
 /// The application extensions of a GIF before its first frame, read with giflib: each as its
 /// identifier block followed by its data sub-blocks.
 std::vector<std::vector<std::string>> application_extensions(const std::string& bytes) {

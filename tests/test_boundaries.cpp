@@ -493,11 +493,11 @@ std::vector<boundary> boundaries() {
     const std::string phase = "[[panel]]\nplot = \"phase\"\nmethods = [\"exact\"]\n";
     const std::string spectrum = "[[panel]]\nplot = \"spectrum\"\ntheta0 = 1\nmethods = [\"exact\"]\nharmonics = ";
     return {
-        {"panels", panels(26), panels(27), {"26", "panels"}},
+        {"panels", panels(26), panels(27), {"26", "panel"}},
         {"amplitudes", phase + "theta0 = [" + repeated("1", 32) + "]\n", phase + "theta0 = [" + repeated("1", 33) + "]\n",
          {"'theta0'", "33", "32"}},
         {"starts", phase + "energy = [" + repeated("0.5", 32) + "]\n", phase + "energy = [" + repeated("0.5", 33) + "]\n",
-         {"32", "starts"}},
+         {"32", "start"}},
         {"methods", period + repeated("\"lowest\"", 12) + "]\n", period + repeated("\"lowest\"", 13) + "]\n",
          {"'methods'", "13", "12"}},
         // Orders of 40 on a narrow amplitude range: the iteration's cost grows fast with N.

@@ -252,12 +252,13 @@ bool every_line_starts_with(const std::string& text, const std::string& prefix) 
     return true;
 }
 
-TEST(Messages, ALineBreakInAStrangersKeyStartsNoLineOfItsOwn) {
+TEST(Messages, ALineBreakInAStrangersFileNameStartsNoLineOfItsOwn) {
     const auto dir = temp_dir("forged-lines");
-    // A quoted key with line breaks, and a second problem: two lines of the message, and the
-    // breaks inside the key; every line is the program's.
-    std::ofstream(dir / "f.toml") << "\"x\\n::error file=a.c,line=1::forged\\n\" = 1\n[[panel]]\nplot = \"nonesuch\"\n";
-    const auto r = run_cli("describe f.toml", dir);
+    // A spec whose name holds line breaks: the message names it, and every line of the
+    // message is the program's, so no line begins with the forged CI command.
+    const std::string name = "x\n::error file=a.c,line=1::forged\n.toml";
+    std::ofstream(dir / name) << "[[panel]]\nplot = \"period\"\nmethods = [\"exact\"]\n";
+    const auto r = run_cli("describe \"$(printf 'x\\n::error file=a.c,line=1::forged\\n.toml')\"", dir);
     EXPECT_EQ(r.status, 2) << r.err;
     EXPECT_TRUE(has(r.err, "::error")) << r.err;
     EXPECT_TRUE(every_line_starts_with(r.err, "pendulum-figures: error: ")) << r.err;

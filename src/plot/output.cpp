@@ -161,13 +161,15 @@ struct png_sink {
 
 void png_write_bytes(png_structp png, png_bytep data, png_size_t length) {
     // No exception may cross libpng's C frames: a failure is libpng's own error (a longjmp).
+    // The longjmp comes after the handler has ended: jumping out of a catch handler would
+    // leave the exception alive, which is undefined behaviour.
     auto* sink = static_cast<png_sink*>(png_get_io_ptr(png));
     try {
         sink->bytes.append(reinterpret_cast<const char*>(data), length);
     } catch (const std::bad_alloc&) {
         sink->out_of_memory = true;
-        png_error(png, "out of memory");
     }
+    if (sink->out_of_memory) png_error(png, "out of memory");
 }
 
 void png_flush_nothing(png_structp) {}

@@ -72,9 +72,7 @@ struct dependencies {
 /// spec files, the style files used and the program.
 dependencies dependency_files(const render_options& o,
                               const std::vector<std::pair<std::string, std::vector<const figures::entry*>>>& groups,
-                              const std::vector<figures::figure_file>& stills,
-                              const std::vector<figures::animation_job>& animations,
-                              const std::vector<std::string>& formats, std::optional<double> at) {
+                              const std::vector<std::filesystem::path>& outputs) {
     dependencies d;
     const auto add = [&](const std::string& file) {
         if (std::find(d.inputs.begin(), d.inputs.end(), file) == d.inputs.end()) d.inputs.push_back(file);
@@ -89,9 +87,7 @@ dependencies dependency_files(const render_options& o,
         if (!g.first.empty()) add(g.first);
     }
     add(program_file());
-    for (const auto& [path, what] : figures::render_outputs(stills, animations, formats, o.dir, at.has_value())) {
-        d.outputs.push_back(path.lexically_normal().string());
-    }
+    for (const auto& path : outputs) d.outputs.push_back(path.lexically_normal().string());
     d.targets = o.depfile_target.empty() ? d.outputs : std::vector<std::string>{o.depfile_target};
     return d;
 }
@@ -282,12 +278,10 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
     for (const auto& output : figures::render_outputs(all_jobs, all_moving, formats, o.dir, at.has_value())) {
         outputs.push_back(output.first);
     }
-    if (!o.depfile.empty()) outputs.emplace_back(o.depfile);
     plot::check_output_files(outputs);
+    if (!o.depfile.empty()) plot::check_output_file(o.depfile);
     figures::check_render_cost(jobs, moving, formats, build, styles, at.has_value());
-    const std::string depfile =
-        o.depfile.empty() ? std::string()
-                          : dependency_rule(o, dependency_files(o, groups, all_jobs, all_moving, formats, at));
+    const std::string depfile = o.depfile.empty() ? std::string() : dependency_rule(o, dependency_files(o, groups, outputs));
     for (std::size_t g = 0; g < groups.size(); ++g) {
         figures::write_render(jobs[g], moving[g], formats, o.dir, build, styles[g], at);
     }

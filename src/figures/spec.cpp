@@ -4,6 +4,7 @@
 #include "figures/input_file.hpp"
 #include "figures/panel_support.hpp"
 #include "figures/toml_reader.hpp"
+#include "plot/latex_overlay.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/angle.hpp"
 #include "pendulum/seconds.hpp"
@@ -590,8 +591,7 @@ std::string file_name_problem(std::string_view name) {
         return "has " + std::to_string(name.size()) + " characters; at most " + std::to_string(max_file_name_bytes);
     }
     for (const char c : name) {
-        const bool ok = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '+' || c == '-';
-        if (!ok) {
+        if (!plot::plain_file_name_character(c)) {
             const auto u = static_cast<unsigned char>(c);
             char shown[16];
             std::snprintf(shown, sizeof shown, u < 0x20 || u >= 0x7f ? "\\x%02x" : "'%c'", u);

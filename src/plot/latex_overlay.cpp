@@ -106,11 +106,14 @@ const tex_sizing_row& find_tex_sizing(std::string_view name) {
     throw bad_input("unknown text sizing '" + std::string(name) + "'; sizings: " + list);
 }
 
+bool plain_file_name_character(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '_' ||
+           c == '+' || c == '-';
+}
+
 void check_latex_file_name(std::string_view name) {
     for (const char c : name) {
-        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
-                        c == '_' || c == '+' || c == '-';
-        if (ok) continue;
+        if (plain_file_name_character(c)) continue;
         const auto u = static_cast<unsigned char>(c);
         char shown[16];
         std::snprintf(shown, sizeof shown, u < 0x20 || u >= 0x7f ? "\\x%02x" : "'%c'", u);

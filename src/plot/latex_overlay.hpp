@@ -23,6 +23,10 @@ theme latex_sized_theme(const theme& th, const output_options& options);
 /// in the document, or \fontsize for absolute sizes.
 std::string latex_size_command(double size_pt, const output_options& options);
 
+/// True for the bytes a file name may hold wherever it reaches LaTeX, Make or XML as it is:
+/// ASCII letters and digits and . _ + -.
+bool plain_file_name_character(char c);
+
 /// Throws bad_input for a drawing's file name that an overlay cannot write into LaTeX as it
 /// is (\includegraphics, \typeout, a comment): anything but ASCII letters, digits and . _ + -.
 void check_latex_file_name(std::string_view name);

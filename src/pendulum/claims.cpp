@@ -30,7 +30,8 @@ struct minimizer_deleter {
 
 /// T_m/T - 1 for a method given by name, without cancellation.
 double error_of(const char* method, double theta0) {
-    const auto e = method_period_error(parse_method(method), theta0);
+    // The claims print 17 digits: every error correctly rounded.
+    const auto e = method_period_error(parse_method(method), theta0, precision::correctly_rounded);
     if (e.what != period_error::kind::value) {
         throw domain_error(std::string("the period error of ") + method + " at " + format_double(theta0) +
                            " is not a number");
@@ -67,10 +68,22 @@ double first_breakdown(const amplitude& theta0, int up_to) {
 }  // namespace
 
 double find_amplitude(double (*f)(double theta0, void* params), void* params, double lo, double hi) {
-    use_gsl_status_codes();
+    // GSL's set refuses (through its error handler) an interval that is not one or does not
+    // straddle a root, and its iteration a value that is not finite: both are checked here
+    // first, so GSL's handler is never called.
+    finite_function checked{f, params, "the function whose root is sought"};
+    if (!(lo < hi)) {
+        throw domain_error("a root needs an interval lo < hi, got " + format_double(lo) + ", " + format_double(hi));
+    }
+    const double f_lo = checked.as_gsl().function(lo, &checked);
+    const double f_hi = checked.as_gsl().function(hi, &checked);
+    if ((f_lo < 0 && f_hi < 0) || (f_lo > 0 && f_hi > 0)) {
+        throw domain_error("no root between " + format_double(lo) + " and " + format_double(hi) +
+                           ": the function has the same sign at both ends");
+    }
     std::unique_ptr<gsl_root_fsolver, root_solver_deleter> solver(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
     if (!solver) throw std::bad_alloc();
-    gsl_function fn{f, params};
+    gsl_function fn = checked.as_gsl();
     check_gsl(gsl_root_fsolver_set(solver.get(), &fn, lo, hi), "bracketing a root");
     for (int i = 0; i < 200; ++i) {
         check_gsl(gsl_root_fsolver_iterate(solver.get()), "root finding");
@@ -107,15 +120,20 @@ double max_deviation_over_period(const std::string& method, double theta0) {
         }
     }
     if (best == 0 || best == samples) return -best_value;
-    use_gsl_status_codes();
-    std::unique_ptr<gsl_min_fminimizer, minimizer_deleter> m(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent));
-    if (!m) throw std::bad_alloc();
-    gsl_function fn{minus_deviation, &p};
+    // GSL's set refuses (through its error handler) a bracket that does not enclose a minimum:
+    // the three values are computed here and given to it only where they do.
     const double lo = (best - 1.0) / samples;
     const double hi = (best + 1.0) / samples;
-    if (gsl_min_fminimizer_set(m.get(), &fn, static_cast<double>(best) / samples, lo, hi) != GSL_SUCCESS) {
-        return -best_value;  // the sample is the largest to the resolution of the scan
-    }
+    const double at = static_cast<double>(best) / samples;
+    finite_function checked{minus_deviation, &p, "the deviation"};
+    gsl_function fn = checked.as_gsl();
+    const double f_lo = fn.function(lo, fn.params);
+    const double f_hi = fn.function(hi, fn.params);
+    const double f_at = fn.function(at, fn.params);
+    if (f_at >= f_lo || f_at >= f_hi) return -best_value;  // the sample is the largest to the resolution of the scan
+    std::unique_ptr<gsl_min_fminimizer, minimizer_deleter> m(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent));
+    if (!m) throw std::bad_alloc();
+    check_gsl(gsl_min_fminimizer_set_with_values(m.get(), &fn, at, f_at, lo, f_lo, hi, f_hi), "bracketing a maximum");
     for (int i = 0; i < 100; ++i) {
         if (gsl_min_fminimizer_iterate(m.get()) != GSL_SUCCESS) break;
         const double a = gsl_min_fminimizer_x_lower(m.get());
@@ -126,7 +144,6 @@ double max_deviation_over_period(const std::string& method, double theta0) {
 }
 
 std::vector<claim_measure> paper_claims() {
-    const correctly_rounded_errors every_digit;  // the claims print 17 digits
     std::vector<claim_measure> rows;
     const auto add = [&](const char* claim, const char* where, const char* statement, const char* quantity,
                          double value, const char* unit, const char* verdict) {

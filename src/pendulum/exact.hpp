@@ -12,6 +12,9 @@ namespace pendulum {
 /// Time is measured as w0 t (so the small-amplitude period is 2 pi). Every quantity is
 /// computed from the modulus k = sin(theta0/2) and the complementary modulus
 /// k' = cos(theta0/2), never from 1 - k^2, so it stays accurate next to the separatrix.
+/// The most intervals exact_solution::coefficient_by_quadrature() uses.
+inline constexpr int max_quadrature_intervals = 1 << 16;
+
 class exact_solution {
 public:
     /// Prepares the solution for amplitude theta0 (a double converts, and is checked to lie
@@ -40,9 +43,11 @@ public:
 
     /// The Fourier coefficient c_{2n+1} (n >= 0) from its closed form through the nome.
     double coefficient(int n) const;
-    /// The coefficient c_{2n+1} by quadrature of the exact solution (the paper's Eq. Lamb.12.1),
-    /// right to about 1e-15 theta0 absolute: a coefficient far below theta0 (c5 at small
-    /// amplitudes) keeps fewer digits than coefficient(), which is exact to rounding.
+    /// The coefficient c_{2n+1} by quadrature of the exact solution (the paper's Eq. Lamb.12.1,
+    /// the trapezoidal rule, geometrically convergent for this periodic integrand), right to
+    /// about 1e-15 theta0 absolute: a coefficient far below theta0 (c5 at small amplitudes)
+    /// keeps fewer digits than coefficient(), which is exact to rounding. Throws
+    /// std::runtime_error where max_quadrature_intervals do not reach that.
     double coefficient_by_quadrature(int n) const;
 
 private:

@@ -128,7 +128,9 @@ method_choice parse_method(std::string_view text) {
 
 double method_period(const method_choice& m, const amplitude& theta0) { return m.row->period(theta0, m.n); }
 
-period_error method_period_error(const method_choice& m, const amplitude& theta0) { return m.row->error(theta0, m.n); }
+period_error method_period_error(const method_choice& m, const amplitude& theta0, precision p) {
+    return m.row->error(theta0, m.n, p);
+}
 
 fourier_solution method_solution(const method_choice& m, const amplitude& theta0) {
     if (!m.row->solution) {

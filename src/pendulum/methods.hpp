@@ -25,7 +25,7 @@ struct method_row {
     std::string_view description;  ///< one line for help and lists
     double (*period)(const amplitude& theta0, int n);              ///< T/T0
     fourier_solution (*solution)(const amplitude& theta0, int n);  ///< the Fourier solution, or null
-    period_error (*error)(const amplitude& theta0, int n);         ///< T_m/T - 1 without cancellation
+    period_error (*error)(const amplitude& theta0, int n, precision p);  ///< T_m/T - 1 without cancellation
 
     /// True for methods with a law of motion theta(t), false for period formulas.
     constexpr bool has_motion() const { return role != method_role::period_only; }
@@ -56,8 +56,8 @@ method_choice parse_method(std::string_view text);
 double method_period(const method_choice& m, const amplitude& theta0);
 
 /// The period error T_m/T - 1 of the method at amplitude theta0, right to 1e-12 relative
-/// down to 1e-300 (below that, and where no period exists, it says so).
-period_error method_period_error(const method_choice& m, const amplitude& theta0);
+/// down to 1e-300 (below that, and where no period exists, it says so), or correctly rounded.
+period_error method_period_error(const method_choice& m, const amplitude& theta0, precision p = precision::drawing);
 
 /// The truncated Fourier solution of a motion method other than "exact"; throws
 /// domain_error for exact and for period-only methods.

@@ -6,8 +6,6 @@
 #include "pendulum/mp_real.hpp"
 #include "pendulum/phase.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_sf_ellint.h>
 
 #include <cmath>
 #include <numbers>
@@ -82,12 +80,7 @@ double elliptic_f(double s, double c, double kp) {
         throw domain_error("elliptic_f needs s >= 0 and (s, c) nonzero, got " + format_double(s) + ", " +
                            format_double(c));
     }
-    use_gsl_status_codes();
-    const auto rf = [](double x, double y, double z) {
-        gsl_sf_result r;
-        check_gsl(gsl_sf_ellint_RF_e(x, y, z, GSL_PREC_DOUBLE, &r), "the elliptic integral R_F");
-        return r.val;
-    };
+    const auto rf = carlson_rf;
     if (s == 0) return c > 0 ? 0.0 : std::numbers::pi / agm(1.0, kp);
     const double half = s * rf(c * c, c * c + kp * s * kp * s, s * s + c * c);
     if (c >= 0) return half;

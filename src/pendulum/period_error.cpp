@@ -8,7 +8,6 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/extended_periods.hpp"
-#include "pendulum/methods.hpp"
 #include "pendulum/mp_bessel.hpp"
 #include "pendulum/mp_iteration.hpp"
 #include "pendulum/mp_real.hpp"
@@ -85,9 +84,6 @@ period_error known(const real& error) {
 
 using mp_period = real (*)(const mp_amplitude& x, int n);
 
-/// How many correctly_rounded_errors live in this thread.
-thread_local int correctly_rounded_depth = 0;
-
 /// The error of a closed-form period in MPFR, correctly rounded.
 period_error mp_closed_form_error(const amplitude& a, int n, mp_period f) {
     for (const mpfr_prec_t bits : precisions) {
@@ -103,9 +99,9 @@ using extended_period = long double (*)(const amplitude& a);
 
 /// The error of a closed-form period: doubles where they suffice, then extended precision
 /// where the method has it and it suffices, MPFR otherwise.
-period_error closed_form_error(const amplitude& a, int n, double (*period)(const amplitude&, int), mp_period f,
-                               extended_period extended = nullptr) {
-    if (correctly_rounded_depth > 0) return mp_closed_form_error(a, n, f);
+period_error closed_form_error(const amplitude& a, int n, precision p, double (*period)(const amplitude&, int),
+                               mp_period f, extended_period extended = nullptr) {
+    if (p == precision::correctly_rounded) return mp_closed_form_error(a, n, f);
     // One AGM for both tiers: period_ratio(a) is this, rounded to a double.
     const long double exact = exact_period_extended(a);
     const double fast = period(a, n) / static_cast<double>(exact) - 1;
@@ -477,37 +473,34 @@ int first_level_within(const amplitude& a, double tolerance, int up_to) {
     return -1;
 }
 
-correctly_rounded_errors::correctly_rounded_errors() { ++correctly_rounded_depth; }
-correctly_rounded_errors::~correctly_rounded_errors() { --correctly_rounded_depth; }
+period_error exact_period_error(const amplitude&, int, precision) { return {period_error::kind::value, 0}; }
 
-period_error exact_period_error(const amplitude&, int) { return {period_error::kind::value, 0}; }
-
-period_error harmonic_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude&, int) { return 1.0; }, harmonic_mp);
+period_error harmonic_period_error(const amplitude& a, int n, precision p) {
+    return closed_form_error(a, n, p, [](const amplitude&, int) { return 1.0; }, harmonic_mp);
 }
-period_error lowest_period_error(const amplitude& a, int n) {
+period_error lowest_period_error(const amplitude& a, int n, precision p) {
     return closed_form_error(
-        a, n, [](const amplitude& t, int) { return lowest_order(t).period_ratio(); }, lowest_mp,
+        a, n, p, [](const amplitude& t, int) { return lowest_order(t).period_ratio(); }, lowest_mp,
         lowest_period_extended);
 }
-period_error first_period_error(const amplitude& a, int n) {
+period_error first_period_error(const amplitude& a, int n, precision p) {
     return closed_form_error(
-        a, n, [](const amplitude& t, int) { return first_order(t).period_ratio(); }, first_mp,
+        a, n, p, [](const amplitude& t, int) { return first_order(t).period_ratio(); }, first_mp,
         first_period_extended);
 }
-period_error second_period_error(const amplitude& a, int n) {
+period_error second_period_error(const amplitude& a, int n, precision p) {
     return closed_form_error(
-        a, n, [](const amplitude& t, int) { return second_order(t).period_ratio(); }, second_mp,
+        a, n, p, [](const amplitude& t, int) { return second_order(t).period_ratio(); }, second_mp,
         second_period_extended);
 }
-period_error polynomial_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude& t, int) { return polynomial(t).period_ratio(); }, polynomial_mp);
+period_error polynomial_period_error(const amplitude& a, int n, precision p) {
+    return closed_form_error(a, n, p, [](const amplitude& t, int) { return polynomial(t).period_ratio(); }, polynomial_mp);
 }
-period_error iterated_period_error(const amplitude& a, int n) {
+period_error iterated_period_error(const amplitude& a, int n, precision p) {
     // The double iteration where its own rounding (measured against extended precision) is
     // far below the error; MPFR otherwise.
     const auto level = iterated_periods(a, n).back();
-    if (correctly_rounded_depth == 0 && !std::isnan(level.value)) {
+    if (p == precision::drawing && !std::isnan(level.value)) {
         const double exact = period_ratio(a);
         const double error = level.value / exact - 1;
         const double uncertainty = level.rounding / exact + 4 * std::numeric_limits<double>::epsilon();
@@ -515,22 +508,22 @@ period_error iterated_period_error(const amplitude& a, int n) {
     }
     return iterated_period_errors(a, n).back();
 }
-period_error kidd_fogg_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude& t, int) { return period_kidd_fogg(t); }, kidd_fogg_mp);
+period_error kidd_fogg_period_error(const amplitude& a, int n, precision p) {
+    return closed_form_error(a, n, p, [](const amplitude& t, int) { return period_kidd_fogg(t); }, kidd_fogg_mp);
 }
-period_error lima_arun_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude& t, int) { return period_lima_arun(t); }, lima_arun_mp);
+period_error lima_arun_period_error(const amplitude& a, int n, precision p) {
+    return closed_form_error(a, n, p, [](const amplitude& t, int) { return period_lima_arun(t); }, lima_arun_mp);
 }
-period_error ganley_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude& t, int) { return period_ganley(t); }, ganley_mp);
+period_error ganley_period_error(const amplitude& a, int n, precision p) {
+    return closed_form_error(a, n, p, [](const amplitude& t, int) { return period_ganley(t); }, ganley_mp);
 }
-period_error agm_period_error(const amplitude& a, int n) { return closed_form_error(a, n, period_agm, agm_mp); }
-period_error denman_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude& t, int) { return period_denman(t); }, denman_mp);
+period_error agm_period_error(const amplitude& a, int n, precision p) { return closed_form_error(a, n, p, period_agm, agm_mp); }
+period_error denman_period_error(const amplitude& a, int n, precision p) {
+    return closed_form_error(a, n, p, [](const amplitude& t, int) { return period_denman(t); }, denman_mp);
 }
-period_error series_period_error(const amplitude& a, int n) { return closed_form_error(a, n, period_series, series_mp); }
-period_error log_asymptote_period_error(const amplitude& a, int n) {
-    return closed_form_error(a, n, [](const amplitude& t, int) { return period_log_asymptote(t); }, log_asymptote_mp);
+period_error series_period_error(const amplitude& a, int n, precision p) { return closed_form_error(a, n, p, period_series, series_mp); }
+period_error log_asymptote_period_error(const amplitude& a, int n, precision p) {
+    return closed_form_error(a, n, p, [](const amplitude& t, int) { return period_log_asymptote(t); }, log_asymptote_mp);
 }
 
 }  // namespace pendulum

@@ -4,6 +4,7 @@
 #include "pendulum/amplitude.hpp"
 #include "pendulum/bessel_series.hpp"
 #include "pendulum/extended_periods.hpp"
+#include "pendulum/formulas.hpp"
 #include "pendulum/gsl_support.hpp"
 #include "pendulum/mp_iteration.hpp"
 
@@ -47,28 +48,23 @@ fourier_solution harmonic(const amplitude& a) {
 
 fourier_solution lowest_order(const amplitude& a) {
     const double theta0 = a.radians();
-    return {std::sqrt(besinc(theta0)), {theta0}};
+    return {formulas::lowest_frequency(theta0), {theta0}};
 }
 
 long double lowest_period_extended(const amplitude& a) {
-    const long double theta0 = a.radians_extended();
-    return 1 / std::sqrt(2 * bessel_j_over_x_series(1, theta0));
+    return 1 / formulas::lowest_frequency(a.radians_extended());
 }
 
 fourier_solution first_order(const amplitude& a) {
     const double theta0 = a.radians();
     // Ratios J_n(theta0)/theta0 keep every digit down to the smallest subnormal amplitude.
-    const double j1 = bessel_j_over_x(1, theta0);
-    const double eta = -bessel_j_over_x(3, theta0) / (9.0 * j1);
-    const double c1 = theta0 / (1.0 + eta);
-    return {std::sqrt(2.0 * j1 * (1.0 + eta)), {c1, eta * c1}};
+    const auto p = formulas::first_order_of(theta0);
+    const double c1 = theta0 / (1.0 + p.eta);
+    return {p.frequency, {c1, p.eta * c1}};
 }
 
 long double first_period_extended(const amplitude& a) {
-    const long double theta0 = a.radians_extended();
-    const long double j1 = bessel_j_over_x_series(1, theta0);
-    const long double eta = -bessel_j_over_x_series(3, theta0) / (9 * j1);
-    return 1 / std::sqrt(2 * j1 * (1 + eta));
+    return 1 / formulas::first_order_of(a.radians_extended()).frequency;
 }
 
 namespace {
@@ -124,7 +120,7 @@ fourier_solution polynomial(const amplitude& a) {
     const double t2 = theta0 * theta0;
     const double t3 = t2 * theta0;
     const double t5 = t3 * t2;
-    const double period = 1.0 + t2 / 16.0 + 11.0 * t2 * t2 / 3072.0;
+    const double period = formulas::polynomial{}(formulas::view_of(a), 0);
     return {1.0 / period,
             {theta0 + t3 / 192.0 + 17.0 * t5 / 61440.0, -(t3 / 192.0 + t5 / 3072.0), t5 / 20480.0}};
 }
@@ -238,10 +234,10 @@ fourier_solution iterated(const amplitude& theta0, int order) {
 }
 
 std::vector<fourier_solution> iterated_sequence(const amplitude& a, int order) {
+    check_order(order);
     // Close to pi the double iteration's rounding grows at every level: MPFR there.
     if (a.from_pi() < detail::iteration_mp_below) return detail::iterated_sequence_mp(a, order);
     const double theta0 = a.radians();
-    check_order(order);
     std::vector<fourier_solution> levels;
     sine_projector<double> project;
     // The coefficients in units of theta0, so that no amplitude underflows.

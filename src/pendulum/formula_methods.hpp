@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A closed-form period formula of formulas.hpp as the method table's entries: its T/T0 in
+// doubles and its error T_m/T - 1 (doubles where they suffice, MPFR otherwise, or correctly
+// rounded), both from the one template. Internal to the core library.
+#pragma once
+
+#include "pendulum/amplitude.hpp"
+#include "pendulum/formulas.hpp"
+#include "pendulum/formulas_mp.hpp"
+#include "pendulum/period_error.hpp"
+
+namespace pendulum {
+
+/// A period in MPFR at the exact amplitude (with its precision), with the method's N.
+using mp_period = mp::real (*)(const formulas::amplitude_view<mp::real>& x, int n);
+
+/// A period in extended precision, for the methods that have one.
+using extended_period = long double (*)(const amplitude& a);
+
+/// The error of a closed-form period: doubles where they suffice (|error| >= 1e-2), then
+/// extended precision where the method has it and it suffices (>= 1e-5), MPFR otherwise; or
+/// MPFR throughout for precision::correctly_rounded (period_error.cpp).
+period_error closed_form_error(const amplitude& a, int n, precision p, double (*period)(const amplitude&, int),
+                               mp_period f, extended_period extended = nullptr);
+
+/// T/T0 of formula F in doubles, as a method table entry.
+template <class F>
+double formula_period(const amplitude& theta0, int n) {
+    return F{}(formulas::view_of(theta0), n);
+}
+
+/// T/T0 of formula F in MPFR.
+template <class F>
+mp::real formula_period_mp(const formulas::amplitude_view<mp::real>& x, int n) {
+    return F{}(x, n);
+}
+
+/// T_m/T - 1 of formula F, as a method table entry.
+template <class F>
+period_error formula_period_error(const amplitude& theta0, int n, precision p) {
+    return closed_form_error(theta0, n, p, formula_period<F>, formula_period_mp<F>);
+}
+
+}  // namespace pendulum

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/angle.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/claims.hpp"
 #include "pendulum/exact.hpp"
@@ -18,11 +19,13 @@
 
 #include <cfloat>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace {
 
@@ -188,4 +191,43 @@ TEST(Precision, ThreadsAskingDifferentlyDoNotMix) {
     for (int i = 0; i < 20; ++i) EXPECT_EQ(method_period_error(lowest, theta0, precision::correctly_rounded).value, rounded);
     other.join();
     EXPECT_EQ(drawing_meanwhile, drawing);
+}
+
+// Every period formula with a reference table method_NAME.csv (tests/data/method_reference.py
+// and its make_method_NAME.py): T_m/T0 in doubles to a few ulps, the error T_m/T - 1 right to
+// 1e-12 as drawn and to 1e-15 correctly rounded. A new formula adds its script and
+// table, and this test reads them.
+TEST(MethodReference, EveryMethodFile) {
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(PENDULUM_TEST_DATA)) {
+        const std::string file = entry.path().filename().string();
+        if (!file.starts_with("method_") || !file.ends_with(".csv")) continue;
+        ++files;
+        const std::string name = file.substr(7, file.size() - 11);
+        const method_choice m = parse_method(name);
+        const auto rows = test_support::read_reference_text(file);
+        ASSERT_EQ(rows[0], (std::vector<std::string>{"theta0", "period", "error"})) << file;
+        ASSERT_GE(rows.size(), 16u) << file;
+        for (std::size_t i = 1; i < rows.size(); ++i) {
+            const std::string& at = rows[i].at(0);
+            const amplitude theta0 = parse_amplitude(at);
+            const double period = std::stod(rows[i].at(1));
+            EXPECT_LE(std::fabs(method_period(m, theta0) / period - 1), 1e-15) << name << " at " << at;
+            const auto drawn = method_period_error(m, theta0);
+            const auto exact = method_period_error(m, theta0, precision::correctly_rounded);
+            if (rows[i].at(2) == "below") {
+                EXPECT_EQ(drawn.what, period_error::kind::below_limit) << name << " at " << at;
+                EXPECT_EQ(exact.what, period_error::kind::below_limit) << name << " at " << at;
+                continue;
+            }
+            const double error = std::stod(rows[i].at(2));
+            ASSERT_EQ(drawn.what, period_error::kind::value) << name << " at " << at;
+            ASSERT_EQ(exact.what, period_error::kind::value) << name << " at " << at;
+            EXPECT_LE(std::fabs(drawn.value / error - 1), 1e-12) << name << " at " << at;
+            // Correctly rounded for the amplitude as the program holds it: away from pi an
+            // expression's theta0 is rounded to a double first (a few ulps of the error here).
+            EXPECT_LE(std::fabs(exact.value / error - 1), 1e-15) << name << " at " << at;
+        }
+    }
+    EXPECT_GE(files, 1) << "no method_*.csv in " << PENDULUM_TEST_DATA;
 }

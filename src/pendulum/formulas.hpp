@@ -203,6 +203,21 @@ struct log_asymptote {
     }
 };
 
+/// Molina (Phys. Teach. 35, 489, 1997): T/T0 = (sin(theta0)/theta0)^(-3/8), the power as the
+/// cube of three square roots. Beyond pi/2, sin(theta0) = 2 k k' keeps its digits up to pi;
+/// below, sin(theta0) itself does down to subnormal theta0 (where k = theta0/2 would not).
+struct molina {
+    /// T/T0.
+    template <class Real>
+    Real operator()(const amplitude_view<Real>& x, int) const {
+        using std::sin;
+        using std::sqrt;
+        const Real ratio = x.kp < x.k ? 2.0 * x.k * x.kp / x.theta : sin(x.theta) / x.theta;
+        const Real eighth = sqrt(sqrt(sqrt(ratio)));
+        return 1.0 / (eighth * eighth * eighth);
+    }
+};
+
 // ---- The paper's lowest and first orders: their frequencies w/w0 (T/T0 = 1/frequency).
 
 /// Lowest order: (w/w0)^2 = besinc(theta0) = 2 J1(theta0)/theta0 (Eq. Lamb.15.1).

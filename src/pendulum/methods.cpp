@@ -3,6 +3,7 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/exact.hpp"
+#include "pendulum/formula_methods.hpp"
 #include "pendulum/period_formulas.hpp"
 
 #include <array>
@@ -47,12 +48,13 @@ constexpr char lima_arun_label[] = "Lima\u2013Arun";
 constexpr char ganley_label[] = "Ganley";
 constexpr char denman_label[] = "Denman";
 constexpr char log_asymptote_label[] = "log asymptote";
+constexpr char molina_label[] = "Molina";
 
 std::string order_label(int n) { return "order " + std::to_string(n); }
 std::string agm_label(int n) { return "AGM, " + std::to_string(n) + (n == 1 ? " step" : " steps"); }
 std::string series_label(int n) { return "series to $\\vartheta_0^{" + std::to_string(2 * n) + "}$"; }
 
-constexpr std::array<method_row, 14> rows = {{
+constexpr std::array<method_row, 15> rows = {{
     {"exact", method_role::exact, fixed<exact_label>, -1, 0, "the exact solution (Jacobi elliptic functions)", formula<period_ratio>,
      nullptr, exact_period_error},
     {"harmonic", method_role::approximant, fixed<harmonic_label>, -1, 0, "small-amplitude motion theta0 cos(w0 t)", period_of<harmonic>,
@@ -82,6 +84,8 @@ constexpr std::array<method_row, 14> rows = {{
      period_series, nullptr, series_period_error},
     {"log-asymptote", method_role::period_only, fixed<log_asymptote_label>, -1, 0, "large-amplitude asymptote (2/pi) ln(4/k')",
      formula<period_log_asymptote>, nullptr, log_asymptote_period_error},
+    {"molina", method_role::period_only, fixed<molina_label>, -1, 0, "period (sin(theta0)/theta0)^(-3/8) (Molina 1997)",
+     formula_period<formulas::molina>, nullptr, formula_period_error<formulas::molina>},
 }};
 
 }  // namespace

@@ -9,6 +9,7 @@
 #   make install    install under PREFIX (default /usr/local), DESTDIR honoured
 #   make deb        build the Debian packages pendulum-figures and libpendulum-dev
 #   make fuzz       run the fuzzers (FUZZ_SECONDS each)
+#   make tidy       clang-tidy on the core library (src/pendulum), .clang-tidy's checks
 #   make clean      remove the build directory
 
 BUILD ?= build
@@ -51,6 +52,8 @@ DEB_PACKAGES += man-db dpkg-dev lintian bash-completion
 DEB_PACKAGES += chromium
 # clang and its sanitizer runtimes: the sanitizer run of make test, and make fuzz.
 DEB_PACKAGES += clang libclang-rt-14-dev
+# clang-tidy, for make tidy.
+DEB_PACKAGES += clang-tidy
 DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
 # fc-list and fc-scan, for the test of fonts installed for the user.
 DEB_PACKAGES += fontconfig
@@ -62,7 +65,7 @@ DEB_PACKAGES += python3-matplotlib python3-scipy python3-pil gnuplot-nox valgrin
 # ninja, for the test of the README's build recipes (make's and ninja's).
 DEB_PACKAGES += ninja-build
 
-.PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz clean
+.PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz tidy clean
 
 all: build
 
@@ -165,6 +168,13 @@ deb: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS) --target $(INSTALLED_TARGETS)
 	packaging/build-deb.sh $(BUILD) $(BUILD)
+
+# make tidy: clang-tidy with the checks of .clang-tidy (every function's cognitive complexity
+# at most 25) on every source file of the core library, compiled as the build compiles it
+# (the build directory's compile_commands.json); any report fails.
+tidy: deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+	clang-tidy -p $(BUILD) --quiet src/pendulum/*.cpp
 
 clean:
 	rm -rf $(BUILD)

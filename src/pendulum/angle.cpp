@@ -184,8 +184,9 @@ private:
         fail("unexpected '" + std::string(text_.substr(pos_)) + "'");
     }
 
-    real number() {
-        // Only digits, one dot and an exponent are taken, so strtod never sees "inf" or hex.
+    /// The end of the number at pos_: only digits, one dot and an exponent are taken, so
+    /// strtod never sees "inf" or hex.
+    std::size_t number_end() const {
         std::size_t end = pos_;
         while (end < text_.size() && std::isdigit(static_cast<unsigned char>(text_[end]))) ++end;
         if (end < text_.size() && text_[end] == '.') {
@@ -200,6 +201,11 @@ private:
                 while (end < text_.size() && std::isdigit(static_cast<unsigned char>(text_[end]))) ++end;
             }
         }
+        return end;
+    }
+
+    real number() {
+        const std::size_t end = number_end();
         const std::string digits(text_.substr(pos_, end - pos_));
         // A number has a digit before its exponent: ".e5" is no number.
         const std::string mantissa = digits.substr(0, digits.find_first_of("eE"));

@@ -343,6 +343,7 @@ import json, sys
 d = json.load(open(sys.argv[1]))
 p = d["panels"][0]
 assert p["name"] == "a" and p["x"]["scale"] == "linear", p["x"]
+assert p["y"]["unit"] == "rad", p["y"]
 s = [s for s in p["series"] if s["id"] == "second"][0]
 print(s["method"], s["theta0"]["text"], s["theta0"]["radians"], s["period"]["T_over_T0"])
 )", "'" + (dir / "d.json").string() + "'");
@@ -473,6 +474,7 @@ m = {x["id"]: x for x in d["methods"]}
 assert m["exact"]["theta_column"] == "theta:exact"
 assert m["lowest"]["units"] == {"theta": "rad"}
 assert d["rows"][1]["t_over_T"] == 0.25
+assert d["theta0"]["text"] == "9pi/10"
 print(repr(d["theta0"]["radians"]), repr(m["exact"]["period"]["T_over_T0"]), repr(m["lowest"]["period"]["T_over_T0"]))
 )", "'" + (dir / "t.json").string() + "'");
     ASSERT_EQ(py.status, 0) << py.err;

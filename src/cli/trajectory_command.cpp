@@ -230,12 +230,15 @@ std::vector<std::string> value_columns(const std::vector<method_choice>& methods
 
 /// The head of the JSON of several methods: the start, the time's unit and each method's
 /// columns, period and units; the rows follow as "rows".
-std::string json_head(const start_option& start, const time_unit_row& unit, const std::vector<method_choice>& methods,
-                      bool state) {
+std::string json_head(const start_option& start, const std::string& theta0_text, const time_unit_row& unit,
+                      const std::vector<method_choice>& methods, bool state) {
     const motion& m = start.motion;
     const bool libration = m.kind() == regime::libration;
     std::string out = "{\"start\": " + figures::json_string(start.text) + ",\n \"theta0\": ";
-    out += libration ? "{\"radians\": " + figures::json_number(m.amplitude().radians()) + "}" : std::string("null");
+    // The amplitude as written where it is given, and in radians for any libration.
+    const std::string text = theta0_text.empty() ? "" : "\"text\": " + figures::json_string(theta0_text) + ", ";
+    out += libration ? "{" + text + "\"radians\": " + figures::json_number(m.amplitude().radians()) + "}"
+                     : std::string("null");
     out += ",\n \"time\": {\"column\": " + figures::json_string(std::string(unit.column)) + ", \"unit\": " +
            figures::json_string(std::string(unit.name)) + "},\n \"methods\": [";
     for (std::size_t i = 0; i < methods.size(); ++i) {
@@ -288,7 +291,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     std::vector<std::string> columns{std::string(unit.column)};
     for (auto& name : value_columns(methods, state)) columns.push_back(std::move(name));
     const bool several_json = methods.size() > 1 && format == table_format::json;
-    if (several_json) out << json_head(start, unit, methods, state);
+    if (several_json) out << json_head(start, state ? "" : o.theta0, unit, methods, state);
     table_writer writer(out, columns, format);
     std::vector<double> row;
     const auto write = [&](double s) {

@@ -97,7 +97,11 @@ std::string unit_of(const std::string& label) {
 
 axis_numbers axis_of(const plot::axis& a, double lo, double hi) {
     const std::string text = plain_text(a.label.markup);
-    return {text, unit_of(text), a.kind == plot::scale::log ? "log" : "linear", lo, hi};
+    // An angle axis says its unit by its ticks.
+    const std::string unit = a.ticks == plot::tick_kind::multiples_of_pi ? "rad"
+                             : a.ticks == plot::tick_kind::degrees      ? "deg"
+                                                                         : unit_of(text);
+    return {text, unit, a.kind == plot::scale::log ? "log" : "linear", lo, hi};
 }
 
 /// A series' uncertainties. The hook for series with error bars: none carry any yet.

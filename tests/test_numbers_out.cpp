@@ -246,6 +246,22 @@ TEST(DataLong, HostileDataAndFormulaLabels) {
     EXPECT_EQ(figures::json_string("\x7f\t\n"), "\"\\u007f\\u0009\\u000a\"");
 }
 
+TEST(DataLong, LegendsTooLargeForThePngAreLeftOutAndSaid) {
+    // 32 amplitudes' legend leaves no room for the axes at the PNG's size: the numbers are
+    // still written, sampled on axes without legends, and a note says so.
+    const fs::path dir = temp_dir("legends");
+    std::string list;
+    for (int i = 1; i <= 32; ++i) list += std::string(list.empty() ? "" : ", ") + "\"" + std::to_string(i * 0.09) + "\"";
+    write_file(dir / "many.toml", "[figure]\n[[panel]]\nplot = \"phase\"\nmethods = [\"exact\"]\ntheta0 = [" + list + "]\n");
+    const auto r = run_cli("data many.toml", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("note: figure 'many' leaves no room for its axes with its legends"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find(",theta0:32\n"), std::string::npos);
+    const auto fits = run_cli("data period");
+    EXPECT_EQ(fits.err, "");
+    fs::remove_all(dir);
+}
+
 // --- wide CSV ---------------------------------------------------------------------------
 
 TEST(DataWide, ColumnsPaddedWithNan) {

@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -47,6 +48,10 @@ std::string figure_data(const std::string& id, const std::string& theta0, const 
         throw usage_error("figure '" + e.id + "' ([figure] style = " + e.spec.style + "): " + err.what());
     }
     const figures::figure_numbers n = figures::numbers_of(e, build, theme, theme.dpi);
+    if (n.without_legends) {
+        std::cerr << "pendulum-figures: note: figure '" << e.id << "' leaves no room for its axes with its legends "
+                  << "at its size; its curves are sampled on axes without them\n";
+    }
     if (format == "json") return figures::numbers_json(n);
     return figures::numbers_csv(n, layout == "wide" ? figures::data_layout::wide : figures::data_layout::long_rows);
 }

@@ -159,10 +159,19 @@ series_numbers series_of_points(const plot::series& s, std::vector<double> x, st
 }  // namespace
 
 figure_numbers numbers_of(const entry& e, const build_options& options, const plot::theme& theme, double dpi) {
-    const plot::figure f = build(e, sized_by(options, theme));
+    plot::figure f = build(e, sized_by(options, theme));
     std::vector<plot::panel_frame> frames;
-    const auto drawn = plot::drawn_data(f, theme, dpi, frames);
+    std::vector<std::vector<plot::drawn_points>> drawn;
     figure_numbers n;
+    try {
+        drawn = plot::drawn_data(f, theme, dpi, frames);
+    } catch (const plot::layout_error&) {
+        // Legends too large for the PNG (many amplitudes): the numbers do not need them.
+        for (auto& p : f.panels) p.legend = plot::legend_place::none;
+        f.shared_legend = false;
+        drawn = plot::drawn_data(f, theme, dpi, frames);
+        n.without_legends = true;
+    }
     n.id = e.id;
     n.specs = panels_of(e, options);
     for (std::size_t i = 0; i < f.panels.size() && i < drawn.size(); ++i) {

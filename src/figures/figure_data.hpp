@@ -68,6 +68,9 @@ struct figure_numbers {
     std::string id;                    ///< the figure's id
     std::vector<panel_spec> specs;     ///< its panels as specified
     std::vector<panel_numbers> panels; ///< its panels' numbers
+    /// The figure's legends did not fit at the PNG's size (plot::layout_error): its curves
+    /// were sampled on axes laid out without them.
+    bool without_legends = false;
 };
 
 /// The numbers of figure e as a raster at `dpi` with `theme` draws it: a curve's adaptive

@@ -483,8 +483,15 @@ drawn_points drawn_series(const series& s, const axis_map& mx, const axis_map& m
 std::vector<std::vector<drawn_points>> drawn_data(const figure& unstyled, const theme& th, double dpi,
                                                   std::vector<panel_frame>& frames) {
     const figure fig = with_theme_styles(unstyled, th);
-    frames = panel_frames(fig, th);
-    const double tolerance = curve_tolerance(dpi / 72, true);
+    // Laid out as on a raster at the dpi (one pixel of it: nothing is kept), which samples
+    // the curves as the PNG does: the samples below are those, from the curves' memos.
+    const surface_ptr surface(cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1));
+    check_cairo(cairo_surface_status(surface.get()), "an image surface");
+    const context_ptr cr(cairo_create(surface.get()));
+    check_cairo(cairo_status(cr.get()), "a drawing context");
+    cairo_scale(cr.get(), dpi / 72.0, dpi / 72.0);
+    draw_figure(cr.get(), fig, th, figure_size(fig, th), draw_pass::all, nullptr, false, &frames);
+    const double tolerance = curve_tolerance(cr.get());
     std::vector<std::vector<drawn_points>> out;
     for (std::size_t i = 0; i < fig.panels.size() && i < frames.size(); ++i) {
         const panel& p = fig.panels[i];

@@ -33,7 +33,14 @@ _pendulum_figures() {
     fi
     local command=${words[1]}
     case $prev in
-        -f|--formats) _pendulum_figures_words "$exe" formats list; return ;;
+        -f|--formats)
+            if [[ $command == data ]]; then
+                COMPREPLY=($(compgen -W "csv json" -- "$cur"))
+            else
+                _pendulum_figures_words "$exe" formats list
+            fi
+            return ;;
+        --layout) COMPREPLY=($(compgen -W "long wide" -- "$cur")); return ;;
         --theme)
             _pendulum_figures_words "$exe" themes
             COMPREPLY+=($(compgen -f -X '!*.toml' -- "$cur"))
@@ -45,7 +52,7 @@ _pendulum_figures() {
         --set) _pendulum_figures_words "$exe" set-keys; return ;;
         --method)
             if [[ $command == trajectory ]]; then
-                _pendulum_figures_words "$exe" motion-methods
+                _pendulum_figures_words "$exe" motion-methods list
             else
                 _pendulum_figures_words "$exe" methods list
             fi
@@ -69,7 +76,7 @@ _pendulum_figures() {
         show) options="--theme --help --help-all" ;;
         render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --jobs --help --help-all" ;;
         plot) options="--theta0 --energy --omega0 --methods --range --time --harmonic --harmonics --orders --y --x --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --help --help-all" ;;
-        data) options="-o --output --theta0 --help --help-all" ;;
+        data) options="-o --output --theta0 -f --format --layout --help --help-all" ;;
         describe) options="--alt --help --help-all" ;;
     esac
     if [[ $cur == -* ]]; then

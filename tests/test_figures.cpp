@@ -311,14 +311,14 @@ TEST(ListAndData, ListEveryFigure) {
 TEST(ListAndData, DataIsCsvOfEverySeries) {
     const auto r = run_cli("data fig6");
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(r.out.rfind("panel,series,x,y\n", 0), 0u);
-    EXPECT_NE(r.out.find("\na,exact,0,2.827433388230814\n"), std::string::npos);
+    EXPECT_EQ(r.out.rfind("panel,series,x,y,id\n", 0), 0u);
+    EXPECT_NE(r.out.find("\na,exact,0,2.827433388230814,exact\n"), std::string::npos);
     EXPECT_NE(r.out.find("\nc,second order,"), std::string::npos);
     const auto dir = temp_dir("data");
     const auto w = run_cli("data period -o '" + (dir / "p.csv").string() + "'");
     ASSERT_EQ(w.status, 0) << w.err;
     EXPECT_EQ(w.out, "");
-    EXPECT_EQ(test_support::slurp(dir / "p.csv").rfind("panel,series,x,y\n", 0), 0u);
+    EXPECT_EQ(test_support::slurp(dir / "p.csv").rfind("panel,series,x,y,id\n", 0), 0u);
     fs::remove_all(dir);
 }
 
@@ -347,9 +347,9 @@ TEST(ListAndData, CsvQuotesAndPlainText) {
     p.data.push_back(plot::series{.label = "c", .x = {3}, .y = {std::nan("")}});
     f.panels = {p, p};
     EXPECT_EQ(figures::figure_csv(f),
-              "panel,series,x,y\n"
-              "a,\"a, & \"\"b\"\"\",1,0.5\na,\"a, & \"\"b\"\"\",2,0.25\na,c,3,nan\n"
-              "b,\"a, & \"\"b\"\"\",1,0.5\nb,\"a, & \"\"b\"\"\",2,0.25\nb,c,3,nan\n");
+              "panel,series,x,y,id\n"
+              "a,\"a, & \"\"b\"\"\",1,0.5,series:1\na,\"a, & \"\"b\"\"\",2,0.25,series:1\na,c,3,nan,series:2\n"
+              "b,\"a, & \"\"b\"\"\",1,0.5,series:1\nb,\"a, & \"\"b\"\"\",2,0.25,series:1\nb,c,3,nan,series:2\n");
 }
 
 TEST(ListAndData, FilesForPaperNames) {

@@ -187,7 +187,7 @@ TEST(FileWrite, DataIntoAFifoFromTheCommandLine) {
     const auto piped = test_support::run_cli("data fig1 -o - > '" + (dir / "out").string() + "'");
     reader.join();
     EXPECT_EQ(piped.status, 0) << piped.err;
-    EXPECT_EQ(got.rfind("panel,series,x,y\n", 0), 0u);
+    EXPECT_EQ(got.rfind("panel,series,x,y,id\n", 0), 0u);
     fs::remove_all(dir);
 }
 

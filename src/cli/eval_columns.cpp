@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/eval_columns.hpp"
 
+#include "cli/errors.hpp"
+#include "cli/options.hpp"
+#include "pendulum/period_error.hpp"
+
 #include <array>
+#include <limits>
 
 namespace pendulum::cli {
 
@@ -44,6 +49,26 @@ constexpr std::array<eval_column, 18> columns = {{
 }  // namespace
 
 std::span<const eval_column> eval_columns() { return columns; }
+
+std::optional<method_choice> error_column_method(std::string_view name) {
+    if (!name.starts_with(error_column_prefix)) return std::nullopt;
+    try {
+        return parse_method(name.substr(error_column_prefix.size()));
+    } catch (const domain_error& e) {
+        throw usage_error("--columns '" + shown_text(std::string(name)) + "': " + e.what());
+    }
+}
+
+double error_column_value(const method_choice& m, const amplitude& theta0) {
+    const period_error e = method_period_error(m, theta0);
+    switch (e.what) {
+        case period_error::kind::value: return e.value;
+        case period_error::kind::below_limit: return 0.0;
+        case period_error::kind::no_period:
+        case period_error::kind::not_computed: break;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
 
 std::string eval_columns_help() {
     std::string out;

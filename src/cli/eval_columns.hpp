@@ -3,6 +3,7 @@
 
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
+#include "pendulum/methods.hpp"
 
 #include <optional>
 #include <span>
@@ -47,6 +48,19 @@ struct eval_column {
 /// The fixed columns, in order; --order and --method add columns after them. Without
 /// --columns eval writes those that are by_default.
 std::span<const eval_column> eval_columns();
+
+/// The prefix of an error column: err:lowest is the relative period error T_m/T - 1 of
+/// lowest order, err:order:6 that of the iteration to order 6, for any method of 'list'.
+inline constexpr std::string_view error_column_prefix = "err:";
+
+/// The method of an error column's name (err:METHOD), or nullopt for a name without the
+/// prefix; an unknown method is a usage_error naming it.
+std::optional<method_choice> error_column_method(std::string_view name);
+
+/// An error column's value at theta0: T_m/T - 1 from method_period_error (right to 1e-12
+/// relative), 0 where |T_m/T - 1| < 1e-300, NaN (an empty field, null) where the method has
+/// no period or the iteration's projection did not converge.
+double error_column_value(const method_choice& m, const amplitude& theta0);
 
 /// The column list for --help: "theta0 (the amplitude), period_exact (T/T0 exact), ...".
 std::string eval_columns_help();

@@ -51,8 +51,9 @@ struct eval_options {
 constexpr std::string_view seconds_column = "T_s";
 
 /// The fixed columns --columns keeps, in the table's order, and whether it keeps T_s; every
-/// fixed column (and T_s with --length) without it. An unknown name is bad input.
-std::pair<std::vector<const eval_column*>, bool> chosen_columns(const eval_options& o) {
+/// fixed column (and T_s with --length) without it. Its error columns (err:METHOD) go to
+/// `errors`, in its order. An unknown name is bad input.
+std::pair<std::vector<const eval_column*>, bool> chosen_columns(const eval_options& o, std::vector<method_choice>& errors) {
     std::vector<const eval_column*> fixed;
     if (o.columns.empty()) {
         for (const auto& c : eval_columns()) {
@@ -63,13 +64,17 @@ std::pair<std::vector<const eval_column*>, bool> chosen_columns(const eval_optio
     const auto names = split_list(o.columns);
     bool seconds = false;
     for (const auto& name : names) {
+        if (const auto m = error_column_method(name)) {
+            errors.push_back(*m);
+            continue;
+        }
         const bool known = name == seconds_column ||
                            std::any_of(eval_columns().begin(), eval_columns().end(), [&](const eval_column& c) { return c.name == name; });
         if (!known) {
             std::string all;
             for (const auto& c : eval_columns()) all += std::string(c.name) + ", ";
             throw usage_error("--columns: unknown column '" + shown_text(name) + "'; the columns are " + all +
-                              std::string(seconds_column));
+                              std::string(seconds_column) + " and err:METHOD for any method of 'list'");
         }
         seconds = seconds || name == seconds_column;
     }
@@ -196,7 +201,8 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     if (!o.omega0.empty() || !o.energy.empty()) return eval_starts(out, o, orders, methods, small_period_s);
     if (o.theta0.empty()) throw usage_error("give --theta0 (amplitudes, or with --omega0 states) or --energy");
     const auto amplitudes = parse_amplitude_values(o.theta0);
-    const auto [fixed, seconds] = chosen_columns(o);
+    std::vector<method_choice> errors;
+    const auto [fixed, seconds] = chosen_columns(o, errors);
     // Only the solutions the chosen columns read are computed.
     unsigned needs = seconds ? static_cast<unsigned>(need_exact_period) : 0u;
     for (const auto* c : fixed) needs |= c->needs;
@@ -204,6 +210,7 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     for (const auto* c : fixed) columns.emplace_back(c->name);
     for (int n : orders) columns.push_back("period_order" + std::to_string(n));
     for (const auto& m : methods) columns.push_back("period_" + m.text());
+    for (const auto& m : errors) columns.push_back(std::string(error_column_prefix) + m.text());
     if (seconds) columns.emplace_back(seconds_column);
     // The iteration is computed once per amplitude, to the highest level asked for, and
     // every --order and --method order:N column is read off that one sequence.
@@ -216,6 +223,14 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         row.clear();
         for (const auto* c : fixed) row.push_back(c->value(point));
         for (double x : method_periods(value, orders, methods, highest, broken)) row.push_back(x);
+        for (const auto& m : errors) {
+            row.push_back(error_column_value(m, value));
+            // An iteration without a period is said, as for its period's column.
+            const bool iterated = m.row->role == method_role::iterated;
+            if (iterated && std::isnan(row.back()) && std::find(broken.begin(), broken.end(), m.n) == broken.end()) {
+                broken.push_back(m.n);
+            }
+        }
         if (seconds) row.push_back(period_seconds(*point.exact_period, small_period_s));
         writer.row(row);
         if (!broken.empty()) {
@@ -259,7 +274,8 @@ command add_eval_command(CLI::App& app) {
     cmd->add_option("--columns", ev->columns,
                      "Only these columns, a comma-separated LIST of the columns below and T_s (with --length), "
                      "written in the table's order; only what they need is computed. --order and --method "
-                     "columns follow them")
+                     "columns follow them, then err:METHOD columns (T_m/T - 1 of any method of 'list', right to "
+                     "1e-12: err:lowest, err:order:6; 0 below 1e-300, empty where the method has no period)")
         ->type_name("LIST")->check(non_empty);
     cmd->footer(std::string("\n") + angle_help + "\n\nColumns: " + cli::eval_columns_help() +
                  "; then period_orderN for each --order N, period_NAME for each --method NAME, and T_s with "

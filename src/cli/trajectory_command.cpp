@@ -4,6 +4,7 @@
 #include "cli/options.hpp"
 #include "cli/report.hpp"
 #include "cli/table.hpp"
+#include "figures/figure_data.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <iostream>
 #include <memory>
 #include <numbers>
@@ -71,6 +73,187 @@ const time_unit_row& parse_time_unit(const std::string& text) {
     throw usage_error("--time '" + shown_text(text) + "': the units of time are " + names);
 }
 
+/// The most methods of one --method list.
+constexpr std::size_t max_methods = 8;
+
+/// The methods of --method, a comma-separated list (order with --order N), each once, each
+/// with a law of motion that applies to the start.
+std::vector<method_choice> trajectory_methods(const trajectory_options& o, bool order_given, const start_option& start) {
+    const auto items = split_list(o.method);
+    if (items.size() > max_methods) {
+        throw usage_error("--method '" + shown_text(o.method) + "': " + std::to_string(items.size()) +
+                          " methods; at most " + std::to_string(max_methods) + " in one table");
+    }
+    const bool order_listed = std::find(items.begin(), items.end(), "order") != items.end();
+    if (order_given && !order_listed) {
+        throw usage_error("--order is only used with --method order, not --method " + o.method);
+    }
+    std::vector<method_choice> methods;
+    for (const auto& item : items) {
+        std::string text = item;
+        if (item == "order") {
+            if (!order_given) throw usage_error("--method order needs --order N (or write --method order:N)");
+            text = "order:" + std::to_string(parse_order(o.order));
+        }
+        const method_choice method = parse_method_option("--method", text);
+        if (!method.has_motion()) {
+            throw usage_error("--method " + method.text() + " gives a period only, not a law of motion; see 'list'");
+        }
+        if (std::any_of(methods.begin(), methods.end(), [&](const method_choice& m) { return m.text() == method.text(); })) {
+            throw usage_error("--method '" + shown_text(o.method) + "': " + method.text() + " is listed twice");
+        }
+        check_method_applies(method, start);
+        methods.push_back(method);
+    }
+    return methods;
+}
+
+/// The times of --at, in the unit of --time; each finite.
+std::vector<double> times_at(const trajectory_options& o, const time_unit_row& unit, bool periods_given) {
+    std::vector<double> times;
+    if (o.at.empty()) return times;
+    if (periods_given) throw usage_error("--periods goes with --samples, not with --at");
+    for (const auto& item : split_list(o.at)) {
+        try {
+            times.push_back(parse_expression(item));
+        } catch (const std::invalid_argument& e) {
+            throw usage_error(std::string("--at '") + item + "': " + e.what());
+        }
+        // Any finite time: it is reduced modulo the period exactly.
+        if (!std::isfinite(times.back())) {
+            throw usage_error("--at '" + item + "': a time " + std::string(unit.name) + " must be finite");
+        }
+    }
+    return times;
+}
+
+/// w0 per second for --time t/s (--length and --g checked), 0 for the other units.
+long double checked_w0(const trajectory_options& o, const time_unit_row& unit) {
+    if (unit.name != "t/s") {
+        if (o.length) throw usage_error("--length goes with --time t/s, not --time " + std::string(unit.name));
+        return 0;
+    }
+    if (!o.length) throw usage_error("--time t/s needs the pendulum's --length L in metres (and --g, default 9.80665)");
+    if (!(*o.length > 0 && *o.length <= 1e6)) {
+        throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
+    }
+    if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
+    return angular_frequency(*o.length, o.g);
+}
+
+/// What every method's values at a time share: the start, the table's kind, the clock.
+struct trajectory_context {
+    const motion& m;
+    bool state;        // a state or energy: omega too, theta unwrapped
+    bool paper_table;  // an amplitude in t/T: the paper's table
+    long double scale; // w0 t per unit of time
+    int turns_per_period;
+};
+
+/// One method's run: its approximant (none for the exact solution), clock and phase.
+struct method_run {
+    explicit method_run(const method_choice& m) : method(m) {}
+    method_choice method;
+    fourier_solution approx{};
+    std::optional<time_reducer> reduce{};
+    double phase_at_start = 0;
+};
+
+/// Sets up r (its approximant, clock and phase); an iteration without a period is bad input.
+void prepare_run(method_run& r, const trajectory_context& c, const start_option& start, const trajectory_options& o,
+                 const time_unit_row& unit, const std::vector<double>& times) {
+    const motion& m = c.m;
+    const method_choice& method = r.method;
+    const bool is_exact = method.is_exact();
+    const amplitude theta0 = m.kind() == regime::libration ? m.amplitude() : amplitude(1.0);
+    if (!is_exact) r.approx = method_solution(method, theta0);
+    if (!is_exact && !r.approx.exists()) {
+        throw usage_error(start.text + ": the iteration has no period at order " + std::to_string(method.n) +
+                          " there (lambda = (w/w0)^2 < 0: the scheme itself breaks down near pi); choose another order, "
+                          "or an amplitude further from pi");
+    }
+    // The times of a motion with a period are reduced modulo that period exactly (from the
+    // exact amplitude or energy), and an approximant's phase (w/w0) w0 t modulo 2 pi with its
+    // own frequency ratio: any finite time loses nothing. The separatrix has no period: far
+    // out it is at the top to the last bit.
+    if (m.has_period()) {
+        double largest = o.periods;
+        if (!o.at.empty()) {
+            largest = 0;
+            for (double s : times) largest = std::max(largest, std::fabs(s));
+        }
+        time_scale ts;
+        if (unit.name == "t/T0") ts.what = time_scale::unit::small_periods;
+        if (unit.name == "t/s") ts = {time_scale::unit::seconds, *o.length, o.g};
+        r.reduce.emplace(m, ts, largest, is_exact ? 0.0 : r.approx.frequency_ratio);
+    }
+    // A libration from a state runs its approximant on its own clock: the phase at time 0.
+    r.phase_at_start = is_exact || c.paper_table ? 0.0 : start_phase(m, r.approx);
+}
+
+/// Appends theta (and omega for a state) of the run at time s to the row.
+void append_values(const trajectory_context& c, const method_run& r, double s, std::vector<double>& row) {
+    const motion& m = c.m;
+    if (!r.method.is_exact()) {
+        const double x = r.reduce->phase(s);
+        if (c.paper_table) {
+            row.push_back(r.approx.theta_at_phase(x));
+            return;
+        }
+        row.push_back(m.libration_center() + r.approx.theta_at_phase(x + r.phase_at_start));
+        if (c.state) row.push_back(velocity_at_phase(r.approx, x + r.phase_at_start));
+        return;
+    }
+    if (c.paper_table) {
+        // The amplitude's own table, reduced by the exact period's symmetries.
+        row.push_back(m.libration().theta_at_fraction(s));
+        return;
+    }
+    const long double far = 1e300L;
+    const double t = r.reduce ? (*r.reduce)(s) : static_cast<double>(std::clamp(s * c.scale, -far, far));
+    // A rotation's angle grows by 2 pi a revolution: the whole revolutions are added back exactly.
+    const double theta = m.theta(t);
+    row.push_back(m.kind() == regime::rotation ? r.reduce->plus_turns(theta, c.turns_per_period) : theta);
+    if (c.state) row.push_back(m.velocity(t));
+}
+
+/// The columns after time: theta (and omega) for one method, theta:ID (omega:ID) for each of several.
+std::vector<std::string> value_columns(const std::vector<method_choice>& methods, bool state) {
+    std::vector<std::string> columns;
+    for (const auto& method : methods) {
+        const std::string suffix = methods.size() == 1 ? "" : ":" + method.text();
+        columns.push_back("theta" + suffix);
+        if (state) columns.push_back("omega" + suffix);
+    }
+    return columns;
+}
+
+/// The head of the JSON of several methods: the start, the time's unit and each method's
+/// columns, period and units; the rows follow as "rows".
+std::string json_head(const start_option& start, const std::string& theta0_text, const time_unit_row& unit,
+                      const std::vector<method_choice>& methods, bool state) {
+    const motion& m = start.motion;
+    const bool libration = m.kind() == regime::libration;
+    std::string out = "{\"start\": " + figures::json_string(start.text) + ",\n \"theta0\": ";
+    // The amplitude as written where it is given, and in radians for any libration.
+    const std::string text = theta0_text.empty() ? "" : "\"text\": " + figures::json_string(theta0_text) + ", ";
+    out += libration ? "{" + text + "\"radians\": " + figures::json_number(m.amplitude().radians()) + "}"
+                     : std::string("null");
+    out += ",\n \"time\": {\"column\": " + figures::json_string(std::string(unit.column)) + ", \"unit\": " +
+           figures::json_string(std::string(unit.name)) + "},\n \"methods\": [";
+    for (std::size_t i = 0; i < methods.size(); ++i) {
+        const auto& method = methods[i];
+        std::optional<double> period;
+        if (libration) period = method_period(method, m.amplitude());
+        out += std::string(i ? "," : "") + "\n  {\"id\": " + figures::json_string(method.text()) + ", \"method\": " +
+               figures::json_string(method.text()) + ", \"theta_column\": " + figures::json_string("theta:" + method.text());
+        if (state) out += ", \"omega_column\": " + figures::json_string("omega:" + method.text());
+        out += ", \"period\": " + (period ? "{\"T_over_T0\": " + figures::json_number(*period) + "}" : std::string("null"));
+        out += ", \"units\": {\"theta\": \"rad\"" + std::string(state ? ", \"omega\": \"theta'/w0\"" : "") + "}}";
+    }
+    return out + "\n ],\n \"rows\": ";
+}
+
 /// Writes trajectory's table row by row; every input is checked before the first row.
 void trajectory_stream(std::ostream& out, const trajectory_options& o, bool order_given, bool periods_given) {
     const auto format = parse_table_format(o.format);
@@ -84,47 +267,13 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     if (!m.has_period() && unit.name == "t/T") {
         throw usage_error(start.text + " is on the separatrix (E = 2): it has no period T; give --time t/T0 or --time t/s");
     }
-    long double w0 = 0;
-    if (unit.name == "t/s") {
-        if (!o.length) throw usage_error("--time t/s needs the pendulum's --length L in metres (and --g, default 9.80665)");
-        if (!(*o.length > 0 && *o.length <= 1e6)) {
-            throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
-        }
-        if (!(o.g > 0 && o.g <= 1e4)) throw usage_error("--g " + format_double(o.g) + ": above 0 and at most 1e4");
-        w0 = angular_frequency(*o.length, o.g);
-    } else if (o.length) {
-        throw usage_error("--length goes with --time t/s, not --time " + std::string(unit.name));
-    }
-    std::string method_text = o.method;
-    if (o.method == "order") {
-        if (!order_given) throw usage_error("--method order needs --order N (or write --method order:N)");
-        method_text = "order:" + std::to_string(parse_order(o.order));
-    } else if (order_given) {
-        throw usage_error("--order is only used with --method order, not --method " + o.method);
-    }
-    const method_choice method = parse_method_option("--method", method_text);
-    if (!method.has_motion()) {
-        throw usage_error("--method " + method.text() + " gives a period only, not a law of motion; see 'list'");
-    }
-    check_method_applies(method, start);
+    const long double w0 = checked_w0(o, unit);
+    const std::vector<method_choice> methods = trajectory_methods(o, order_given, start);
     if (o.at.empty() == (o.samples == 0)) {
         throw usage_error("give either --at LIST or --samples N (with --periods P)");
     }
-    std::vector<double> times;
-    if (!o.at.empty()) {
-        if (periods_given) throw usage_error("--periods goes with --samples, not with --at");
-        for (const auto& item : split_list(o.at)) {
-            try {
-                times.push_back(parse_expression(item));
-            } catch (const std::invalid_argument& e) {
-                throw usage_error(std::string("--at '") + item + "': " + e.what());
-            }
-            // Any finite time: it is reduced modulo the period exactly.
-            if (!std::isfinite(times.back())) {
-                throw usage_error("--at '" + item + "': a time " + std::string(unit.name) + " must be finite");
-            }
-        }
-    } else {
+    const std::vector<double> times = times_at(o, unit, periods_given);
+    if (o.at.empty()) {
         if (o.samples < 2 || o.samples > max_samples) {
             throw usage_error("--samples " + std::to_string(o.samples) + ": must be between 2 and " +
                               std::to_string(max_samples));
@@ -134,63 +283,20 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
                               ": must be greater than 0 and at most " + format_double(max_periods));
         }
     }
+    const trajectory_context c{m, state, !state && unit.name == "t/T", unit.scale(m, w0),
+                               m.start().omega < 0 ? -1 : 1};
+    std::deque<method_run> runs;  // in place: a time reducer stays where it is made
+    for (const auto& method : methods) prepare_run(runs.emplace_back(method), c, start, o, unit, times);
 
-    const bool is_exact = method.is_exact();
-    const amplitude theta0 = m.kind() == regime::libration ? m.amplitude() : amplitude(1.0);
-    const fourier_solution approx = is_exact ? fourier_solution{} : method_solution(method, theta0);
-    if (!is_exact && !approx.exists()) {
-        throw usage_error(start.text + ": the iteration has no period at order " + std::to_string(method.n) +
-                          " there (lambda = (w/w0)^2 < 0: the scheme itself breaks down near pi); choose another order, "
-                          "or an amplitude further from pi");
-    }
-
-    const long double scale = unit.scale(m, w0);  // w0 t per unit of time, rounded once with the time
-    const bool paper_table = !state && unit.name == "t/T";
-    std::vector<std::string> columns{std::string(unit.column), "theta"};
-    if (state) columns.emplace_back("omega");
+    std::vector<std::string> columns{std::string(unit.column)};
+    for (auto& name : value_columns(methods, state)) columns.push_back(std::move(name));
+    const bool several_json = methods.size() > 1 && format == table_format::json;
+    if (several_json) out << json_head(start, state ? "" : o.theta0, unit, methods, state);
     table_writer writer(out, columns, format);
-    // The times of a motion with a period are reduced modulo that period exactly (from the
-    // exact amplitude or energy), and an approximant's phase (w/w0) w0 t modulo 2 pi with its
-    // own frequency ratio: any finite time loses nothing. The separatrix has no period: far
-    // out it is at the top to the last bit.
-    std::optional<time_reducer> reduce;
-    if (m.has_period()) {
-        double largest = o.periods;
-        if (!o.at.empty()) {
-            largest = 0;
-            for (double s : times) largest = std::max(largest, std::fabs(s));
-        }
-        time_scale ts;
-        if (unit.name == "t/T0") ts.what = time_scale::unit::small_periods;
-        if (unit.name == "t/s") ts = {time_scale::unit::seconds, *o.length, o.g};
-        reduce.emplace(m, ts, largest, is_exact ? 0.0 : approx.frequency_ratio);
-    }
-    // A libration from a state runs its approximant on its own clock: the phase at time 0.
-    const double phase_at_start = is_exact || paper_table ? 0.0 : start_phase(m, approx);
-    const int turns_per_period = m.start().omega < 0 ? -1 : 1;
+    std::vector<double> row;
     const auto write = [&](double s) {
-        if (!is_exact) {
-            const double x = reduce->phase(s);
-            if (paper_table) {
-                writer.row({s, approx.theta_at_phase(x)});
-                return;
-            }
-            std::vector<double> row{s, m.libration_center() + approx.theta_at_phase(x + phase_at_start)};
-            if (state) row.push_back(velocity_at_phase(approx, x + phase_at_start));
-            writer.row(row);
-            return;
-        }
-        if (paper_table) {
-            // The amplitude's own table, reduced by the exact period's symmetries.
-            writer.row({s, m.libration().theta_at_fraction(s)});
-            return;
-        }
-        const long double far = 1e300L;
-        const double t = reduce ? (*reduce)(s) : static_cast<double>(std::clamp(s * scale, -far, far));
-        // A rotation's angle grows by 2 pi a revolution: the whole revolutions are added back exactly.
-        const double theta = m.theta(t);
-        std::vector<double> row{s, m.kind() == regime::rotation ? reduce->plus_turns(theta, turns_per_period) : theta};
-        if (state) row.push_back(m.velocity(t));
+        row.assign(1, s);
+        for (const auto& r : runs) append_values(c, r, s, row);
         writer.row(row);
     };
     if (o.at.empty()) {
@@ -200,6 +306,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
         for (double s : times) write(s);
     }
     writer.finish();
+    if (several_json) out << "}\n";
 }
 
 }  // namespace
@@ -223,8 +330,9 @@ command add_trajectory_command(CLI::App& app) {
     cmd->add_option("--length", tr->length, "Pendulum length in metres, for --time t/s")->type_name("L");
     cmd->add_option("--g", tr->g, "Gravity in m/s^2 for --length (default 9.80665)")->type_name("G");
     cmd->add_option("--method", tr->method,
-                     "A method with a law of motion: exact (default), harmonic, lowest, first, second, "
-                     "polynomial, or order:N (or order with --order N); see 'list'")
+                     "Methods with a law of motion, a comma-separated LIST of up to " +
+                         std::to_string(max_methods) + ": exact (default), harmonic, lowest, first, second, "
+                         "polynomial, or order:N (or order with --order N); see 'list'")
         ->type_name("METHOD");
     auto* order_opt = cmd->add_option("--order", tr->order, "Order N of --method order (0.." +
                                                                 std::to_string(max_order) + ")")
@@ -250,11 +358,16 @@ command add_trajectory_command(CLI::App& app) {
                  "nearest its exact value (right relative to itself: far out its digits count the turns, not "
                  "the place in the turn; omega, periodic, keeps every digit); where it exceeds the largest "
                  "double the field is empty (null in JSON).\n\n"
+                 "Several methods (--method exact,lowest) give one column each, named by the method: "
+                 "theta:exact, theta:lowest (and omega:exact, ... for a state), each the same number as the "
+                 "method alone writes. Their JSON is an object: start, theta0, time (column and unit), methods "
+                 "(id, columns, period T/T0 of a libration, units) and rows.\n\n"
                  "Examples:\n"
                  "  pendulum-figures trajectory --theta0 0 --omega0 2.2 --samples 5\n"
                  "  pendulum-figures trajectory --energy 2 --time t/T0 --at 0,0.5,1\n"
                  "  pendulum-figures trajectory --theta0 9pi/10 --method second --samples 201 --periods 2\n"
-                 "  pendulum-figures trajectory --theta0 pi/2 --method order --order 8 --at 0,0.125,0.25");
+                 "  pendulum-figures trajectory --theta0 pi/2 --method order --order 8 --at 0,0.125,0.25\n"
+                 "  pendulum-figures trajectory --theta0 9pi/10 --method exact,lowest,order:6 --samples 101");
 
     return {cmd, [tr, order_opt, periods_opt] {
                 trajectory_stream(std::cout, *tr, order_opt->count() > 0, periods_opt->count() > 0);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/batch.hpp"
 
+#include "figures/figure_data.hpp"
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
 #include "plot/frames.hpp"
@@ -45,37 +46,7 @@ std::vector<figure_file> files_for(const std::vector<const entry*>& figures, con
     return files;
 }
 
-namespace {
-
-/// A text field: quoted as RFC 4180 asks, and one that a spreadsheet would take for a
-/// formula (=, +, -, @, tab or carriage return first) with a single quote before it.
-std::string csv_field(const std::string& text) {
-    const bool formula = !text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos;
-    const std::string field = formula ? "'" + text : text;
-    if (field.find_first_of(",\"\n\r") == std::string::npos) return field;
-    std::string out = "\"";
-    for (char c : field) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
-}  // namespace
-
-std::string figure_csv(const plot::figure& f) {
-    std::ostringstream out;
-    out << "panel,series,x,y\n";
-    for (std::size_t p = 0; p < f.panels.size(); ++p) {
-        const std::string panel = panel_name(p);
-        for (const auto& s : f.panels[p].data) {
-            if (!s.autoscale) continue;  // a reference line, not data
-            const std::string name = csv_field(plain_text(s.label.markup));
-            for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
-                out << panel << ',' << name << ',' << pendulum::format_double(s.x[i]) << ','
-                    << pendulum::format_double(s.y[i]) << '\n';
-            }
-        }
-    }
-    return out.str();
-}
+std::string figure_csv(const plot::figure& f) { return numbers_csv(numbers_of(f), data_layout::long_rows); }
 
 plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
     plot::figure one;

@@ -26,8 +26,9 @@ std::vector<figure_file> files_for(const std::vector<const entry*>& figures, con
                                    const std::filesystem::path& dir, bool paper_files,
                                    const build_options& options = {});
 
-/// Every series of the figure as CSV with the header panel,series,x,y; panels are a, b, ...
-/// and series are named by their legend text without markup.
+/// Every series of the figure as CSV with the header panel,series,x,y,id; panels are a, b,
+/// ..., series are named by their legend text without markup and by their id (each
+/// series' own points: `data` writes a curve's samples, see figure_data.hpp).
 std::string figure_csv(const plot::figure& f);
 
 /// A figure's panel on its own, sized as the paper's LaTeX includes it, with the same frame

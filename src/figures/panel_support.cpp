@@ -32,6 +32,7 @@ series_style style_of(const method_spec& m, int index) {
     if (m.style) s.line = *m.style;
     if (m.marker) s.marker = *m.marker;
     s.rgb_color = m.color;
+    s.id = m.method.text();
     return s;
 }
 
@@ -45,6 +46,7 @@ plot::series series_of(const series_style& st) {
     s.color = st.color;
     s.style_key = st.style_key;
     s.rgb_color = st.rgb_color;
+    s.id = st.id;
     return s;
 }
 
@@ -130,7 +132,8 @@ std::pair<double, std::string> time_unit_of(const figure_spec& spec, const panel
 /// Line styles for series that differ by amplitude, in order.
 series_style amplitude_style(std::size_t i, const plot::label& label) {
     static const line_style cycle[] = {line_style::solid, line_style::dashed, line_style::dotted, line_style::dash_dot};
-    return {label, cycle[i % 4], i == 4 ? marker_style::open_circle : marker_style::none, static_cast<int>(i), ""};
+    return {label, cycle[i % 4], i == 4 ? marker_style::open_circle : marker_style::none, static_cast<int>(i), "",
+            std::nullopt, "theta0:" + std::to_string(i + 1)};
 }
 
 

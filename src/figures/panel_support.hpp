@@ -32,6 +32,7 @@ struct series_style {
     int color;                                     ///< palette index
     std::string style_key;                         ///< the theme's style of this name, if any
     std::optional<plot::rgb> rgb_color = std::nullopt;  ///< a colour of its own
+    std::string id{};                              ///< the series' id (plot::series::id)
 };
 
 /// How method m looks as the index-th series of a panel.

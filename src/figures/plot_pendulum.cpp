@@ -91,6 +91,7 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
     path.curve = plot::parametric_curve(0, 2 * pi, [](double a) { return bob_place(a); }, 8);
     path.alpha = 0.2;
     path.width_scale = 0.6;
+    path.id = "path";
     panel.data.push_back(std::move(path));
     // The turning points of each libration, dotted (a rotation and the separatrix have none).
     const auto starts = starts_of(p);
@@ -105,6 +106,7 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
             mark.line = line_style::dotted;
             mark.alpha = 0.5;
             mark.width_scale = 0.6;
+            mark.id = "turn:" + std::to_string(i + 1);
             if (starts.size() > 1) mark.color = static_cast<int>(i);
             panel.data.push_back(std::move(mark));
         }
@@ -132,6 +134,7 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
                     trail.line = line_style::solid;
                     trail.marker = marker_style::none;
                     trail.alpha = 0.08 + 0.06 * k;
+                    trail.id = "trail:" + st.id;
                     const double t0 = w0_t - span * (8 - k) / 8;
                     const double t1 = w0_t - span * (7 - k) / 8;
                     // Drawn after this function returns: holds its own copy of the motion.
@@ -156,6 +159,7 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
                 s.marker = marker_style::filled_circle;
                 s.marker_scale = bob_marker_scale;
                 s.width_scale = 1.5;
+                s.id = "streak:" + st.id;
                 s.alpha = bob_marker == marker_style::filled_circle ? ghost.alpha : 0.5 * ghost.alpha;
                 s.x = {bob_place(ghost.angle).first};
                 s.y = {bob_place(ghost.angle).second};
@@ -166,6 +170,7 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
             if (rod.line == line_style::none) rod.line = line_style::solid;
             rod.marker = marker_style::none;
             rod.width_scale = 1.2;
+            rod.id = "rod:" + st.id;
             rod.x = {0, std::sin(a)};
             rod.y = {0, -std::cos(a)};
             plot::series bob = series_of(st);
@@ -175,6 +180,7 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
             bob.marker = bob_marker;
             bob.marker_scale = bob_marker_scale;
             bob.width_scale = 1.5;
+            bob.id = "bob:" + st.id;
             bob.x = {std::sin(a)};
             bob.y = {-std::cos(a)};
             panel.data.push_back(std::move(rod));
@@ -182,6 +188,7 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
         }
     }
     plot::series pivot;
+    pivot.id = "pivot";
     pivot.line = line_style::none;
     pivot.marker = marker_style::filled_circle;
     pivot.marker_scale = 1.2;

@@ -3,6 +3,7 @@
 
 #include "figures/describe.hpp"
 #include "figures/errors.hpp"
+#include "figures/figure_data.hpp"
 #include "figures/panel_support.hpp"
 #include "plot/tex_markup.hpp"
 
@@ -148,6 +149,7 @@ plot::figure build_figure(const figure_spec& spec, const build_options& options)
             // A reference line crosses the whole panel, from limit to limit of the other axis
             // (its data range when the axis has no limits), and leaves the limits alone.
             plot::series s;
+            s.id = "line:" + std::to_string(&line - p.lines.data() + 1);
             if (!line.label.empty()) s.label = plot::tex_label(line.label);
             s.line = line.style;
             s.autoscale = false;
@@ -180,6 +182,7 @@ plot::figure build_figure(const figure_spec& spec, const build_options& options)
             }
             panel.data.push_back(std::move(s));
         }
+        give_series_ids(panel);
         f.panels.push_back(std::move(panel));
     }
     // The figure in words travels with it, into the files that can hold them; found when

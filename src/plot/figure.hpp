@@ -107,6 +107,9 @@ struct series {
     // Every member has an initializer, so that an aggregate initialization may name only
     // some (-Wmissing-field-initializers).
     plot::label label{};                    ///< legend text; empty: no entry
+    /// A name for the series' data that stays the same when its label changes: unique in its
+    /// panel, of [A-Za-z0-9_:.-] only ("exact", "order:6", "theta0:2", "line:1"); empty: none yet.
+    std::string id{};
     std::vector<double> x{};                ///< abscissae
     std::vector<double> y{};                ///< ordinates; non-finite values break the line
     /// When set, the line is drawn from this function rather than through the points,

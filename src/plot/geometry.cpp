@@ -217,7 +217,7 @@ std::function<void(const sampled_curve&)>& observer() {
 }  // namespace
 
 void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
-                  std::vector<double>& x, std::vector<double>& y) {
+                  std::vector<double>& x, std::vector<double>& y, std::vector<double>* vertex_u) {
     const std::vector<double> key{mx.lo, mx.hi, mx.log ? 1.0 : 0.0, mx.d0, mx.d1, my.lo, my.hi, my.log ? 1.0 : 0.0,
                                   my.d0, my.d1, clip.x, clip.y, clip.w, clip.h, tolerance};
     std::vector<double> u;
@@ -240,6 +240,13 @@ void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const 
         curve_sampler(c, mx, my, clip, tolerance, x, y, u, nullptr).run();
     }
     if (observer()) observer()(sampled_curve{&c, mx, my, clip, tolerance, x, y, u});
+    if (vertex_u) *vertex_u = std::move(u);
+}
+
+std::pair<double, double> curve_at(const curve& c, double u) {
+    if (!c.last) return c.at(u);
+    const std::lock_guard<std::mutex> hold(c.last->lock);
+    return remembered_at(c, &c.last->values, u);
 }
 
 std::vector<std::pair<double, double>> first_values(const curve& c, int at_least) {

@@ -61,8 +61,12 @@ device_series to_device(const series& s, const axis_map& mx, const axis_map& my)
 /// recursive subdivision of the parameter; NaN where the curve is not finite. The last
 /// sampling of a curve is remembered, so that drawing it again with the same maps costs
 /// nothing (the frames of an animation).
+/// With `u`, the parameter of each vertex goes there.
 void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
-                  std::vector<double>& x, std::vector<double>& y);
+                  std::vector<double>& x, std::vector<double>& y, std::vector<double>* u = nullptr);
+
+/// The curve at parameter u, through its memo: the value its sampling drew.
+std::pair<double, double> curve_at(const curve& c, double u);
 
 /// The curve at the parameters sample_curve takes first (its pieces, then halves of them,
 /// at least `at_least` in all), through the curve's memo: another reader of the curve (a

@@ -53,15 +53,20 @@ namespace {
 /// surface where that is finer; on a vector surface, which a viewer zooms, within an eighth
 /// of a twentieth. Cairo rounds path coordinates to 1/256 of a device unit (a point on a
 /// vector surface), which takes up part of that.
-double curve_tolerance(cairo_t* cr) {
+double curve_tolerance(double units_per_point, bool raster) {
     constexpr double at_size = 0.05;
+    const double rounding = std::sqrt(0.5) / 256 / units_per_point;
+    if (!raster) return at_size / 8 - rounding;
+    return std::min(at_size, 0.5 / units_per_point) - rounding;
+}
+
+/// curve_tolerance on the surface of cr.
+double curve_tolerance(cairo_t* cr) {
     double dx = 1.0;
     double dy = 0.0;
     cairo_user_to_device_distance(cr, &dx, &dy);
     const double units_per_point = std::hypot(dx, dy) > 0 ? std::hypot(dx, dy) : 1.0;
-    const double rounding = std::sqrt(0.5) / 256 / units_per_point;
-    if (cairo_surface_get_type(cairo_get_target(cr)) != CAIRO_SURFACE_TYPE_IMAGE) return at_size / 8 - rounding;
-    return std::min(at_size, 0.5 / units_per_point) - rounding;
+    return curve_tolerance(units_per_point, cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE);
 }
 
 void draw_ticks(cairo_t* cr, const theme& th, const tick_set& t, const axis_map& m, const rect& area,
@@ -444,6 +449,62 @@ std::vector<panel_frame> panel_frames(const figure& fig, const theme& th) {
     std::vector<panel_frame> frames;
     draw_figure(cr.get(), fig, th, size, draw_pass::all, nullptr, false, &frames);
     return frames;
+}
+
+namespace {
+
+/// The series' points in data values as drawn: a curve's samples where its line is drawn.
+drawn_points drawn_series(const series& s, const axis_map& mx, const axis_map& my, const rect& clip,
+                          double tolerance) {
+    drawn_points d;
+    if (!s.curve || s.line == line_style::none) {
+        const std::size_t n = std::min(s.x.size(), s.y.size());
+        d.x.assign(s.x.begin(), s.x.begin() + static_cast<std::ptrdiff_t>(n));
+        d.y.assign(s.y.begin(), s.y.begin() + static_cast<std::ptrdiff_t>(n));
+        return d;
+    }
+    d.sampled = true;
+    std::vector<double> dx;
+    std::vector<double> dy;
+    std::vector<double> u;
+    sample_curve(*s.curve, mx, my, clip, tolerance, dx, dy, &u);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t i = 0; i < u.size(); ++i) {
+        // The function's own values at the vertices (a break stays a break).
+        const auto [x, y] = std::isnan(dx[i]) ? std::pair{nan, nan} : curve_at(*s.curve, u[i]);
+        d.x.push_back(x);
+        d.y.push_back(y);
+    }
+    return d;
+}
+
+}  // namespace
+
+std::vector<std::vector<drawn_points>> drawn_data(const figure& unstyled, const theme& th, double dpi,
+                                                  std::vector<panel_frame>& frames) {
+    const figure fig = with_theme_styles(unstyled, th);
+    // Laid out as on a raster at the dpi (one pixel of it: nothing is kept), which samples
+    // the curves as the PNG does: the samples below are those, from the curves' memos.
+    const surface_ptr surface(cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1));
+    check_cairo(cairo_surface_status(surface.get()), "an image surface");
+    const context_ptr cr(cairo_create(surface.get()));
+    check_cairo(cairo_status(cr.get()), "a drawing context");
+    cairo_scale(cr.get(), dpi / 72.0, dpi / 72.0);
+    draw_figure(cr.get(), fig, th, figure_size(fig, th), draw_pass::all, nullptr, false, &frames);
+    const double tolerance = curve_tolerance(cr.get());
+    std::vector<std::vector<drawn_points>> out;
+    for (std::size_t i = 0; i < fig.panels.size() && i < frames.size(); ++i) {
+        const panel& p = fig.panels[i];
+        const panel_frame& f = frames[i];
+        const axis_map mx{f.x_lo, f.x_hi, p.x.kind == scale::log, f.x, f.x + f.w};
+        const axis_map my{f.y_lo, f.y_hi, p.y.kind == scale::log, f.y + f.h, f.y};
+        const double reach = th.line_width_pt;  // as draw_panel follows curves
+        const rect clip{f.x - reach, f.y - reach, f.w + 2 * reach, f.h + 2 * reach};
+        std::vector<drawn_points> panel_points;
+        for (const auto& s : p.data) panel_points.push_back(drawn_series(s, mx, my, clip, tolerance));
+        out.push_back(std::move(panel_points));
+    }
+    return out;
 }
 
 }  // namespace plot

@@ -67,4 +67,18 @@ figure with_theme_styles(const figure& fig, const theme& th);
 /// The frames of the figure's panels as draw_figure lays them out at the figure's size.
 std::vector<panel_frame> panel_frames(const figure& fig, const theme& th);
 
+/// One series as a raster draws it, in data values: a sampled curve's vertices (NaN
+/// between the pieces of a broken line), or the points of any other series.
+struct drawn_points {
+    std::vector<double> x;  ///< abscissae
+    std::vector<double> y;  ///< ordinates
+    bool sampled = false;   ///< the vertices of a curve, sampled as a raster at the dpi draws it
+};
+
+/// Every panel's series as a raster of the figure at `dpi` draws them (the theme's named
+/// styles applied): a curve drawn with a line is sampled as draw_figure samples it, within
+/// 0.05 pt; the panels' frames go to `frames`.
+std::vector<std::vector<drawn_points>> drawn_data(const figure& fig, const theme& th, double dpi,
+                                                  std::vector<panel_frame>& frames);
+
 }  // namespace plot

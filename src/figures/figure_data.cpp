@@ -1,0 +1,324 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "figures/figure_data.hpp"
+
+#include "figures/panel_support.hpp"
+#include "figures/plots.hpp"
+#include "figures/spec_build.hpp"
+#include "pendulum/amplitude.hpp"
+#include "pendulum/methods.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+
+namespace figures {
+
+bool series_id_character(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == ':' ||
+           c == '.' || c == '-';
+}
+
+namespace {
+
+/// The text with every character outside series_id_character made '_'.
+std::string id_of(std::string text) {
+    std::replace_if(text.begin(), text.end(), [](char c) { return !series_id_character(c); }, '_');
+    return text;
+}
+
+}  // namespace
+
+void give_series_ids(plot::panel& p) {
+    std::set<std::string> taken;  // as wide columns name them, which must differ too
+    const auto used = [&taken](const std::string& id) { return taken.contains(wide_column("", id, 'x')); };
+    int lines = 0;
+    int others = 0;
+    for (auto& s : p.data) {
+        const bool line = !s.autoscale;
+        const int n = line ? ++lines : ++others;
+        std::string id = s.id.empty() ? (line ? "line:" : "series:") + std::to_string(n) : id_of(s.id);
+        if (used(id)) {
+            int k = 2;
+            while (used(id + "." + std::to_string(k))) ++k;
+            id += "." + std::to_string(k);
+        }
+        taken.insert(wide_column("", id, 'x'));
+        s.id = std::move(id);
+    }
+}
+
+std::string csv_field(const std::string& text) {
+    const bool formula = !text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos;
+    const std::string field = formula ? "'" + text : text;
+    if (field.find_first_of(",\"\n\r") == std::string::npos) return field;
+    std::string out = "\"";
+    for (char c : field) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string json_string(std::string_view text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (u < 0x20 || u == 0x7f) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", u);
+            out += buf;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string json_number(double v) { return std::isfinite(v) ? pendulum::format_double(v) : "null"; }
+
+std::string wide_column(const std::string& panel, const std::string& id, char axis) {
+    std::string name = panel + "_" + id + "_" + axis;
+    std::replace_if(name.begin(), name.end(), [](char c) { return c == ':' || c == '.' || c == '-'; }, '_');
+    return name;
+}
+
+namespace {
+
+/// The unit at the end of an axis label in parentheses: "T (s)" -> "s"; else empty.
+std::string unit_of(const std::string& label) {
+    if (label.empty() || label.back() != ')') return "";
+    const auto open = label.rfind('(');
+    if (open == std::string::npos || open == 0 || label[open - 1] != ' ') return "";
+    return label.substr(open + 1, label.size() - open - 2);
+}
+
+axis_numbers axis_of(const plot::axis& a, double lo, double hi) {
+    const std::string text = plain_text(a.label.markup);
+    // An angle axis says its unit by its ticks.
+    const std::string unit = a.ticks == plot::tick_kind::multiples_of_pi ? "rad"
+                             : a.ticks == plot::tick_kind::degrees      ? "deg"
+                                                                         : unit_of(text);
+    return {text, unit, a.kind == plot::scale::log ? "log" : "linear", lo, hi};
+}
+
+/// A series' uncertainties. The hook for series with error bars: none carry any yet.
+void add_errors(const plot::series& /*s*/, series_numbers& /*out*/) {}
+
+/// The method a series' id names (its repeat suffix dropped), or empty.
+std::string method_of_id(const std::string& id) {
+    const std::string name = id.substr(0, id.find('.'));
+    try {
+        return pendulum::parse_method(name).text();
+    } catch (const std::exception&) {
+        return "";
+    }
+}
+
+/// The method, amplitude and period a series of panel spec p stands for, where its id says.
+void add_meaning(const panel_spec& p, series_numbers& s) {
+    s.method = method_of_id(s.id);
+    if (s.id.starts_with("theta0:")) {
+        const std::size_t i = std::strtoul(s.id.c_str() + 7, nullptr, 10);
+        if (i >= 1 && i <= p.theta0.size()) s.theta0 = p.theta0[i - 1];
+        if (s.method.empty() && p.methods.size() == 1) s.method = p.methods.front().method.text();
+    } else if (!s.method.empty() && p.theta0.size() == 1 && p.plot &&
+               p.plot->amplitudes == amplitude_policy::one_per_panel) {
+        s.theta0 = p.theta0.front();
+    }
+    if (s.method.empty() || !s.theta0) return;
+    try {
+        const double t = pendulum::method_period(pendulum::parse_method(s.method), s.theta0->theta0());
+        if (std::isfinite(t)) s.period = t;
+    } catch (const std::exception&) {
+        // no period at this amplitude: none is written
+    }
+}
+
+/// A reference line's ends, moved along the line to the panel's limits.
+void within_limits(series_numbers& s, const plot::panel_frame& f) {
+    const auto clamp = [](double v, double a, double b) { return std::clamp(v, std::min(a, b), std::max(a, b)); };
+    for (auto& v : s.x) v = clamp(v, f.x_lo, f.x_hi);
+    for (auto& v : s.y) v = clamp(v, f.y_lo, f.y_hi);
+}
+
+series_numbers series_of_points(const plot::series& s, std::vector<double> x, std::vector<double> y, bool sampled) {
+    series_numbers n;
+    n.id = s.id;
+    n.label = plain_text(s.label.markup);
+    n.x = std::move(x);
+    n.y = std::move(y);
+    n.sampled = sampled;
+    n.reference_line = !s.autoscale;
+    add_errors(s, n);
+    return n;
+}
+
+}  // namespace
+
+figure_numbers numbers_of(const entry& e, const build_options& options, const plot::theme& theme, double dpi) {
+    plot::figure f = build(e, sized_by(options, theme));
+    std::vector<plot::panel_frame> frames;
+    std::vector<std::vector<plot::drawn_points>> drawn;
+    figure_numbers n;
+    try {
+        drawn = plot::drawn_data(f, theme, dpi, frames);
+    } catch (const plot::layout_error&) {
+        // Legends too large for the PNG (many amplitudes): the numbers do not need them.
+        for (auto& p : f.panels) p.legend = plot::legend_place::none;
+        f.shared_legend = false;
+        drawn = plot::drawn_data(f, theme, dpi, frames);
+        n.without_legends = true;
+    }
+    n.id = e.id;
+    n.specs = panels_of(e, options);
+    for (std::size_t i = 0; i < f.panels.size() && i < drawn.size(); ++i) {
+        const plot::panel& p = f.panels[i];
+        panel_numbers pn{panel_name(i), plain_text(p.label.markup), axis_of(p.x, frames[i].x_lo, frames[i].x_hi),
+                         axis_of(p.y, frames[i].y_lo, frames[i].y_hi), {}};
+        for (std::size_t j = 0; j < p.data.size(); ++j) {
+            series_numbers s = series_of_points(p.data[j], drawn[i][j].x, drawn[i][j].y, drawn[i][j].sampled);
+            if (s.reference_line) within_limits(s, frames[i]);
+            if (i < n.specs.size()) add_meaning(n.specs[i], s);
+            pn.series.push_back(std::move(s));
+        }
+        n.panels.push_back(std::move(pn));
+    }
+    return n;
+}
+
+figure_numbers numbers_of(const plot::figure& f) {
+    figure_numbers n;
+    for (std::size_t i = 0; i < f.panels.size(); ++i) {
+        plot::panel p = f.panels[i];
+        give_series_ids(p);
+        panel_numbers pn{panel_name(i), plain_text(p.label.markup), axis_of(p.x, p.x.min.value_or(NAN), p.x.max.value_or(NAN)),
+                         axis_of(p.y, p.y.min.value_or(NAN), p.y.max.value_or(NAN)), {}};
+        for (const auto& s : p.data) {
+            const std::size_t m = std::min(s.x.size(), s.y.size());
+            pn.series.push_back(series_of_points(s, {s.x.begin(), s.x.begin() + static_cast<std::ptrdiff_t>(m)},
+                                                 {s.y.begin(), s.y.begin() + static_cast<std::ptrdiff_t>(m)}, false));
+        }
+        n.panels.push_back(std::move(pn));
+    }
+    return n;
+}
+
+namespace {
+
+bool any_errors(const figure_numbers& n, bool x) {
+    for (const auto& p : n.panels) {
+        for (const auto& s : p.series) {
+            if (!(x ? s.x_err : s.y_err).empty()) return true;
+        }
+    }
+    return false;
+}
+
+/// The i-th value, or nan past the end.
+std::string cell(const std::vector<double>& v, std::size_t i) {
+    return i < v.size() ? pendulum::format_double(v[i]) : "nan";
+}
+
+std::string long_csv(const figure_numbers& n) {
+    const bool xe = any_errors(n, true);
+    const bool ye = any_errors(n, false);
+    std::ostringstream out;
+    out << "panel,series,x,y,id" << (xe ? ",x_err" : "") << (ye ? ",y_err" : "") << '\n';
+    for (const auto& p : n.panels) {
+        for (const auto& s : p.series) {
+            const std::string name = csv_field(s.label);
+            for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+                out << p.name << ',' << name << ',' << pendulum::format_double(s.x[i]) << ','
+                    << pendulum::format_double(s.y[i]) << ',' << csv_field(s.id);
+                if (xe) out << ',' << cell(s.x_err, i);
+                if (ye) out << ',' << cell(s.y_err, i);
+                out << '\n';
+            }
+        }
+    }
+    return out.str();
+}
+
+/// One column of the wide layout.
+struct column {
+    std::string name;
+    const std::vector<double>* values;
+};
+
+std::string wide_csv(const figure_numbers& n) {
+    std::vector<column> columns;
+    for (const auto& p : n.panels) {
+        for (const auto& s : p.series) {
+            columns.push_back({wide_column(p.name, s.id, 'x'), &s.x});
+            columns.push_back({wide_column(p.name, s.id, 'y'), &s.y});
+            if (!s.x_err.empty()) columns.push_back({wide_column(p.name, s.id, 'x') + "_err", &s.x_err});
+            if (!s.y_err.empty()) columns.push_back({wide_column(p.name, s.id, 'y') + "_err", &s.y_err});
+        }
+    }
+    std::size_t rows = 0;
+    std::ostringstream out;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+        out << (c ? "," : "") << columns[c].name;
+        rows = std::max(rows, columns[c].values->size());
+    }
+    out << '\n';
+    for (std::size_t r = 0; r < rows; ++r) {
+        for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << cell(*columns[c].values, r);
+        out << '\n';
+    }
+    return out.str();
+}
+
+std::string json_array(const std::vector<double>& v) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? "," : "") + json_number(v[i]);
+    return out + "]";
+}
+
+std::string json_axis(const axis_numbers& a) {
+    return "{\"label\":" + json_string(a.label) + ",\"unit\":" + json_string(a.unit) + ",\"scale\":" +
+           json_string(a.scale) + ",\"min\":" + json_number(a.lo) + ",\"max\":" + json_number(a.hi) + "}";
+}
+
+std::string json_series(const panel_numbers& p, const series_numbers& s) {
+    std::string out = "{\"id\":" + json_string(s.id) + ",\"label\":" + json_string(s.label);
+    out += ",\"kind\":" + json_string(s.reference_line ? "line" : s.sampled ? "curve" : "points");
+    out += ",\"method\":" + (s.method.empty() ? std::string("null") : json_string(s.method));
+    if (s.theta0) {
+        out += ",\"theta0\":{\"text\":" + json_string(s.theta0->text) + ",\"radians\":" +
+               json_number(s.theta0->value) + "}";
+    } else {
+        out += ",\"theta0\":null";
+    }
+    out += ",\"period\":" + (s.period ? "{\"T_over_T0\":" + json_number(*s.period) + "}" : std::string("null"));
+    out += ",\"units\":{\"x\":" + json_string(p.x.unit) + ",\"y\":" + json_string(p.y.unit) + "}";
+    out += ",\"columns\":{\"x\":" + json_string(wide_column(p.name, s.id, 'x')) + ",\"y\":" +
+           json_string(wide_column(p.name, s.id, 'y')) + "}";
+    out += ",\"x\":" + json_array(s.x) + ",\"y\":" + json_array(s.y);
+    if (!s.x_err.empty()) out += ",\"x_err\":" + json_array(s.x_err);
+    if (!s.y_err.empty()) out += ",\"y_err\":" + json_array(s.y_err);
+    return out + "}";
+}
+
+}  // namespace
+
+std::string numbers_csv(const figure_numbers& n, data_layout layout) {
+    return layout == data_layout::wide ? wide_csv(n) : long_csv(n);
+}
+
+std::string numbers_json(const figure_numbers& n) {
+    std::string out = "{\"figure\":" + json_string(n.id) + ",\"panels\":[";
+    for (std::size_t i = 0; i < n.panels.size(); ++i) {
+        const auto& p = n.panels[i];
+        out += std::string(i ? ",\n" : "\n") + "{\"name\":" + json_string(p.name) + ",\"title\":" +
+               json_string(p.title) + ",\"x\":" + json_axis(p.x) + ",\"y\":" + json_axis(p.y) + ",\"series\":[";
+        for (std::size_t j = 0; j < p.series.size(); ++j) out += (j ? ",\n" : "\n") + json_series(p, p.series[j]);
+        out += "]}";
+    }
+    return out + "]}\n";
+}
+
+}  // namespace figures

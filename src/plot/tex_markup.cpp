@@ -78,14 +78,14 @@ constexpr tex_macro macro_table[] = {
     {"{", "{", "\\{", symbol},  {"}", "}", "\\}", symbol},  {"%", "%", "\\%", symbol},  {"$", "$", "\\$", symbol},
     {"&", "&", "\\&", symbol},  {"#", "#", "\\#", symbol},  {"_", "_", "\\_", symbol},  {"|", "\u2016", "\\|", symbol},
     // Layout: the markup column says what the drawing shows
-    {"sqrt", "\u221a with an overline over the radicand; \\sqrt[n]{x} with n raised before it", "\\sqrt", function},
-    {"frac", "a/b, a or b in parentheses where it is a sum", "\\frac", function},
+    {"sqrt", "\u221a and a line over x; [n]: n raised before", "\\sqrt", function},
+    {"frac", "a/b in line; a sum in parentheses", "\\frac", function},
     {"tfrac", "as \\frac", "\\tfrac", function},
     {"dfrac", "as \\frac", "\\dfrac", function},
-    {"left", "its delimiter: ( ) [ ] \\{ \\} | or . (none), closed by \\right", "\\left", function},
-    {"right", "its delimiter, closing \\left", "\\right", function},
-    {"big", "its delimiter at the text's size", "", function},
-    {"Big", "its delimiter at the text's size", "", function},
+    {"left", "a delimiter: ( ) [ ] \\{ \\} | \\| . (none)", "\\left", function},
+    {"right", "the delimiter closing \\left", "\\right", function},
+    {"big", "its delimiter, at the text's size", "", function},
+    {"Big", "its delimiter, at the text's size", "", function},
     // Accents: a combining mark after the argument, or an overline
     {"dot", "\u0307", "\\dot", accent},    {"ddot", "\u0308", "\\ddot", accent},  {"hat", "\u0302", "\\hat", accent},
     {"bar", "\u0304", "\\bar", accent},    {"tilde", "\u0303", "\\tilde", accent},
@@ -861,7 +861,9 @@ std::string roff_text(std::string_view text) {
             out += code;
         }
     }
-    return out.empty() || out[0] == '.' || out[0] == '\'' ? "\\&" + out : out;
+    // A tbl cell of only _ or = would be a rule.
+    const bool guard = out.empty() || out[0] == '.' || out[0] == '\'' || out == "_" || out == "=";
+    return guard ? "\\&" + out : out;
 }
 
 /// What the man page says a macro draws.
@@ -875,7 +877,7 @@ std::string man_draws(const tex_macro& m) {
             }
             return roff_text(m.markup) + (m.italic ? " (italic)" : "");
         case macro_kind::accent:
-            return m.markup.empty() ? "a line over its argument" : "the combining mark " + roff_text(std::string("\u25cc") + std::string(m.markup)) + " on its argument";
+            return m.markup.empty() ? "a line over its argument" : roff_text(std::string("\u25cc") + std::string(m.markup)) + " over its argument";
         case macro_kind::font:
             return "its argument as it is, " + std::string(m.markup == "i" ? "italic" : m.markup == "b" ? "bold" : "upright");
         case macro_kind::function: return roff_text(m.markup);

@@ -163,10 +163,35 @@ std::vector<letter_form> distinct_letter_forms(PangoContext* context, const std:
     return {{"\u03b8", "<span style=\"normal\">\U0001d703</span>"}};
 }
 
+namespace {
+
+/// The length of the combining marks (U+0300..U+036F, U+20D0..U+20FF) at markup[pos].
+std::size_t combining_marks(const std::string& markup, std::size_t pos) {
+    std::size_t end = pos;
+    for (;;) {
+        const auto byte = [&](std::size_t k) { return end + k < markup.size() ? static_cast<unsigned char>(markup[end + k]) : 0; };
+        if ((byte(0) == 0xcc && byte(1) >= 0x80) || (byte(0) == 0xcd && byte(1) <= 0xaf && byte(1) >= 0x80)) {
+            end += 2;
+        } else if (byte(0) == 0xe2 && byte(1) == 0x83 && byte(2) >= 0x90) {
+            end += 3;
+        } else {
+            return end - pos;
+        }
+    }
+}
+
+}  // namespace
+
 std::string with_letter_forms(std::string markup, const std::vector<letter_form>& forms) {
     for (const letter_form& f : forms) {
-        for (std::size_t pos = 0; (pos = markup.find(f.letter, pos)) != std::string::npos; pos += f.markup.size()) {
-            markup.replace(pos, f.letter.size(), f.markup);
+        // The form is a span; the letter's accents go inside it, onto the form's glyph.
+        const std::size_t close = f.markup.rfind("</");
+        for (std::size_t pos = 0; (pos = markup.find(f.letter, pos)) != std::string::npos;) {
+            const std::size_t marks = combining_marks(markup, pos + f.letter.size());
+            std::string form = f.markup;
+            if (close != std::string::npos) form.insert(close, markup, pos + f.letter.size(), marks);
+            markup.replace(pos, f.letter.size() + marks, form);
+            pos += form.size();
         }
     }
     return markup;

@@ -251,6 +251,11 @@ TEST(Notation, LatexHoldsOnlyTheTablesMacros) {
         }
         EXPECT_EQ(latex.find("^^"), std::string::npos) << tex << " -> " << latex;
     }
+    // A lone prime followed by primes or a superscript is one superscript, as LaTeX needs
+    // (two were a "Double superscript" error that stopped the document).
+    EXPECT_EQ(tex_to_latex("$\\infty ''x$"), "$\\infty {}^{\\prime\\prime}x$");
+    EXPECT_EQ(tex_to_latex("$x '^2$"), "$x{}^{\\prime 2}$");
+    EXPECT_EQ(tex_to_latex("$x '_1$"), "$x{}^{\\prime}_1$");
     // The text of a hostile label is kept as text.
     EXPECT_EQ(tex_to_latex("$\\sqrt{\\mathrm{\\input x}}$"), "$\\sqrt{\\mathrm{\\backslash input\\ x}}$");
     EXPECT_EQ(tex_to_latex("^^5c \\input"), "\\^{}\\^{}5c \\textbackslash{}input");

@@ -281,6 +281,7 @@ private:
         math_class spacing = math_class::ordinary;  ///< a symbol's class
         bool group = false;                         ///< a braced group
         bool sum = false;                           ///< a group with a binary operator or relation at its top
+        bool prime = false;                         ///< a lone ' (LaTeX: a prime on an empty base)
     };
 
     /// True at "\right" (a whole macro name).
@@ -326,7 +327,9 @@ private:
     std::string atom_with_scripts() {
         std::string base = atom();
         const atom_facts facts = last_;
-        int primes = 0;
+        // A lone ' is a prime on an empty base: it shares the superscript of the primes and
+        // script after it, which LaTeX would otherwise call a double superscript.
+        int primes = latex_ && facts.prime ? 1 : 0;
         while (pos_ < tex_.size() && tex_[pos_] == '\'') {
             ++primes;
             ++pos_;
@@ -349,6 +352,11 @@ private:
         }
         last_ = facts;
         if (primes > 0 || has_sub || has_sup) last_.spacing = math_class::ordinary;
+        if (latex_ && facts.prime && !has_sup) {
+            std::string up;
+            for (int i = 0; i < primes; ++i) up += "\\prime";
+            return "{}^{" + up + "}" + (has_sub ? "_" + script(ungrouped(sub)) : "");
+        }
         return latex_ ? scripts_latex(base, primes, has_sup ? &sup : nullptr, has_sub ? &sub : nullptr)
                       : scripts_markup(base, primes, has_sup ? &sup : nullptr, has_sub ? &sub : nullptr);
     }
@@ -425,7 +433,8 @@ private:
         if (std::isalpha(static_cast<unsigned char>(c))) return italic(std::string(1, c));
         if (latex_) {
             if (std::isdigit(static_cast<unsigned char>(c))) return std::string(1, c);
-            return c == '\'' ? "{}^{\\prime}" : escape(std::string(1, c));
+            facts.prime = c == '\'';
+            return c == '\'' ? "{}" : escape(std::string(1, c));
         }
         if (c == '-') return "\u2212";
         if (c == '*') return "\u2217";
@@ -866,14 +875,17 @@ std::string roff_text(std::string_view text) {
     return guard ? "\\&" + out : out;
 }
 
+/// The spaces of the table, in words.
+constexpr std::pair<std::string_view, std::string_view> spaces[] = {
+    {"", "a negative thin space"}, {" ", "a space"}, {"\u2009", "a thin space, 1/6 em"},
+    {"\u2005", "a medium space, 1/4 em"}, {"\u2003", "a space of 1 em"}, {"\u2003\u2003", "a space of 2 em"}};
+
 /// What the man page says a macro draws.
 std::string man_draws(const tex_macro& m) {
     switch (m.kind) {
         case macro_kind::symbol:
-            if (m.markup.empty()) return "a negative thin space";
-            if (m.markup.find_first_not_of(" \u2009\u2005\u2003") == std::string_view::npos) {
-                return m.markup == " " ? "a space" : "a space of " + std::to_string(m.markup == "\u2003\u2003" ? 2 : 1) +
-                                                         (m.markup.starts_with("\u2003") ? " em" : m.markup == "\u2009" ? "/6 em" : "/4 em");
+            for (const auto& [space, words] : spaces) {
+                if (m.markup == space) return std::string(words);
             }
             return roff_text(m.markup) + (m.italic ? " (italic)" : "");
         case macro_kind::accent:

@@ -53,7 +53,9 @@ page() {  # PAGE A.svg B.svg: both inlined, then both as images
 }
 # The same files with the ids Cairo writes, the same in both.
 for f in a b; do sed -E 's/f[0-9a-f]{12}-//g' $f.svg > plain-$f.svg; done
-grep -q 'id="glyph0-1"' plain-a.svg && grep -q 'id="glyph0-1"' plain-b.svg || fail "the control files lack glyph0-1"
+for f in plain-a.svg plain-b.svg; do
+    grep -q 'id="glyph0-1"' "$f" || fail "$f lacks glyph0-1: the control would show nothing"
+done
 page page.html a.svg b.svg
 page plain.html plain-a.svg plain-b.svg
 mkdir shots plain

@@ -21,6 +21,10 @@ HOSTILE = [
     r"\begin{document}\end{document}\bye\end",
     r"$x^{2}'$ $c''_1$ $\dot{\vartheta}'$ $T_{1}^{2}$",
     r"$\left( \frac{1}{2} \right)$",
+    r"$\sqrt[\input /etc/hostname]{x} \frac{\write18{ls}}{2}$",
+    r"$\left( \sqrt{\frac{T}{T_0}} \right)^2 \le \infty \approx \theta \ne \vartheta$",
+    r"$\hat{\mathbf{F}} \vec{v} \overline{xy} \tilde{\psi} \bar{x} \hbar \ell \nabla \partial$",
+    r"$\left\{ \sqrt[3]{\left. x \right|} \right\}$ $\frac{\mathbf{\input x}}{\text{\write18 ls}}$",
     r"100 % of & # _ ^ ~ { } | < > \$",
     "\u00e9t\u00e9 \u00b0 \u03c0 \u2013 \u2014",
 ]
@@ -41,7 +45,7 @@ TEXT = ["a", "T", "1", " ", ".", ",", "(", ")", "%", "#", "&", "~", "^", "_", "{
         "\\$", "\\\\", "@", "\"", "`", "'", "\u00e9", "\u00fc", "\u03c0", "\u2013", r"\input", r"\write18"]
 MATH = ["x", "T", "1", "2", " ", "+", "-", "=", "/", "(", ")", "'", ",", "|", "<", ">", r"\pi", r"\vartheta",
         r"\omega", r"\le", r"\cdot", r"\prime", r"\,", r"\;", r"\!", r"\ ", r"\{", r"\}", r"\%", r"\$", r"\&",
-        r"\#", r"\_", r"\|", r"\quad", r"\infty", "\u03c0"]
+        r"\#", r"\_", r"\|", r"\quad", r"\infty", "\u03c0", r"\theta", r"\approx", r"\ne", r"\hbar"]
 
 
 def math_group(rng, depth=0):
@@ -55,7 +59,10 @@ def math_group(rng, depth=0):
             out += rng.choice("xT") + rng.choice("_^") + "{" + math_group(rng, depth + 1) + "}"
         elif roll < 0.38 and depth < 4:
             out += rng.choice([r"\dot", r"\ddot", r"\left", r"\right", r"\big"]) + "{" + math_group(rng, depth + 1) + "}"
-        elif roll < 0.45:
+        elif roll < 0.42 and depth < 4:
+            out += rng.choice([r"\sqrt", r"\frac{1}", r"\left(", r"\sqrt[3]"]) + "{" + math_group(rng, depth + 1) + "}"
+            out += r"\right)" if out.endswith("}") and r"\left(" in out[-200:] and rng.random() < 0.5 else ""
+        elif roll < 0.47:
             inner = "".join(rng.choice(TEXT[:16] + [r"\input", r"\write18"]) for _ in range(rng.randint(0, 5)))
             inner = inner.replace("{", "").replace("}", "")
             out += rng.choice([r"\mathrm", r"\text", r"\operatorname", r"\mathit"]) + "{" + inner + "}"

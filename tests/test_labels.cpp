@@ -33,8 +33,13 @@ const std::set<std::string>& allowed_macros() {
         "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega", "cdot", "times",
         "pm", "mp", "le", "leq", "ge", "geq", "approx", "sim", "infty", "circ", "prime", "ldots", "dots", "to",
         "propto", "partial", "ln", "log", "exp", "sin", "cos", "tan", "lvert", "rvert",
+        "varpi", "varrho", "varsigma", "Upsilon", "nabla", "ell", "hbar", "cdots", "ne", "neq", "simeq", "equiv",
+        "rightarrow", "cot", "sinh", "cosh", "tanh", "arcsin", "arccos", "arctan", "max", "min",
+        // roots, fractions and delimiters, passed to LaTeX as written
+        "sqrt", "frac", "tfrac", "dfrac", "left", "right",
         // accents, spaces, upright and italic text
-        "dot", "ddot", "quad", "qquad", "mathrm", "mathit", "text", "textrm", "operatorname",
+        "dot", "ddot", "hat", "bar", "tilde", "vec", "overline", "quad", "qquad", "mathrm", "mathit", "mathbf", "text",
+        "textrm", "operatorname",
         // escapes of characters
         "textbackslash", "textbar", "textless", "textgreater", "backslash", "hat",
         ",", ":", ">", ";", "!", " ", "{", "}", "%", "$", "&", "#", "_", "|", "^", "~"};

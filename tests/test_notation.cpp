@@ -1,2 +1,324 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The TeX a physicist writes in a label: every macro of the one table in markup and LaTeX,
+// \theta apart from \vartheta, nesting limits, hostile LaTeX, the man page's list; and SVGs
+// whose ids are their own.
+#include "plot/tex_markup.hpp"
+#include "plot/text.hpp"
+
+#include "process.hpp"
+
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+using plot::macro_kind;
+using plot::math_class;
+using plot::tex_to_latex;
+using plot::tex_to_markup;
+using plot::tex_to_plain;
+using test_support::run_cli;
+using test_support::slurp;
+using test_support::temp_dir;
+
+namespace {
+
+std::string escaped(std::string_view s) {
+    std::string out;
+    for (const char c : s) {
+        if (c == '&') {
+            out += "&amp;";
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+/// The message tex_to_markup throws for `tex`, or "" if it accepts it.
+std::string refusal(const std::string& tex) {
+    try {
+        tex_to_markup(tex);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+
+/// "$" + open n times + core + close n times + "$".
+std::string nested(const std::string& open, const std::string& core, const std::string& close, int n) {
+    std::string s = "$";
+    for (int i = 0; i < n; ++i) s += open;
+    s += core;
+    for (int i = 0; i < n; ++i) s += close;
+    return s + "$";
+}
+
+}  // namespace
+
+TEST(Notation, EverySymbolAsMarkupAndLatex) {
+    int symbols = 0;
+    for (const auto& m : plot::tex_macros()) {
+        if (m.kind != macro_kind::symbol) continue;
+        ++symbols;
+        const std::string tex = "$a \\" + std::string(m.name) + " b$";
+        const std::string drawn = m.italic ? "<i>" + escaped(m.markup) + "</i>" : escaped(m.markup);
+        const std::string spaced = m.spacing == math_class::ordinary ? drawn : " " + drawn + " ";
+        EXPECT_EQ(tex_to_markup(tex), "<i>a</i>" + spaced + "<i>b</i>") << m.name;
+        EXPECT_EQ(tex_to_latex(tex), "$a" + std::string(m.latex) + "b$") << m.name;
+    }
+    EXPECT_GE(symbols, 100);
+}
+
+TEST(Notation, EveryAccentAndFaceAsMarkupAndLatex) {
+    for (const auto& m : plot::tex_macros()) {
+        const std::string name(m.name);
+        if (m.kind == macro_kind::accent) {
+            const std::string drawn = m.markup.empty() ? "<span overline=\"single\"><i>x</i></span>"
+                                                       : "<i>x" + std::string(m.markup) + "</i>";
+            EXPECT_EQ(tex_to_markup("$\\" + name + "{x}$"), drawn) << name;
+            EXPECT_EQ(tex_to_latex("$\\" + name + "{x}$"), "$\\" + name + "{x}$") << name;
+            EXPECT_EQ(tex_to_latex("$\\" + name + " x$"), "$\\" + name + "{x}$") << name;
+        } else if (m.kind == macro_kind::font) {
+            const std::string tag(m.markup);
+            EXPECT_EQ(tex_to_markup("$\\" + name + "{d x}$"), tag.empty() ? "d x" : "<" + tag + ">d x</" + tag + ">") << name;
+            const bool text = name == "text" || name == "textrm";
+            EXPECT_EQ(tex_to_latex("$\\" + name + "{d x}$"), "$\\" + name + "{d" + (text ? " " : "\\ ") + "x}$") << name;
+        }
+    }
+}
+
+TEST(Notation, RootsFractionsAndDelimiters) {
+    // \sqrt: the sign, and the radicand under a line; an index raised before it.
+    EXPECT_EQ(tex_to_markup("$\\sqrt{x}$"), "\u221a<span overline=\"single\"><i>x</i></span>");
+    EXPECT_EQ(tex_to_markup("$\\sqrt{1 - k^2}$"), "\u221a<span overline=\"single\">1 \u2212 <i>k</i><sup>2</sup></span>");
+    EXPECT_EQ(tex_to_markup("$\\sqrt[3]{x}$"), "\u2009<sup>3</sup>\u221a<span overline=\"single\"><i>x</i></span>");
+    EXPECT_EQ(tex_to_latex("$\\sqrt{x}$"), "$\\sqrt{x}$");
+    EXPECT_EQ(tex_to_latex("$\\sqrt x$"), "$\\sqrt{x}$");
+    EXPECT_EQ(tex_to_latex("$\\sqrt[3]{x}$"), "$\\sqrt[3]{x}$");
+    EXPECT_EQ(tex_to_plain("$\\sqrt{g/L}$"), "\u221a(g/L)");
+    // \frac: inline a/b, a part in parentheses only where it is a sum.
+    EXPECT_EQ(tex_to_markup("$\\frac{T}{T_0}$"), "<i>T</i>/<i>T</i><sub>0</sub>");
+    EXPECT_EQ(tex_to_markup("$\\frac{a+b}{2}$"), "(<i>a</i> + <i>b</i>)/2");
+    EXPECT_EQ(tex_to_markup("$\\frac{1}{a-b}$"), "1/(<i>a</i> \u2212 <i>b</i>)");
+    EXPECT_EQ(tex_to_markup("$\\frac{2\\pi}{3}$"), "2<i>\u03c0</i>/3");
+    EXPECT_EQ(tex_to_markup("$\\frac12$"), "1/2");
+    for (const std::string f : {"frac", "tfrac", "dfrac"}) {
+        EXPECT_EQ(tex_to_markup("$\\" + f + "{\\pi}{2}$"), "<i>\u03c0</i>/2") << f;
+        EXPECT_EQ(tex_to_latex("$\\" + f + "{\\pi}{2}$"), "$\\" + f + "{\\pi }{2}$") << f;
+    }
+    // \left and \right: the delimiters as written, at the text's size.
+    EXPECT_EQ(tex_to_markup("$\\left( x \\right)$"), "(<i>x</i>)");
+    EXPECT_EQ(tex_to_markup("$\\left[ x \\right]$"), "[<i>x</i>]");
+    EXPECT_EQ(tex_to_markup("$\\left\\{ x \\right\\}$"), "{<i>x</i>}");
+    EXPECT_EQ(tex_to_markup("$\\left| x \\right|$"), "|<i>x</i>|");
+    EXPECT_EQ(tex_to_markup("$\\left. x \\right|$"), "<i>x</i>|");
+    EXPECT_EQ(tex_to_latex("$\\left( x \\right)$"), "$\\left(x\\right)$");
+    EXPECT_EQ(tex_to_latex("$\\left\\{ x \\right.$"), "$\\left\\{x\\right.$");
+    EXPECT_EQ(refusal("$\\left( x$"), "label '$\\left( x$': \\left( without \\right");
+    EXPECT_EQ(refusal("$x \\right)$"), "label '$x \\right)$': \\right without \\left");
+    EXPECT_EQ(refusal("$\\left< x \\right>$"),
+              "label '$\\left< x \\right>$': \\left and \\right take a delimiter: ( ) [ ] \\{ \\} | \\| or . (none)");
+    EXPECT_EQ(refusal("$\\left( {x \\right)}$"), "label '$\\left( {x \\right)}$': \\right without \\left");
+    // The two labels of the period figure's test.
+    EXPECT_EQ(tex_to_markup("$T/T_0 \\approx 1/\\sqrt{\\cos(\\theta_0/2)}$"),
+              "<i>T</i>/<i>T</i><sub>0</sub> \u2248 1/\u221a<span overline=\"single\">cos(<i>\u03b8</i><sub>0</sub>/2)</span>");
+    EXPECT_EQ(tex_to_markup("$\\left(\\frac{T}{T_0}\\right)^2 \\le \\infty$"),
+              "(<i>T</i>/<i>T</i><sub>0</sub>)<sup>2</sup> \u2264 \u221e");
+    EXPECT_EQ(tex_to_latex("$\\left(\\frac{T}{T_0}\\right)^2 \\le \\infty$"),
+              "$\\left(\\frac{T}{T_0}\\right)^2\\le \\infty $");
+}
+
+TEST(Notation, ThetaIsNotVartheta) {
+    EXPECT_EQ(tex_to_markup("$\\theta$"), "<i>\u03b8</i>");
+    EXPECT_EQ(tex_to_markup("$\\vartheta$"), "<i>\u03d1</i>");
+    EXPECT_EQ(tex_to_latex("$\\theta$"), "$\\theta $");
+    EXPECT_EQ(tex_to_latex("$\\vartheta$"), "$\\vartheta $");
+    EXPECT_EQ(tex_to_plain("$\\theta \\vartheta$"), "\u03b8\u03d1");
+    EXPECT_EQ(plot::markup_to_latex("<i>\u03b8</i>"), "$\\theta $");
+    EXPECT_EQ(plot::markup_to_latex("<i>\u03d1</i>"), "$\\vartheta $");
+    // Computer Modern Unicode draws both with one glyph: the serif's is ϑ, the sans's θ. The
+    // letter whose shape is missing is drawn by its mathematical italic form.
+    const auto forms = [](const std::string& family) {
+        const plot::gobject_ptr<PangoContext> context(pango_font_map_create_context(plot::thread_font_map()));
+        return plot::distinct_letter_forms(context.get(), family);
+    };
+    const auto serif = forms("CMU Serif");
+    ASSERT_EQ(serif.size(), 1u);
+    EXPECT_EQ(serif[0].letter, "\u03b8");
+    EXPECT_EQ(plot::with_letter_forms("<i>\u03b8\u0307</i><i>\u03d1</i>", serif),
+              "<i><span style=\"normal\">\U0001d703\u0307</span></i><i>\u03d1</i>");
+    const auto sans = forms("CMU Sans Serif");
+    ASSERT_EQ(sans.size(), 1u);
+    EXPECT_EQ(sans[0].letter, "\u03d1");
+    EXPECT_TRUE(forms("DejaVu Sans").empty());  // its own two glyphs
+    // Drawn: the two labels give different pictures in both themes.
+    const auto dir = temp_dir("notation-theta");
+    for (const std::string theme : {"paper", "slides"}) {
+        for (const std::string name : {"theta", "vartheta"}) {
+            const auto r = run_cli("plot period --methods exact --theme " + theme + " --panel-title '$\\" + name +
+                                       "_0$' -f png --dpi 150 --name " + theme + "-" + name,
+                                   dir);
+            ASSERT_EQ(r.status, 0) << r.err;
+        }
+        EXPECT_NE(slurp(dir / (theme + "-theta.png")), slurp(dir / (theme + "-vartheta.png"))) << theme;
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Notation, UnknownMacroNamesTheNearestOne) {
+    EXPECT_EQ(refusal("$\\lamda$"), "label '$\\lamda$': unknown macro \\lamda (did you mean \\lambda?)");
+    EXPECT_EQ(refusal("$\\sqr{x}$"), "label '$\\sqr{x}$': unknown macro \\sqr (did you mean \\sqrt?)");
+    EXPECT_EQ(refusal("$\\vartheat$"), "label '$\\vartheat$': unknown macro \\vartheat (did you mean \\vartheta?)");
+    EXPECT_EQ(refusal("$\\foo$"), "label '$\\foo$': unknown macro \\foo");
+    EXPECT_EQ(refusal("$\\input{x}$"), "label '$\\input{x}$': unknown macro \\input");
+    const auto dir = temp_dir("notation-unknown");
+    const auto r = run_cli("plot period --methods exact --panel-title '$\\omgea$' -f png", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("unknown macro \\omgea (did you mean \\omega?)"), std::string::npos) << r.err;
+    EXPECT_TRUE(test_support::files_in(dir).empty());
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Notation, NestingLimitsAcceptFiftyLevels) {
+    const std::string too_deep = "nested too deeply (at most 50 levels of braces, scripts and accents)";
+    struct construct {
+        std::string open, core, close;
+        int deepest;  // the most accepted: 50 levels
+    };
+    // Each construct's levels: a group is one, \sqrt{...} and \hat{...} two (the macro and its
+    // group), \left( one, \frac{...}{x} two, a script's group one.
+    const construct constructs[] = {{"{", "x", "}", 49},
+                                    {"\\sqrt{", "x", "}", 24},
+                                    {"\\hat{", "x", "}", 24},
+                                    {"\\frac{", "x", "}{2}", 24},
+                                    {"\\left(", "x", "\\right)", 49},
+                                    {"x^{", "x", "}", 49}};
+    for (const auto& c : constructs) {
+        EXPECT_EQ(refusal(nested(c.open, c.core, c.close, c.deepest)), "") << c.open;
+        const std::string tex = nested(c.open, c.core, c.close, c.deepest + 1);
+        const std::string why = refusal(tex);
+        EXPECT_NE(why.find(too_deep), std::string::npos) << c.open << ": " << why;
+        EXPECT_THROW(tex_to_latex(tex), std::invalid_argument) << c.open;
+    }
+}
+
+TEST(Notation, LatexHoldsOnlyTheTablesMacros) {
+    // No row of the table is a TeX primitive or macro that reads, writes, runs or redefines.
+    const std::set<std::string> dangerous = {"input", "include", "write", "openout", "openin", "read", "immediate",
+                                             "csname", "endcsname", "catcode", "def", "edef", "gdef", "let",
+                                             "newcommand", "renewcommand", "special", "directlua", "usepackage",
+                                             "jobname", "expandafter", "string", "scantokens", "makeatletter"};
+    std::set<std::string> allowed;
+    for (const auto& m : plot::tex_macros()) {
+        EXPECT_EQ(dangerous.count(std::string(m.name)), 0u) << m.name;
+        allowed.insert(std::string(m.name));
+    }
+    // The escapes of characters in text and math.
+    for (const std::string e : {"textbackslash", "textbar", "textless", "textgreater", "backslash", "^", "~", "prime"}) {
+        allowed.insert(e);
+    }
+    const std::string hostile[] = {
+        "$\\sqrt{\\input /etc/passwd}$",
+        "$\\sqrt[\\write18{ls}]{x}$",
+        "$\\frac{\\csname input\\endcsname}{2}$",
+        "$\\left( \\catcode`\\^^M=13 \\right)$",
+        "$\\left\\input x \\right)$",
+        "$\\frac{\\mathrm{\\input x}}{\\text{\\write18 ls}}$",
+        "$\\hat{\\mathbf{\\openout1=victim.tex}}$",
+        "$\\overline{\\def\\x{}}$ ^^5cinput",
+        "$\\sqrt[3]{\\left. \\frac{a}{b} \\right|}^{\\immediate}$",
+        "$\\vec{\\input}$ \\input{x}",
+        "$\\mathbf{}}\\input x{$",
+        "$\\left(\\right)\\input$",
+    };
+    static const std::regex macro(R"(\\([A-Za-z]+|[^A-Za-z]))");
+    for (const auto& tex : hostile) {
+        std::string latex;
+        try {
+            latex = tex_to_latex(tex);
+        } catch (const std::invalid_argument&) {
+            continue;
+        }
+        for (auto it = std::sregex_iterator(latex.begin(), latex.end(), macro); it != std::sregex_iterator(); ++it) {
+            EXPECT_EQ(allowed.count((*it)[1].str()), 1u) << tex << " -> " << latex;
+        }
+        EXPECT_EQ(latex.find("^^"), std::string::npos) << tex << " -> " << latex;
+    }
+    // A lone prime followed by primes or a superscript is one superscript, as LaTeX needs
+    // (two were a "Double superscript" error that stopped the document).
+    EXPECT_EQ(tex_to_latex("$\\infty ''x$"), "$\\infty {}^{\\prime\\prime}x$");
+    EXPECT_EQ(tex_to_latex("$x '^2$"), "$x{}^{\\prime 2}$");
+    EXPECT_EQ(tex_to_latex("$x '_1$"), "$x{}^{\\prime}_1$");
+    // The text of a hostile label is kept as text.
+    EXPECT_EQ(tex_to_latex("$\\sqrt{\\mathrm{\\input x}}$"), "$\\sqrt{\\mathrm{\\backslash input\\ x}}$");
+    EXPECT_EQ(tex_to_latex("^^5c \\input"), "\\^{}\\^{}5c \\textbackslash{}input");
+}
+
+TEST(Notation, ManPageListsExactlyTheTable) {
+    const std::string page = slurp(std::filesystem::path(PENDULUM_TEST_DATA) / "../../man/pendulum-figures-spec.5");
+    const std::string begin = ".\\\" The macros: generated from plot::tex_macros_man(); keep in step.\n";
+    const auto from = page.find(begin);
+    ASSERT_NE(from, std::string::npos) << "no list of macros in the man page";
+    const auto start = from + begin.size();
+    const auto end = page.find(".TE\n", start);
+    ASSERT_NE(end, std::string::npos);
+    EXPECT_EQ(page.substr(start, end + 4 - start), plot::tex_macros_man())
+        << "the man page's list of macros is not the table's; put this in its place:\n" << plot::tex_macros_man();
+    // Every name once, as a row's first cell.
+    std::set<std::string> rows;
+    std::istringstream lines(plot::tex_macros_man());
+    for (std::string line; std::getline(lines, line);) {
+        if (line.starts_with("\\e") || line.starts_with("\\&\\e")) rows.insert(line.substr(0, line.find('\t')));
+    }
+    EXPECT_EQ(rows.size(), plot::tex_macros().size());
+}
+
+TEST(Notation, SvgIdsAreTheFiguresOwn) {
+    const auto dir = temp_dir("notation-svg-ids");
+    ASSERT_EQ(run_cli("plot period --methods exact -f svg --name a", dir).status, 0);
+    ASSERT_EQ(run_cli("plot phase --theta0 pi/3 --methods exact -f svg --name b", dir).status, 0);
+    ASSERT_EQ(run_cli("plot period --methods exact -f svg --name a2 --set svg_text=text", dir).status, 0);
+    ASSERT_EQ(run_cli("plot period --methods exact -f svg --name again", dir).status, 0);
+    const auto ids = [](const std::string& svg) {
+        std::set<std::string> out;
+        static const std::regex id(R"re( id="([^"]+)")re");
+        for (auto it = std::sregex_iterator(svg.begin(), svg.end(), id); it != std::sregex_iterator(); ++it) {
+            EXPECT_TRUE(out.insert((*it)[1].str()).second) << "id twice: " << (*it)[1].str();
+        }
+        return out;
+    };
+    std::set<std::string> prefixes;
+    std::map<std::string, std::set<std::string>> of;
+    for (const std::string name : {"a", "b", "a2"}) {
+        const std::string svg = slurp(dir / (name + ".svg"));
+        of[name] = ids(svg);
+        ASSERT_FALSE(of[name].empty()) << name;
+        // Every id has the file's prefix, f and 12 hex digits, and every reference resolves.
+        static const std::regex prefixed(R"(f[0-9a-f]{12}-[a-z]+[0-9-]*)");
+        for (const auto& i : of[name]) {
+            EXPECT_TRUE(std::regex_match(i, prefixed)) << name << ": " << i;
+            prefixes.insert(i.substr(0, 14));
+        }
+        static const std::regex reference(R"re((?:href="#|url\(#)([^")]+))re");
+        int references = 0;
+        for (auto it = std::sregex_iterator(svg.begin(), svg.end(), reference); it != std::sregex_iterator(); ++it) {
+            ++references;
+            EXPECT_EQ(of[name].count((*it)[1].str()), 1u) << name << ": #" << (*it)[1].str() << " is not defined";
+        }
+        if (name != "a2") {  // text as <text>: no glyphs to refer to
+            EXPECT_GT(references, 0) << name;
+        }
+    }
+    EXPECT_EQ(prefixes.size(), 3u);  // one prefix per file, a different one for each
+    for (const auto& i : of["a"]) EXPECT_EQ(of["b"].count(i) + of["a2"].count(i), 0u) << i;
+    // The same figure, the same bytes.
+    EXPECT_EQ(slurp(dir / "a.svg"), slurp(dir / "again.svg"));
+    std::filesystem::remove_all(dir);
+}

@@ -19,6 +19,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -136,6 +137,51 @@ std::string renumber_svg_ids(const std::string& svg) {
     }
     out.append(last, svg.cend());
     return out;
+}
+
+/// The ids of an SVG's definitions (glyphs, clips, surfaces), each with `prefix` before it, and
+/// every reference to them (href="#...", xlink:href="#...", url(#...)) the same: the ids of
+/// two figures inlined in one HTML page then never meet.
+std::string prefix_svg_ids(const std::string& svg, const std::string& prefix) {
+    // Each kind of place a name follows: an id attribute (after a space), a link, a url().
+    struct place {
+        std::string_view opening;
+        char end;
+    };
+    static constexpr place places[] = {{" id=\"", '"'}, {"href=\"#", '"'}, {"url(#", ')'}};
+    std::string out;
+    out.reserve(svg.size() + svg.size() / 8);
+    std::size_t from = 0;
+    for (;;) {
+        std::size_t at = std::string::npos;
+        const place* found = nullptr;
+        for (const place& p : places) {
+            const std::size_t i = svg.find(p.opening, from);
+            if (i < at) at = i, found = &p;
+        }
+        if (!found) break;
+        const std::size_t name = at + found->opening.size();
+        const std::size_t end = svg.find(found->end, name);
+        if (end == std::string::npos) break;
+        out.append(svg, from, name - from);
+        out += prefix;
+        from = name;
+    }
+    out.append(svg, from, std::string::npos);
+    return out;
+}
+
+/// The prefix of an SVG's ids: "f" and 12 hex digits of a hash of its bytes (FNV-1a), so
+/// that the same figure gets the same bytes and two different figures different ids.
+std::string svg_id_prefix(const std::string& svg) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    for (const char c : svg) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 0x100000001b3ULL;
+    }
+    char prefix[24];
+    std::snprintf(prefix, sizeof prefix, "f%012llx-", static_cast<unsigned long long>(h >> 16));
+    return prefix;
 }
 
 /// Cairo writes the clock time as %%CreationDate with no way to set it: use
@@ -369,7 +415,8 @@ std::string write_svg(const figure& fig, const theme& th, const output_options&)
     }
     svg = with_svg_size(std::move(svg), figure_size(fig, th), th.svg_size);
     const figure_words words = metadata_words(fig);
-    return with_svg_words(std::move(svg), words.alt, words.description);
+    svg = with_svg_words(std::move(svg), words.alt, words.description);
+    return prefix_svg_ids(svg, svg_id_prefix(svg));
 }
 
 /// Cairo gives an EPS the bounding box of its ink; a page without a background would shrink

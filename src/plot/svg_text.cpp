@@ -58,6 +58,7 @@ struct run {
     double rise = 0;     // baseline raised by, in points
     bool italic = false;
     bool bold = false;
+    bool overline = false;  // \sqrt's and \overline's line
     std::string family;  // empty: the text element's
 };
 
@@ -119,6 +120,9 @@ std::vector<run> runs_of(const std::string& markup, double pt) {
         if (const auto* a = pango_attr_iterator_get(it.get(), PANGO_ATTR_WEIGHT)) {
             r.bold = reinterpret_cast<const PangoAttrInt*>(a)->value >= PANGO_WEIGHT_SEMIBOLD;
         }
+        if (const auto* a = pango_attr_iterator_get(it.get(), PANGO_ATTR_OVERLINE)) {
+            r.overline = reinterpret_cast<const PangoAttrInt*>(a)->value != PANGO_OVERLINE_NONE;
+        }
         if (const auto* a = pango_attr_iterator_get(it.get(), PANGO_ATTR_FAMILY)) {
             r.family = reinterpret_cast<const PangoAttrString*>(a)->value;
         }
@@ -135,7 +139,7 @@ public:
     /// The label's markup, its scripts placed as the drawing places them.
     void write(const std::string& markup) {
         const script_metrics m;
-        for (const auto& piece : split_scripts(markup)) {
+        for (const auto& piece : split_scripts(engine_.drawn(markup))) {
             if (!piece.base.empty() || (!piece.has_sup && !piece.has_sub)) add(piece.base, size_, 0);
             double sup_width = 0;
             if (piece.has_sup) {
@@ -172,6 +176,7 @@ private:
             if (std::fabs(r.pt - size_) > 1e-9) attributes += " font-size=\"" + svg_number(r.pt) + "\"";
             if (r.italic) attributes += " font-style=\"italic\"";
             if (r.bold) attributes += " font-weight=\"bold\"";
+            if (r.overline) attributes += " text-decoration=\"overline\"";
             if (!r.family.empty()) attributes += " font-family=\"" + css_families(r.family) + "\"";
             raised_ = up;
             dx_ = 0;

@@ -18,36 +18,121 @@ namespace plot {
 
 namespace {
 
-struct symbol {
-    std::string_view name;
-    std::string_view text;
-    bool italic;
+using enum macro_kind;
+constexpr auto ord = math_class::ordinary;
+constexpr auto bin = math_class::binary;
+constexpr auto rel = math_class::relation;
+
+// Lowercase Greek is italic in TeX's math, uppercase upright. TeX has no \omicron, \Alpha,
+// \Beta, ...: those are Latin letters (o, A, B), and LaTeX would refuse the names.
+constexpr tex_macro macro_table[] = {
+    {"alpha", "\u03b1", "\\alpha ", symbol, true},       {"beta", "\u03b2", "\\beta ", symbol, true},
+    {"gamma", "\u03b3", "\\gamma ", symbol, true},       {"delta", "\u03b4", "\\delta ", symbol, true},
+    {"epsilon", "\u03f5", "\\epsilon ", symbol, true},   {"varepsilon", "\u03b5", "\\varepsilon ", symbol, true},
+    {"zeta", "\u03b6", "\\zeta ", symbol, true},         {"eta", "\u03b7", "\\eta ", symbol, true},
+    {"theta", "\u03b8", "\\theta ", symbol, true},       {"vartheta", "\u03d1", "\\vartheta ", symbol, true},
+    {"iota", "\u03b9", "\\iota ", symbol, true},         {"kappa", "\u03ba", "\\kappa ", symbol, true},
+    {"lambda", "\u03bb", "\\lambda ", symbol, true},     {"mu", "\u03bc", "\\mu ", symbol, true},
+    {"nu", "\u03bd", "\\nu ", symbol, true},             {"xi", "\u03be", "\\xi ", symbol, true},
+    {"pi", "\u03c0", "\\pi ", symbol, true},             {"varpi", "\u03d6", "\\varpi ", symbol, true},
+    {"rho", "\u03c1", "\\rho ", symbol, true},           {"varrho", "\u03f1", "\\varrho ", symbol, true},
+    {"sigma", "\u03c3", "\\sigma ", symbol, true},       {"varsigma", "\u03c2", "\\varsigma ", symbol, true},
+    {"tau", "\u03c4", "\\tau ", symbol, true},           {"upsilon", "\u03c5", "\\upsilon ", symbol, true},
+    {"phi", "\u03d5", "\\phi ", symbol, true},           {"varphi", "\u03c6", "\\varphi ", symbol, true},
+    {"chi", "\u03c7", "\\chi ", symbol, true},           {"psi", "\u03c8", "\\psi ", symbol, true},
+    {"omega", "\u03c9", "\\omega ", symbol, true},       {"Gamma", "\u0393", "\\Gamma ", symbol},
+    {"Delta", "\u0394", "\\Delta ", symbol},             {"Theta", "\u0398", "\\Theta ", symbol},
+    {"Lambda", "\u039b", "\\Lambda ", symbol},           {"Xi", "\u039e", "\\Xi ", symbol},
+    {"Pi", "\u03a0", "\\Pi ", symbol},                   {"Sigma", "\u03a3", "\\Sigma ", symbol},
+    {"Upsilon", "\u03a5", "\\Upsilon ", symbol},         {"Phi", "\u03a6", "\\Phi ", symbol},
+    {"Psi", "\u03a8", "\\Psi ", symbol},                 {"Omega", "\u03a9", "\\Omega ", symbol},
+    // Letter-like symbols
+    {"partial", "\u2202", "\\partial ", symbol, true},   {"nabla", "\u2207", "\\nabla ", symbol},
+    {"ell", "\u2113", "\\ell ", symbol},                 {"hbar", "\u210f", "\\hbar ", symbol},
+    {"infty", "\u221e", "\\infty ", symbol},             {"prime", "\u2032", "\\prime ", symbol},
+    {"ldots", "\u2026", "\\ldots ", symbol},             {"dots", "\u2026", "\\dots ", symbol},
+    {"cdots", "\u22ef", "\\cdots ", symbol},             {"lvert", "|", "\\lvert ", symbol},
+    {"rvert", "|", "\\rvert ", symbol},
+    // Binary operators and relations
+    {"cdot", "\u22c5", "\\cdot ", symbol, false, bin},   {"times", "\u00d7", "\\times ", symbol, false, bin},
+    {"pm", "\u00b1", "\\pm ", symbol, false, bin},       {"mp", "\u2213", "\\mp ", symbol, false, bin},
+    {"circ", "\u2218", "\\circ ", symbol, false, bin},   {"le", "\u2264", "\\le ", symbol, false, rel},
+    {"leq", "\u2264", "\\leq ", symbol, false, rel},     {"ge", "\u2265", "\\ge ", symbol, false, rel},
+    {"geq", "\u2265", "\\geq ", symbol, false, rel},     {"ne", "\u2260", "\\ne ", symbol, false, rel},
+    {"neq", "\u2260", "\\neq ", symbol, false, rel},     {"approx", "\u2248", "\\approx ", symbol, false, rel},
+    {"sim", "\u223c", "\\sim ", symbol, false, rel},     {"simeq", "\u2243", "\\simeq ", symbol, false, rel},
+    {"equiv", "\u2261", "\\equiv ", symbol, false, rel}, {"propto", "\u221d", "\\propto ", symbol, false, rel},
+    {"to", "\u2192", "\\to ", symbol, false, rel},       {"rightarrow", "\u2192", "\\rightarrow ", symbol, false, rel},
+    // Functions' names, upright
+    {"sin", "sin", "\\sin ", symbol},     {"cos", "cos", "\\cos ", symbol},     {"tan", "tan", "\\tan ", symbol},
+    {"cot", "cot", "\\cot ", symbol},     {"sinh", "sinh", "\\sinh ", symbol},  {"cosh", "cosh", "\\cosh ", symbol},
+    {"tanh", "tanh", "\\tanh ", symbol},  {"arcsin", "arcsin", "\\arcsin ", symbol},
+    {"arccos", "arccos", "\\arccos ", symbol},  {"arctan", "arctan", "\\arctan ", symbol},
+    {"ln", "ln", "\\ln ", symbol},        {"log", "log", "\\log ", symbol},     {"exp", "exp", "\\exp ", symbol},
+    {"max", "max", "\\max ", symbol},     {"min", "min", "\\min ", symbol},
+    // Spaces
+    {",", "\u2009", "\\,", symbol},  {":", "\u2005", "\\:", symbol},  {">", "\u2005", "\\>", symbol},
+    {";", "\u2005", "\\;", symbol},  {"!", "", "\\!", symbol},         {" ", " ", "\\ ", symbol},
+    {"quad", "\u2003", "\\quad ", symbol},  {"qquad", "\u2003\u2003", "\\qquad ", symbol},
+    // Characters TeX reads as markup, escaped
+    {"{", "{", "\\{", symbol},  {"}", "}", "\\}", symbol},  {"%", "%", "\\%", symbol},  {"$", "$", "\\$", symbol},
+    {"&", "&", "\\&", symbol},  {"#", "#", "\\#", symbol},  {"_", "_", "\\_", symbol},  {"|", "\u2016", "\\|", symbol},
+    // Layout: the markup column says what the drawing shows
+    {"sqrt", "\u221a and a line over x; [n]: n raised before", "\\sqrt", function},
+    {"frac", "a/b in line; a sum in parentheses", "\\frac", function},
+    {"tfrac", "as \\frac", "\\tfrac", function},
+    {"dfrac", "as \\frac", "\\dfrac", function},
+    {"left", "a delimiter: ( ) [ ] \\{ \\} | \\| . (none)", "\\left", function},
+    {"right", "the delimiter closing \\left", "\\right", function},
+    {"big", "its delimiter, at the text's size", "", function},
+    {"Big", "its delimiter, at the text's size", "", function},
+    // Accents: a combining mark after the argument, or an overline
+    {"dot", "\u0307", "\\dot", accent},    {"ddot", "\u0308", "\\ddot", accent},  {"hat", "\u0302", "\\hat", accent},
+    {"bar", "\u0304", "\\bar", accent},    {"tilde", "\u0303", "\\tilde", accent},
+    {"vec", "\u20d7", "\\vec", accent},    {"overline", "", "\\overline", accent},
+    // Faces: the argument as it is, in the face of the Pango tag (empty: upright)
+    {"mathrm", "", "\\mathrm", font},      {"mathit", "i", "\\mathit", font},      {"mathbf", "b", "\\mathbf", font},
+    {"text", "", "\\text", font},          {"textrm", "", "\\textrm", font},       {"operatorname", "", "\\operatorname", font},
 };
 
-// Lowercase Greek is italic in TeX's math, uppercase upright.
-constexpr std::array<symbol, 62> symbols = {{
-    {"alpha", "\u03b1", true},     {"beta", "\u03b2", true},     {"gamma", "\u03b3", true},
-    {"delta", "\u03b4", true},     {"epsilon", "\u03f5", true},  {"varepsilon", "\u03b5", true},
-    {"zeta", "\u03b6", true},      {"eta", "\u03b7", true},      {"theta", "\u03b8", true},
-    {"vartheta", "\u03d1", true},  {"iota", "\u03b9", true},     {"kappa", "\u03ba", true},
-    {"lambda", "\u03bb", true},    {"mu", "\u03bc", true},       {"nu", "\u03bd", true},
-    {"xi", "\u03be", true},        {"pi", "\u03c0", true},       {"rho", "\u03c1", true},
-    {"sigma", "\u03c3", true},     {"tau", "\u03c4", true},      {"upsilon", "\u03c5", true},
-    {"phi", "\u03d5", true},       {"varphi", "\u03c6", true},   {"chi", "\u03c7", true},
-    {"psi", "\u03c8", true},       {"omega", "\u03c9", true},    {"Gamma", "\u0393", false},
-    {"Delta", "\u0394", false},    {"Theta", "\u0398", false},   {"Lambda", "\u039b", false},
-    {"Xi", "\u039e", false},       {"Pi", "\u03a0", false},      {"Sigma", "\u03a3", false},
-    {"Phi", "\u03a6", false},      {"Psi", "\u03a8", false},     {"Omega", "\u03a9", false},
-    {"cdot", "\u22c5", false},     {"times", "\u00d7", false},   {"pm", "\u00b1", false},
-    {"mp", "\u2213", false},       {"le", "\u2264", false},      {"leq", "\u2264", false},
-    {"ge", "\u2265", false},       {"geq", "\u2265", false},     {"approx", "\u2248", false},
-    {"sim", "\u223c", false},      {"infty", "\u221e", false},   {"circ", "\u2218", false},
-    {"prime", "\u2032", false},    {"ldots", "\u2026", false},   {"dots", "\u2026", false},
-    {"to", "\u2192", false},       {"propto", "\u221d", false},  {"partial", "\u2202", true},
-    {"ln", "ln", false},           {"log", "log", false},        {"exp", "exp", false},
-    {"sin", "sin", false},         {"cos", "cos", false},        {"tan", "tan", false},
-    {"lvert", "|", false},         {"rvert", "|", false},
-}};
+/// The row of a macro's name, or null.
+const tex_macro* find_macro(std::string_view name) {
+    for (const auto& m : macro_table) {
+        if (m.name == name) return &m;
+    }
+    return nullptr;
+}
+
+/// Levenshtein distance of two short names.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+/// "unknown macro \\name", and the table's nearest name if one is close.
+std::string unknown_macro(std::string_view name) {
+    std::string out = "unknown macro \\" + std::string(name);
+    const tex_macro* best = nullptr;
+    // One edit for a short name, two for a longer one: farther is a guess, not a typo.
+    std::size_t best_distance = name.size() <= 4 ? 2 : 3;
+    for (const auto& m : macro_table) {
+        if (m.name.size() < 2) continue;
+        const std::size_t d = edit_distance(name, m.name);
+        if (d < best_distance) best = &m, best_distance = d;
+    }
+    if (best) out += " (did you mean \\" + std::string(best->name) + "?)";
+    return out;
+}
 
 /// The code point of the UTF-8 sequence at text[i] and its length, or a length of 0 where
 /// the bytes are not valid UTF-8 (the shortest form, no surrogate, at most U+10FFFF).
@@ -191,35 +276,60 @@ private:
         converter& c_;
     };
 
-    /// Math up to `closing` ('$' or '}'), which is left for the caller. Spaces in the
-    /// source are ignored, as TeX does; binary + and - and the relations get a space each
-    /// side, a sign (unary + or -) none, and nothing in scripts.
-    std::string math(char closing) {
+    /// What an atom was, for the layout around it.
+    struct atom_facts {
+        math_class spacing = math_class::ordinary;  ///< a symbol's class
+        bool group = false;                         ///< a braced group
+        bool sum = false;                           ///< a group with a binary operator or relation at its top
+        bool prime = false;                         ///< a lone ' (LaTeX: a prime on an empty base)
+    };
+
+    /// True at "\right" (a whole macro name).
+    bool at_right() const {
+        return tex_.compare(pos_, 6, "\\right") == 0 &&
+               (pos_ + 6 >= tex_.size() || !std::isalpha(static_cast<unsigned char>(tex_[pos_ + 6])));
+    }
+
+    /// What math() is given to read up to \right: a character no label holds.
+    static constexpr char right_ = '\0';
+
+    /// Math up to `closing` ('$', '}' or ']'), which is left for the caller; with closing
+    /// right_, math up to \right (or the end of the enclosing group, which \left reports).
+    /// Spaces in the source are ignored, as TeX does; binary operators and relations get a
+    /// space each side, a sign (unary + or -) none, and nothing in scripts. `sum` is set if
+    /// a binary operator or relation stands at this level.
+    std::string math(char closing, bool* sum = nullptr) {
         std::string out;
         bool after_operand = false;
         for (;;) {
             skip_space();
             if (pos_ >= tex_.size()) return out;
             const char c = tex_[pos_];
-            if (c == closing) return out;
+            if (c == closing || (closing == right_ && (c == '$' || c == '}' || at_right()))) return out;
             if (c == '$' || c == '}') fail(c == '$' ? "unbalanced $" : "unbalanced }");
-            const bool binary = (c == '+' || c == '-') && after_operand;
-            const bool relation = c == '=' || c == '<' || c == '>';
             std::string item = atom_with_scripts();
-            if ((binary || relation) && script_depth_ == 0 && !latex_) {
-                out += " " + item + " ";
+            math_class spacing = last_.spacing;
+            if (c == '=' || c == '<' || c == '>') spacing = math_class::relation;
+            if (c == '+' || c == '-') spacing = math_class::binary;
+            if (spacing == math_class::binary && !after_operand) spacing = math_class::ordinary;  // a sign
+            if (spacing != math_class::ordinary) {
+                if (sum) *sum = true;
+                out += script_depth_ == 0 && !latex_ ? " " + item + " " : item;
                 after_operand = false;
             } else {
                 out += item;
-                after_operand = !(c == '(' || c == '+' || c == '-' || c == '/' || c == '*' || c == ',');
+                after_operand = !(c == '(' || c == '/' || c == '*' || c == ',' || c == '+' || c == '-');
             }
         }
     }
 
-    /// One atom and the primes and scripts that follow it.
+    /// One atom and the primes and scripts that follow it; last_ keeps the atom's facts.
     std::string atom_with_scripts() {
         std::string base = atom();
-        int primes = 0;
+        const atom_facts facts = last_;
+        // A lone ' is a prime on an empty base: it shares the superscript of the primes and
+        // script after it, which LaTeX would otherwise call a double superscript.
+        int primes = latex_ && facts.prime ? 1 : 0;
         while (pos_ < tex_.size() && tex_[pos_] == '\'') {
             ++primes;
             ++pos_;
@@ -240,35 +350,50 @@ private:
             --script_depth_;
             (is_sub ? has_sub : has_sup) = true;
         }
-        if (latex_) {
-            // TeX's ' is ^\prime: primes and a superscript share one superscript.
-            std::string out = base;
-            if (has_sup) {
-                std::string up;
-                for (int i = 0; i < primes; ++i) up += "\\prime ";
-                out += "^" + script(up + ungrouped(sup));
-            } else {
-                out += std::string(static_cast<std::size_t>(primes), '\'');
-            }
-            if (has_sub) out += "_" + script(ungrouped(sub));
-            return out;
+        last_ = facts;
+        if (primes > 0 || has_sub || has_sup) last_.spacing = math_class::ordinary;
+        if (latex_ && facts.prime && !has_sup) {
+            std::string up;
+            for (int i = 0; i < primes; ++i) up += "\\prime";
+            return "{}^{" + up + "}" + (has_sub ? "_" + script(ungrouped(sub)) : "");
         }
-        std::string out = base;
+        return latex_ ? scripts_latex(base, primes, has_sup ? &sup : nullptr, has_sub ? &sub : nullptr)
+                      : scripts_markup(base, primes, has_sup ? &sup : nullptr, has_sub ? &sub : nullptr);
+    }
+
+    /// A base with primes and scripts, as LaTeX: TeX's ' is ^\prime, so primes and a
+    /// superscript share one superscript.
+    static std::string scripts_latex(std::string out, int primes, const std::string* sup, const std::string* sub) {
+        if (sup) {
+            std::string up;
+            for (int i = 0; i < primes; ++i) up += "\\prime ";
+            out += "^" + script(up + ungrouped(*sup));
+        } else {
+            out += std::string(static_cast<std::size_t>(primes), '\'');
+        }
+        if (sub) out += "_" + script(ungrouped(*sub));
+        return out;
+    }
+
+    /// A base with primes and scripts, as markup or plain text.
+    std::string scripts_markup(std::string out, int primes, const std::string* sup_in, const std::string* sub) const {
+        std::string sup = sup_in ? *sup_in : "";
+        bool has_sup = sup_in != nullptr;
         if (primes > 0) {
             // Computer Modern Unicode has the modifier letter prime (U+02B9), not the prime.
             static const char* const marks[] = {"\u02b9", "\u02b9\u02b9", "\u02b9\u02b9\u02b9"};
             static const char* const plain[] = {"\u2032", "\u2033", "\u2034"};
             if (markup_ && primes <= 3) {
                 // TeX's prime is a superscript: the renderer stacks the subscript under it.
-                sup = marks[primes - 1] + (has_sup ? sup : "");
+                sup = marks[primes - 1] + sup;
                 has_sup = true;
             } else {
-                out += primes <= 3 ? plain[primes - 1] : std::string(primes, '\'');
+                out += primes <= 3 ? plain[primes - 1] : std::string(static_cast<std::size_t>(primes), '\'');
             }
         }
         // ^\circ is the degree sign.
         if (has_sup) out += sup == "\u2218" ? std::string("\u00b0") : wrap("sup", sup);
-        if (has_sub) out += wrap("sub", sub);
+        if (sub) out += wrap("sub", *sub);
         return out;
     }
 
@@ -276,20 +401,28 @@ private:
         while (pos_ < tex_.size() && tex_[pos_] == ' ') ++pos_;
     }
 
-    /// A letter, digit, symbol, macro or braced group.
+    /// A letter, digit, symbol, macro or braced group; last_ tells what it was.
     std::string atom() {
         const nesting level(*this);
+        atom_facts facts;
+        std::string out = atom_body(facts);
+        last_ = facts;
+        return out;
+    }
+
+    std::string atom_body(atom_facts& facts) {
         skip_space();
         if (pos_ >= tex_.size()) fail("incomplete math");
         const char c = tex_[pos_];
         if (c == '{') {
             ++pos_;
-            std::string inner = math('}');
+            std::string inner = math('}', &facts.sum);
             if (pos_ >= tex_.size()) fail("unbalanced {");
             ++pos_;
+            facts.group = true;
             return latex_ ? "{" + inner + "}" : inner;
         }
-        if (c == '\\') return macro();
+        if (c == '\\') return macro(facts);
         if (static_cast<unsigned char>(c) >= 0x80) {
             // UTF-8 passes through whole: a typed ϑ or π is italic like its macro.
             const std::string ch = utf8_character();
@@ -300,7 +433,8 @@ private:
         if (std::isalpha(static_cast<unsigned char>(c))) return italic(std::string(1, c));
         if (latex_) {
             if (std::isdigit(static_cast<unsigned char>(c))) return std::string(1, c);
-            return c == '\'' ? "{}^{\\prime}" : escape(std::string(1, c));
+            facts.prime = c == '\'';
+            return c == '\'' ? "{}" : escape(std::string(1, c));
         }
         if (c == '-') return "\u2212";
         if (c == '*') return "\u2217";
@@ -308,71 +442,134 @@ private:
         return escape(std::string(1, c));
     }
 
-    std::string macro() {
+    /// A macro, looked up in the table: unknown ones are refused, naming the nearest name.
+    std::string macro(atom_facts& facts) {
         ++pos_;  // the backslash
         if (pos_ >= tex_.size()) fail("lone backslash");
-        const char c = tex_[pos_];
-        if (!std::isalpha(static_cast<unsigned char>(c))) {
-            ++pos_;
-            if (latex_) {
-                // The spaces and escaped characters this file knows, and nothing else.
-                static const std::string_view known = ",:>;! {}%$&#_|";
-                if (known.find(c) == std::string_view::npos) fail(std::string("unknown macro \\") + c);
-                return c == ' ' ? "\\ " : std::string("\\") + c;
-            }
-            switch (c) {
-                case ',': return "\u2009";
-                case ':':
-                case '>':
-                case ';': return "\u2005";
-                case '!': return "";
-                case ' ': return " ";
-                case '{':
-                case '}':
-                case '%':
-                case '$':
-                case '&':
-                case '#':
-                case '_': return escape(std::string(1, c));
-                case '|': return "\u2016";
-                default: fail(std::string("unknown macro \\") + c);
-            }
+        std::size_t end = pos_ + 1;
+        if (std::isalpha(static_cast<unsigned char>(tex_[pos_]))) {
+            while (end < tex_.size() && std::isalpha(static_cast<unsigned char>(tex_[end]))) ++end;
         }
-        std::size_t end = pos_;
-        while (end < tex_.size() && std::isalpha(static_cast<unsigned char>(tex_[end]))) ++end;
         const std::string name(tex_.substr(pos_, end - pos_));
         pos_ = end;
-        for (const auto& s : symbols) {
-            if (s.name == name) {
-                if (latex_) return "\\" + std::string(s.name) + " ";
-                return s.italic ? italic(std::string(s.text)) : std::string(s.text);
+        const tex_macro* m = find_macro(name);
+        if (!m) fail(unknown_macro(name));
+        switch (m->kind) {
+            case macro_kind::symbol:
+                facts.spacing = m->spacing;
+                if (latex_) return std::string(m->latex);
+                return m->italic ? italic(escape_markup_or_plain(std::string(m->markup)))
+                                 : escape_markup_or_plain(std::string(m->markup));
+            case macro_kind::accent: return accent(*m);
+            case macro_kind::font: return face(*m);
+            case macro_kind::function: break;
+        }
+        return function(*m);
+    }
+
+    /// \dot{x} and the other accents: a combining mark after the argument (inside the
+    /// italic of the letter it sits on), or an overline.
+    std::string accent(const tex_macro& m) {
+        std::string base = atom();
+        const bool group = last_.group;
+        if (latex_) return std::string(m.latex) + (group ? base : "{" + base + "}");
+        if (m.markup.empty()) return markup_ ? "<span overline=\"single\">" + base + "</span>" : base;
+        const std::string mark(m.markup);
+        const std::string close = "</i>";
+        if (markup_ && base.size() > close.size() && base.ends_with(close)) {
+            return base.insert(base.size() - close.size(), mark);
+        }
+        return base + mark;
+    }
+
+    /// \mathrm{...} and the other faces: the argument as it is, in the face.
+    std::string face(const tex_macro& m) {
+        skip_space();
+        if (pos_ >= tex_.size() || tex_[pos_] != '{') fail("\\" + std::string(m.name) + " needs {...}");
+        const std::size_t close = tex_.find('}', pos_);
+        if (close == std::string_view::npos) fail("unbalanced {");
+        const std::string inner(tex_.substr(pos_ + 1, close - pos_ - 1));
+        pos_ = close + 1;
+        if (latex_) {
+            const bool in_math = m.name != "text" && m.name != "textrm";
+            return std::string(m.latex) + "{" + literal_latex(inner, in_math) + "}";
+        }
+        return m.markup.empty() ? escape_markup_or_plain(inner) : wrap(std::string(m.markup).c_str(), escape_markup_or_plain(inner));
+    }
+
+    /// \sqrt, \frac, \left ... \right, \big.
+    std::string function(const tex_macro& m) {
+        if (m.name == "sqrt") return root(m);
+        if (m.name == "left") return delimited();
+        if (m.name == "right") fail("\\right without \\left");
+        if (m.name == "big" || m.name == "Big") return atom();  // the engine draws delimiters at the text's size
+        return fraction(m);
+    }
+
+    /// The argument's LaTeX inside one pair of braces.
+    std::string braced_latex(const std::string& argument) const {
+        return last_.group ? argument : "{" + argument + "}";
+    }
+
+    /// \sqrt{x} as √ and the radicand under an overline; \sqrt[n]{x} with n raised before.
+    std::string root(const tex_macro& m) {
+        skip_space();
+        std::string index;
+        const bool has_index = pos_ < tex_.size() && tex_[pos_] == '[';
+        if (has_index) {
+            ++pos_;
+            ++script_depth_;
+            index = math(']');
+            --script_depth_;
+            if (pos_ >= tex_.size()) fail("\\sqrt[ without ]");
+            ++pos_;
+        }
+        const std::string body = atom();
+        if (latex_) return std::string(m.latex) + (has_index ? "[" + index + "]" : "") + braced_latex(body);
+        // The index raised before the sign, a thin space clear of what precedes it.
+        const std::string raised = has_index ? "\u2009" + wrap("sup", index) : "";
+        if (markup_) return raised + "\u221a<span overline=\"single\">" + body + "</span>";
+        return raised + "\u221a" + (last_.group ? "(" + body + ")" : body);
+    }
+
+    /// \frac{a}{b} inline as a/b, a or b in parentheses where it is a sum.
+    std::string fraction(const tex_macro& m) {
+        const std::string num = atom();
+        const atom_facts top = last_;
+        const std::string num_latex = braced_latex(num);
+        const std::string den = atom();
+        if (latex_) return std::string(m.latex) + num_latex + braced_latex(den);
+        const auto part = [](const std::string& s, bool sum) { return sum ? "(" + s + ")" : s; };
+        return part(num, top.sum) + "/" + part(den, last_.sum);
+    }
+
+    /// A delimiter of \left or \right: its markup (or plain text) and its LaTeX.
+    std::pair<std::string, std::string> delimiter() {
+        skip_space();
+        if (pos_ < tex_.size()) {
+            const char c = tex_[pos_];
+            if (std::string_view("()[]|.").find(c) != std::string_view::npos) {
+                ++pos_;
+                return {c == '.' ? "" : std::string(1, c), std::string(1, c)};
+            }
+            if (c == '\\' && pos_ + 1 < tex_.size() && std::string_view("{}|").find(tex_[pos_ + 1]) != std::string_view::npos) {
+                const char d = tex_[pos_ + 1];
+                pos_ += 2;
+                return {d == '|' ? "\u2016" : std::string(1, d), std::string("\\") + d};
             }
         }
-        if (latex_ && (name == "dot" || name == "ddot")) return "\\" + name + "{" + atom() + "}";
-        if (name == "dot" || name == "ddot") {
-            // A combining dot or diaeresis, inside the italic of the letter it sits on.
-            std::string base = atom();
-            const std::string mark = name == "dot" ? "\u0307" : "\u0308";
-            const std::string close = "</i>";
-            if (markup_ && base.size() > close.size() && base.ends_with(close)) {
-                return base.insert(base.size() - close.size(), mark);
-            }
-            return base + mark;
-        }
-        if (name == "quad" || name == "qquad") return latex_ ? "\\" + name + " " : name == "quad" ? "\u2003" : "\u2003\u2003";
-        // The engine draws a delimiter at the size of the text: so does the overlay.
-        if (name == "left" || name == "right" || name == "big" || name == "Big") return atom();
-        if (name == "mathrm" || name == "text" || name == "textrm" || name == "operatorname" || name == "mathit") {
-            skip_space();
-            if (pos_ >= tex_.size() || tex_[pos_] != '{') fail("\\" + name + " needs {...}");
-            const std::size_t close = tex_.find('}', pos_);
-            if (close == std::string_view::npos) fail("unbalanced {");
-            const std::string inner(tex_.substr(pos_ + 1, close - pos_ - 1));
-            pos_ = close + 1;
-            if (latex_) return "\\" + name + "{" + literal_latex(inner, name == "mathrm" || name == "mathit" || name == "operatorname") + "}";
-            return name == "mathit" ? italic(escape_markup_or_plain(inner)) : escape_markup_or_plain(inner);
-        }
-        fail("unknown macro \\" + name);
+        fail("\\left and \\right take a delimiter: ( ) [ ] \\{ \\} | \\| or . (none)");
+    }
+
+    /// \left( ... \right): the delimiters at the text's size, as the engine draws them.
+    std::string delimited() {
+        const auto open = delimiter();
+        const std::string inner = math(right_);
+        if (!at_right()) fail("\\left" + open.second + " without \\right");
+        pos_ += 6;
+        const auto close = delimiter();
+        if (latex_) return "\\left" + open.second + inner + "\\right" + close.second;
+        return escape_markup_or_plain(open.first) + inner + escape_markup_or_plain(close.first);
     }
 
     /// A script's LaTeX without the braces of a group, which the script adds again.
@@ -411,6 +608,7 @@ private:
     std::size_t pos_ = 0;
     int script_depth_ = 0;
     int depth_ = 0;
+    atom_facts last_;  // what the last atom was
 };
 
 /// One piece of parsed markup: a character (italic or not) or a script with its contents.
@@ -488,8 +686,10 @@ std::string math_character(const std::string& c, const std::string& whole) {
     for (const auto& [from, to] : extra) {
         if (c == from) return std::string(to);
     }
-    for (const auto& sym : symbols) {
-        if (sym.text == c && static_cast<unsigned char>(sym.text[0]) >= 0x80) return "\\" + std::string(sym.name) + " ";
+    for (const auto& m : macro_table) {
+        if (m.kind == macro_kind::symbol && m.markup == c && static_cast<unsigned char>(m.markup[0]) >= 0x80) {
+            return std::string(m.latex);
+        }
     }
     throw bad_input("label '" + whole + "': no LaTeX for the character '" + c + "'");
 }
@@ -644,6 +844,68 @@ std::string text_problem(std::string_view text, std::size_t max_bytes) {
         i += length;
     }
     return {};
+}
+
+std::span<const tex_macro> tex_macros() { return macro_table; }
+
+namespace {
+
+/// Text for a man page: \ as \e, a leading . or ' kept from being a request, other
+/// characters than ASCII as groff's \[uXXXX].
+std::string roff_text(std::string_view text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto [cp, length] = utf8_at(text, i);
+        if (length == 0) break;
+        i += length;
+        if (cp == '\\') {
+            out += "\\e";
+        } else if (cp == '-') {
+            out += "\\-";
+        } else if (cp < 0x80) {
+            out += static_cast<char>(cp);
+        } else {
+            char code[16];
+            std::snprintf(code, sizeof code, "\\[u%04X]", static_cast<unsigned>(cp));
+            out += code;
+        }
+    }
+    // A tbl cell of only _ or = would be a rule.
+    const bool guard = out.empty() || out[0] == '.' || out[0] == '\'' || out == "_" || out == "=";
+    return guard ? "\\&" + out : out;
+}
+
+/// The spaces of the table, in words.
+constexpr std::pair<std::string_view, std::string_view> spaces[] = {
+    {"", "a negative thin space"}, {" ", "a space"}, {"\u2009", "a thin space, 1/6 em"},
+    {"\u2005", "a medium space, 1/4 em"}, {"\u2003", "a space of 1 em"}, {"\u2003\u2003", "a space of 2 em"}};
+
+/// What the man page says a macro draws.
+std::string man_draws(const tex_macro& m) {
+    switch (m.kind) {
+        case macro_kind::symbol:
+            for (const auto& [space, words] : spaces) {
+                if (m.markup == space) return std::string(words);
+            }
+            return roff_text(m.markup) + (m.italic ? " (italic)" : "");
+        case macro_kind::accent:
+            return m.markup.empty() ? "a line over its argument" : roff_text(std::string("\u25cc") + std::string(m.markup)) + " over its argument";
+        case macro_kind::font:
+            return "its argument as it is, " + std::string(m.markup == "i" ? "italic" : m.markup == "b" ? "bold" : "upright");
+        case macro_kind::function: return roff_text(m.markup);
+    }
+    return {};
+}
+
+}  // namespace
+
+std::string tex_macros_man() {
+    static const char* const kinds[] = {"symbol", "function", "accent", "font"};
+    std::string out = ".TS\nl l l.\nmacro\tkind\tdraws\n_\n";
+    for (const auto& m : macro_table) {
+        out += roff_text("\\" + std::string(m.name)) + "\t" + kinds[static_cast<int>(m.kind)] + "\t" + man_draws(m) + "\n";
+    }
+    return out + ".TE\n";
 }
 
 std::string tex_to_markup(std::string_view tex) { return converter(tex, target::markup).run(); }

@@ -4,6 +4,7 @@
 #include "plot/figure.hpp"
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -20,6 +21,38 @@ inline constexpr std::size_t max_label_bytes = 1000;
 /// one check of every text a spec, style file or command line gives; the reason does not
 /// quote the text.
 std::string text_problem(std::string_view text, std::size_t max_bytes = max_label_bytes);
+
+/// What a macro of a label's math is.
+enum class macro_kind {
+    symbol,    ///< a character or word on its own: \\theta, \\le, \\sin, \\,
+    function,  ///< takes arguments and lays them out: \\sqrt, \\frac, \\left ... \\right
+    accent,    ///< a mark over its argument: \\dot, \\hat, \\overline
+    font,      ///< its argument in another face: \\mathrm, \\mathbf, \\text
+};
+
+/// How TeX spaces a symbol against its neighbours in math.
+enum class math_class {
+    ordinary,  ///< no space: letters, Greek, \\infty
+    binary,    ///< a medium space each side between operands: \\cdot, \\times, \\pm
+    relation,  ///< a thick space each side: \\le, \\approx, \\to
+};
+
+/// One macro a label's math may use: the one table the parser, the LaTeX writer and the
+/// man page's list are made from.
+struct tex_macro {
+    std::string_view name;    ///< without the backslash: "theta", ","
+    std::string_view markup;  ///< symbol: its text; accent: its combining mark (empty: an overline); font: its Pango tag; function: what it draws
+    std::string_view latex;   ///< what the overlay's LaTeX writes for it
+    macro_kind kind;          ///< symbol, function, accent or font
+    bool italic = false;      ///< a symbol set in italic (lowercase Greek)
+    math_class spacing = math_class::ordinary;  ///< a symbol's spacing
+};
+
+/// Every macro of a label's math, in the order of the man page's list.
+std::span<const tex_macro> tex_macros();
+
+/// The man page's list of the macros (tbl(1) rows between .TS and .TE), from tex_macros().
+std::string tex_macros_man();
 
 /// Turns a label written with TeX math in $...$ into Pango markup: plain text outside
 /// the dollars (escaped), and inside them italic letters, Greek letters (\vartheta, \pi,

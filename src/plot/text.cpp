@@ -8,8 +8,10 @@
 
 #include <fontconfig/fontconfig.h>
 #include <sys/stat.h>
+#include <hb.h>
 #include <pango/pangofc-fontmap.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <memory>
@@ -91,7 +93,109 @@ FcConfig* private_font_config() {
     return config;
 }
 
+/// A glyph's outline: its points in order, and how many contours it has.
+struct outline {
+    std::vector<float> points;
+    int contours = 0;
+    bool operator==(const outline&) const = default;
+};
+
+hb_draw_funcs_t* outline_funcs() {
+    static hb_draw_funcs_t* const funcs = [] {
+        hb_draw_funcs_t* f = hb_draw_funcs_create();
+        hb_draw_funcs_set_move_to_func(f, [](hb_draw_funcs_t*, void* d, hb_draw_state_t*, float x, float y, void*) {
+            static_cast<outline*>(d)->points.push_back(NAN);  // a contour starts
+            static_cast<outline*>(d)->points.push_back(x);
+            static_cast<outline*>(d)->points.push_back(y);
+        }, nullptr, nullptr);
+        hb_draw_funcs_set_line_to_func(f, [](hb_draw_funcs_t*, void* d, hb_draw_state_t*, float x, float y, void*) {
+            static_cast<outline*>(d)->points.push_back(x);
+            static_cast<outline*>(d)->points.push_back(y);
+        }, nullptr, nullptr);
+        hb_draw_funcs_set_quadratic_to_func(f, [](hb_draw_funcs_t*, void* d, hb_draw_state_t*, float cx, float cy, float x, float y, void*) {
+            auto* o = static_cast<outline*>(d);
+            o->points.insert(o->points.end(), {cx, cy, x, y});
+        }, nullptr, nullptr);
+        hb_draw_funcs_set_cubic_to_func(f, [](hb_draw_funcs_t*, void* d, hb_draw_state_t*, float c1x, float c1y, float c2x, float c2y, float x, float y, void*) {
+            auto* o = static_cast<outline*>(d);
+            o->points.insert(o->points.end(), {c1x, c1y, c2x, c2y, x, y});
+        }, nullptr, nullptr);
+        hb_draw_funcs_set_close_path_func(f, [](hb_draw_funcs_t*, void* d, hb_draw_state_t*, void*) {
+            ++static_cast<outline*>(d)->contours;
+        }, nullptr, nullptr);
+        hb_draw_funcs_make_immutable(f);
+        return f;
+    }();
+    return funcs;
+}
+
+/// The outline the font draws for a code point; empty if it has no glyph for it.
+outline outline_of(hb_font_t* font, hb_codepoint_t cp) {
+    outline o;
+    hb_codepoint_t glyph = 0;
+    if (!hb_font_get_nominal_glyph(font, cp, &glyph)) return o;
+    hb_font_get_glyph_shape(font, glyph, outline_funcs(), &o);
+    // NaN marks compare unequal: keep them out of the comparison.
+    for (float& v : o.points) {
+        if (std::isnan(v)) v = -1e30f;
+    }
+    return o;
+}
+
 }  // namespace
+
+std::vector<letter_form> distinct_letter_forms(PangoContext* context, const std::string& font_family) {
+    const std::string first = font_family.substr(0, font_family.find(','));
+    font_description_ptr font(pango_font_description_new());
+    pango_font_description_set_family(font.get(), first.c_str());
+    pango_font_description_set_style(font.get(), PANGO_STYLE_ITALIC);
+    pango_font_description_set_size(font.get(), 10 * PANGO_SCALE);
+    gobject_ptr<PangoFont> loaded(pango_context_load_font(context, font.get()));
+    if (!loaded.get()) return {};
+    hb_font_t* hb = pango_font_get_hb_font(loaded.get());
+    if (!hb) return {};
+    const outline theta = outline_of(hb, 0x3b8);
+    const outline vartheta = outline_of(hb, 0x3d1);
+    if (theta.points.empty() || !(theta == vartheta)) return {};
+    // One glyph for both: a closed θ has three contours (its outline and two counters), a
+    // ϑ two. The letter whose shape is missing is drawn by its mathematical italic form.
+    if (theta.contours >= 3) return {{"\u03d1", "<span style=\"normal\">\U0001d717</span>"}};
+    return {{"\u03b8", "<span style=\"normal\">\U0001d703</span>"}};
+}
+
+namespace {
+
+/// The length of the combining marks (U+0300..U+036F, U+20D0..U+20FF) at markup[pos].
+std::size_t combining_marks(const std::string& markup, std::size_t pos) {
+    std::size_t end = pos;
+    for (;;) {
+        const auto byte = [&](std::size_t k) { return end + k < markup.size() ? static_cast<unsigned char>(markup[end + k]) : 0; };
+        if ((byte(0) == 0xcc && byte(1) >= 0x80) || (byte(0) == 0xcd && byte(1) <= 0xaf && byte(1) >= 0x80)) {
+            end += 2;
+        } else if (byte(0) == 0xe2 && byte(1) == 0x83 && byte(2) >= 0x90) {
+            end += 3;
+        } else {
+            return end - pos;
+        }
+    }
+}
+
+}  // namespace
+
+std::string with_letter_forms(std::string markup, const std::vector<letter_form>& forms) {
+    for (const letter_form& f : forms) {
+        // The form is a span; the letter's accents go inside it, onto the form's glyph.
+        const std::size_t close = f.markup.rfind("</");
+        for (std::size_t pos = 0; (pos = markup.find(f.letter, pos)) != std::string::npos;) {
+            const std::size_t marks = combining_marks(markup, pos + f.letter.size());
+            std::string form = f.markup;
+            if (close != std::string::npos) form.insert(close, markup, pos + f.letter.size(), marks);
+            markup.replace(pos, f.letter.size() + marks, form);
+            pos += form.size();
+        }
+    }
+    return markup;
+}
 
 PangoFontMap* thread_font_map() {
     thread_local const gobject_ptr<PangoFontMap> map = [] {

@@ -30,6 +30,21 @@ PangoFontMap* thread_font_map();
 /// `font_family` as that very family (fontconfig substitutes another for a missing one).
 bool first_family_resolves(PangoContext* context, const std::string& font_family);
 
+/// A letter a font draws with another letter's glyph, and the markup that draws it apart.
+struct letter_form {
+    std::string letter;  ///< the UTF-8 letter, as a label's markup holds it
+    std::string markup;  ///< what draws it instead
+};
+
+/// The letters the first family of `font_family` draws alike in italic (Computer Modern
+/// Unicode draws θ as ϑ in its serif and ϑ as θ in its sans), each with the form that draws
+/// it as itself: the Unicode mathematical italic letter (U+1D703 𝜃, U+1D717 𝜗), set upright
+/// since its glyph leans already, from the family or a font fontconfig finds for it.
+std::vector<letter_form> distinct_letter_forms(PangoContext* context, const std::string& font_family);
+
+/// Markup with each letter of `forms` replaced by its form.
+std::string with_letter_forms(std::string markup, const std::vector<letter_form>& forms);
+
 /// The text of Pango markup without its tags and entities, parsed by Pango (for metadata).
 std::string markup_text(const std::string& markup);
 
@@ -76,7 +91,11 @@ public:
         cairo_font_options_set_antialias(options.get(), CAIRO_ANTIALIAS_GRAY);
         pango_cairo_context_set_font_options(context_.get(), options.get());
         check_font_installed();
+        forms_ = distinct_letter_forms(context_.get(), family_);
     }
+
+    /// The markup as this family draws it: letters it would draw alike kept apart.
+    std::string drawn(const std::string& markup) const { return with_letter_forms(markup, forms_); }
 
     /// A label set as TeX sets math: runs of text on the baseline, and after them
     /// superscripts and subscripts at script size, stacked, each a Pango layout.
@@ -234,7 +253,7 @@ private:
         pango_font_description_set_family(font.get(), family_.c_str());
         pango_font_description_set_size(font.get(), static_cast<gint>(std::lround(size * PANGO_SCALE)));
         pango_layout_set_font_description(layout.get(), font.get());
-        const std::string spans = scripts_as_spans(markup, size);
+        const std::string spans = scripts_as_spans(drawn(markup), size);
         // Checked first: Pango would only print a warning and show nothing.
         GError* error = nullptr;
         if (!pango_parse_markup(spans.c_str(), -1, 0, nullptr, nullptr, nullptr, &error)) {
@@ -277,6 +296,7 @@ private:
 
     std::string family_;
     gobject_ptr<PangoContext> context_;
+    std::vector<letter_form> forms_;
     std::map<std::pair<std::string, double>, std::shared_ptr<const text_box>> boxes_;
 };
 
@@ -298,6 +318,9 @@ public:
         const auto b = shaper_->box(markup, size);
         return {b->ink_x0, b->ink_y0, b->ink_x1 - b->ink_x0, b->ink_y1 - b->ink_y0};
     }
+
+    /// The markup as the engine's font draws it (letters it would draw alike kept apart).
+    std::string drawn(const std::string& markup) const { return shaper_->drawn(markup); }
 
     /// Draws markup with its box anchored at (x, y): ax, ay in {0, 0.5, 1} pick the
     /// anchor (left/centre/right, top/middle/bottom). `rotate` turns it by -90 degrees.

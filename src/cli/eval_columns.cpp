@@ -2,6 +2,7 @@
 #include "cli/eval_columns.hpp"
 
 #include <array>
+#include <limits>
 
 namespace pendulum::cli {
 
@@ -44,6 +45,16 @@ constexpr std::array<eval_column, 18> columns = {{
 }  // namespace
 
 std::span<const eval_column> eval_columns() { return columns; }
+
+std::variant<std::string, double> period_error_field(const period_error& e) {
+    switch (e.what) {
+        case period_error::kind::value: return e.value;
+        case period_error::kind::below_limit: return std::string("below_limit");
+        case period_error::kind::not_computed: return std::string("not_computed");
+        case period_error::kind::no_period: break;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
 
 std::string eval_columns_help() {
     std::string out;

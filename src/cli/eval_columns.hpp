@@ -3,11 +3,13 @@
 
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
+#include "pendulum/period_error.hpp"
 
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 
 namespace pendulum::cli {
 
@@ -47,6 +49,10 @@ struct eval_column {
 /// The fixed columns, in order; --order and --method add columns after them. Without
 /// --columns eval writes those that are by_default.
 std::span<const eval_column> eval_columns();
+
+/// A period error as eval writes it: the number T_m/T - 1, "below_limit" under 1e-300,
+/// "not_computed" where no precision resolved it, NaN (an empty field) where there is no period.
+std::variant<std::string, double> period_error_field(const period_error& e);
 
 /// The column list for --help: "theta0 (the amplitude), period_exact (T/T0 exact), ...".
 std::string eval_columns_help();

@@ -6,6 +6,7 @@
 #include "cli/report.hpp"
 #include "cli/table.hpp"
 #include "pendulum/approximants.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/seconds.hpp"
 
@@ -83,11 +84,20 @@ std::pair<std::vector<const eval_column*>, bool> chosen_columns(const eval_optio
 /// The methods of --method, each once.
 std::vector<method_choice> parse_methods(const std::vector<std::string>& given) {
     std::vector<method_choice> methods;
+    int formulas = 0;
+    const auto same = [](const method_choice& a, const method_choice& b) {
+        return a.user || b.user ? a.user && b.user && a.user->text() == b.user->text() : a.text() == b.text();
+    };
     for (const auto& text : list_items(given)) {
         if (text.empty()) throw usage_error("--method: empty value; see 'list' for the methods");
-        const auto m = parse_method_option("--method", text);
-        if (std::none_of(methods.begin(), methods.end(), [&](const method_choice& c) { return c.text() == m.text(); })) {
-            methods.push_back(m);
+        auto m = parse_method_option("--method", text);
+        if (m.user && m.user->uses_t()) {
+            throw usage_error("--method '" + shown_text(text) + "': the formula uses t, a law of motion theta(t) whose "
+                              "period is not defined; eval takes a period formula in theta0 alone (use it with trajectory)");
+        }
+        if (std::none_of(methods.begin(), methods.end(), [&](const method_choice& c) { return same(c, m); })) {
+            if (m.user) m.n = ++formulas;  // formula:1, formula:2 in the order given
+            methods.push_back(std::move(m));
         }
     }
     return methods;
@@ -139,6 +149,18 @@ std::vector<double> method_periods(const amplitude& theta0, const std::vector<in
         periods.push_back(m.row->role == method_role::iterated ? level_period(m.n) : method_period(m, theta0));
     }
     return periods;
+}
+
+/// A row with the formulas' period errors (numbers or "below_limit") after the periods, and
+/// T_s where `seconds` is a number.
+void write_with_errors(table_writer& writer, const std::vector<double>& row, const amplitude& theta0,
+                       const std::vector<method_choice>& methods, double seconds) {
+    std::vector<field> fields(row.begin(), row.end());
+    for (const auto& m : methods) {
+        if (m.user) fields.push_back(period_error_field(method_period_error(m, theta0)));
+    }
+    if (!std::isnan(seconds)) fields.emplace_back(seconds);
+    writer.record(fields);
 }
 
 /// The columns of eval for starts (states or energies), before --order, --method and T_s.
@@ -204,10 +226,15 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     for (const auto* c : fixed) columns.emplace_back(c->name);
     for (int n : orders) columns.push_back("period_order" + std::to_string(n));
     for (const auto& m : methods) columns.push_back("period_" + m.text());
+    for (const auto& m : methods) {
+        if (m.user) columns.push_back("error_" + m.text());  // T_f/T - 1, without cancellation
+    }
     if (seconds) columns.emplace_back(seconds_column);
     // The iteration is computed once per amplitude, to the highest level asked for, and
     // every --order and --method order:N column is read off that one sequence.
     const int highest = highest_level(orders, methods);
+    const bool formulas = std::any_of(methods.begin(), methods.end(), [](const method_choice& m) { return m.user != nullptr; });
+    const double none = std::numeric_limits<double>::quiet_NaN();
     table_writer writer(out, columns, format);
     std::vector<double> row;
     std::vector<int> broken;
@@ -216,8 +243,12 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         row.clear();
         for (const auto* c : fixed) row.push_back(c->value(point));
         for (double x : method_periods(value, orders, methods, highest, broken)) row.push_back(x);
-        if (seconds) row.push_back(period_seconds(*point.exact_period, small_period_s));
-        writer.row(row);
+        if (formulas) {
+            write_with_errors(writer, row, value, methods, seconds ? period_seconds(*point.exact_period, small_period_s) : none);
+        } else {
+            if (seconds) row.push_back(period_seconds(*point.exact_period, small_period_s));
+            writer.row(row);
+        }
         if (!broken.empty()) {
             writer.flush();  // the warning follows its row
             warn_breakdown(value, broken);
@@ -247,7 +278,8 @@ command add_eval_command(CLI::App& app) {
         ->type_name("N")
         ->take_all();
     cmd->add_option("--method", ev->methods,
-                     "Add a column period_NAME for any method of 'list', e.g. kidd-fogg, agm:2, series:3; "
+                     "Add a column period_NAME for any method of 'list', e.g. kidd-fogg, agm:2, series:3, or for a "
+                     "formula, formula:EXPR (columns period_formula:K and error_formula:K, T_f/T - 1); "
                      "repeatable")
         ->type_name("NAME")
         ->take_all();

@@ -6,6 +6,7 @@
 #include "cli/table.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
 #include "pendulum/phase.hpp"
@@ -69,6 +70,34 @@ const time_unit_row& parse_time_unit(const std::string& text) {
         names += (names.empty() ? "" : ", ") + std::string(row.name);
     }
     throw usage_error("--time '" + shown_text(text) + "': the units of time are " + names);
+}
+
+/// The table of a user's theta(t) = f(t, theta0), t = w0 t, at the times asked for; refused
+/// for a state or an energy (the formula starts at rest at its amplitude) and where it is
+/// finite at none of them.
+void write_formula_trajectory(std::ostream& out, table_format format, const method_choice& method,
+                              const start_option& start, bool state, const time_unit_row& unit, long double w0,
+                              const trajectory_options& o, const std::vector<double>& times) {
+    if (state) {
+        throw usage_error("--method " + method.text() + " (a formula theta(t) = f(t, theta0)) starts at rest at its "
+                          "amplitude: give --theta0 alone, not " + start.text);
+    }
+    const double theta0 = start.motion.amplitude().radians();
+    const long double scale = unit.scale(start.motion, w0);
+    const auto time_at = [&](std::size_t i) {
+        return o.at.empty() ? o.periods * static_cast<double>(i) / (o.samples - 1) : times[i];
+    };
+    const std::size_t count = o.at.empty() ? static_cast<std::size_t>(o.samples) : times.size();
+    const auto theta = [&](double s) { return method.user->value(theta0, static_cast<double>(s * scale)); };
+    bool finite = false;
+    for (std::size_t i = 0; i < count && !finite; ++i) finite = std::isfinite(theta(time_at(i)));
+    if (!finite) {
+        throw usage_error("--method " + method.text() + " = '" + method.user->text() +
+                          "' is not finite at any of the times asked for; check the formula");
+    }
+    table_writer writer(out, {std::string(unit.column), "theta"}, format);
+    for (std::size_t i = 0; i < count; ++i) writer.row({time_at(i), theta(time_at(i))});
+    writer.finish();
 }
 
 /// Writes trajectory's table row by row; every input is checked before the first row.
@@ -135,6 +164,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
         }
     }
 
+    if (method.user) return write_formula_trajectory(out, format, method, start, state, unit, w0, o, times);
     const bool is_exact = method.is_exact();
     const amplitude theta0 = m.kind() == regime::libration ? m.amplitude() : amplitude(1.0);
     const fourier_solution approx = is_exact ? fourier_solution{} : method_solution(method, theta0);
@@ -224,7 +254,8 @@ command add_trajectory_command(CLI::App& app) {
     cmd->add_option("--g", tr->g, "Gravity in m/s^2 for --length (default 9.80665)")->type_name("G");
     cmd->add_option("--method", tr->method,
                      "A method with a law of motion: exact (default), harmonic, lowest, first, second, "
-                     "polynomial, or order:N (or order with --order N); see 'list'")
+                     "polynomial, or order:N (or order with --order N); see 'list'; or a formula "
+                     "'formula:theta0*cos(t)', theta(t) in t = w0 t and theta0")
         ->type_name("METHOD");
     auto* order_opt = cmd->add_option("--order", tr->order, "Order N of --method order (0.." +
                                                                 std::to_string(max_order) + ")")

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/panel_support.hpp"
 
+#include "figures/errors.hpp"
 #include "pendulum/angle.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/phase.hpp"
 #include "plot/tex_markup.hpp"
 #include "pendulum/seconds.hpp"
@@ -22,6 +24,14 @@ std::vector<double> grid(double a, double b, int n) {
     v.reserve(static_cast<std::size_t>(n) + 1);
     for (int i = 0; i <= n; ++i) v.push_back(i == n ? b : a + (b - a) * i / n);
     return v;
+}
+
+void check_formula_finite(const pendulum::method_choice& m, const std::vector<double>& xs,
+                          const std::function<double(double)>& value) {
+    if (!m.user || xs.empty() || std::any_of(xs.begin(), xs.end(), [&](double x) { return std::isfinite(value(x)); })) return;
+    throw bad_input("method " + m.text() + " = '" + m.user->text() + "' is not finite anywhere on the panel's axis (from " +
+                    pendulum::format_double(xs.front()) + " to " + pendulum::format_double(xs.back()) +
+                    "); check the formula, or the panel's range");
 }
 
 series_style style_of(const method_spec& m, int index) {
@@ -190,6 +200,12 @@ std::pair<double, double> state_at(const method_spec& m, const pendulum::exact_s
     const double period = 4 * exact.quarter_period();
     if (is_exact(m)) {
         return {exact.theta_at_fraction(w0_t / period), pendulum::velocity_at_fraction(exact, w0_t / period)};
+    }
+    if (m.method.user) {
+        // A user's theta(t) = f(t, theta0); its velocity by a central difference.
+        const double t0 = exact.amplitude();
+        const double h = 1e-5 * std::max(1.0, std::fabs(w0_t));
+        return {m.method.user->value(t0, w0_t), (m.method.user->value(t0, w0_t + h) - m.method.user->value(t0, w0_t - h)) / (2 * h)};
     }
     const auto sol = pendulum::method_solution(m.method, exact.amplitude());
     return {sol.theta(w0_t), pendulum::velocity(sol, w0_t)};

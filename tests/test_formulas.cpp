@@ -170,7 +170,13 @@ TEST(FormulaHostile, HugeExponentsAreInfiniteNotSlow) {
     // 10^10^8 is within MPFR's range but not a double's: infinite, and sin of it is not
     // reduced at millions of bits.
     EXPECT_EQ(formula_period_error(formula("1 + sin(10^10^8)*theta0"), 1.0).what, period_error::kind::no_period);
-    EXPECT_EQ(formula_period_error(formula("besselj(1000, 1e300*theta0) + 1"), 1.0).what, period_error::kind::value);
+    // J_1000 at 1e300 is conditioned like 1e300: its error needs more work than a point may
+    // take, and is not computed (a gap); between |x| = 1e3 and n^2 MPFR's series would take
+    // minutes, and is not tried.
+    EXPECT_EQ(formula_period_error(formula("besselj(1000, 1e300*theta0) + 1"), 1.0).what, period_error::kind::not_computed);
+    EXPECT_EQ(formula_period_error(formula("besselj(1000, 5e5*theta0) + 1"), 1.0).what, period_error::kind::not_computed);
+    EXPECT_EQ(formula_period_error(formula("besselj(1000, 500*theta0) + 1"), 1.0).what, period_error::kind::value);
+    EXPECT_LE(formula_error_seconds(formula("besselj(1000, 5e5*theta0) + 1")), 0.02);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_LT(seconds, 5.0);
 }

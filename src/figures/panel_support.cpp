@@ -38,7 +38,8 @@ series_style style_of(const method_spec& m, int index) {
     series_style s{m.label.empty() ? method_label(m.method) : plot::tex_label(m.label), method_line(m.method),
                    m.method.is_exact() ? marker_style::open_circle : marker_style::none, index, ""};
     // The theme styles a method by name unless the spec says how it looks.
-    if (!m.style && !m.marker) s.style_key = std::string(m.method.row->name);
+    // A user's formula keeps its own line (method_line): no theme style for all formulas alike.
+    if (!m.style && !m.marker && !m.method.user) s.style_key = std::string(m.method.row->name);
     if (m.style) s.line = *m.style;
     if (m.marker) s.marker = *m.marker;
     s.rgb_color = m.color;
@@ -146,6 +147,12 @@ series_style amplitude_style(std::size_t i, const plot::label& label) {
 
 plot::line_style method_line(const pendulum::method_choice& m) {
     if (m.is_exact()) return line_style::none;
+    if (m.user) {
+        // Users' formulas apart from each other in one colour too: formula:K takes the K-th style.
+        static const line_style cycle[] = {line_style::dashed, line_style::dotted, line_style::dash_dot,
+                                           line_style::dash_dot_dot, line_style::solid};
+        return cycle[static_cast<std::size_t>(std::max(m.n - 1, 0)) % 5];
+    }
     if (m.has_motion()) return line_style::solid;
     return line_style::dashed;
 }

@@ -72,4 +72,8 @@ double formula_period(const formula& f, const amplitude& theta0);
 /// not_computed where no precision up to 2304 bits resolves it.
 period_error formula_period_error(const formula& f, const amplitude& theta0);
 
+/// The most seconds one formula_period_error of f is estimated to take (its work is
+/// counted and bounded: where it runs out the error is not_computed), for a render's cost.
+double formula_error_seconds(const formula& f);
+
 }  // namespace pendulum

@@ -77,13 +77,43 @@ mpfr_unary unary_function(op what) {
     }
 }
 
+/// Estimated seconds of one node at `bits` (a deterministic count, not a clock): arithmetic,
+/// an elementary function, and besselj, whose MPFR series costs grow with |n| and |x|.
+double node_seconds(const formula_node& n, mpfr_prec_t bits, double x) {
+    if (!std::isfinite(x)) x = 0;  // no work: the value is not finite either
+    const double scale = static_cast<double>(bits) / 128;
+    switch (n.what) {
+        case op::number: case op::pi: case op::theta0: case op::t: case op::add: case op::sub: case op::mul:
+        case op::div: case op::neg: case op::abs: return 1e-7 * scale;
+        case op::besselj:
+            return 2e-6 * std::pow(scale, 1.5) + 5e-3 * std::abs(n.order) / max_bessel_order * std::min(std::fabs(x), 1e3) / 1e3;
+        case op::sin: case op::cos: case op::tan:
+            // The argument's reduction modulo pi/2 works with its exponent's bits more.
+            return 2e-6 * std::pow(scale * (1 + std::max(0.0, std::log2(std::fabs(x) + 1)) / 64), 1.5);
+        default: return 2e-6 * std::pow(scale, 1.5);
+    }
+}
+
+/// The work one formula_period_error may do, in estimated seconds: past it the error is
+/// not computed (a gap), so that no formula holds a render for long.
+constexpr double work_budget = 0.02;
+
+/// besselj's MPFR series between these |x| costs seconds to minutes for a large |n| (x = 5e5,
+/// n = 1000: over 20 s); there the value is left unresolved. |x| above n^2 is asymptotic and fast.
+bool bessel_too_costly(int n, double x) {
+    const double big = static_cast<double>(n) * n;
+    return std::fabs(x) > 1e3 && std::fabs(x) < big;
+}
+
 class evaluator {
 public:
-    evaluator(const std::vector<formula_node>& nodes, const real& theta0, bool theta0_exact, mpfr_prec_t bits)
-        : nodes_(nodes), theta0_(theta0), theta0_exact_(theta0_exact), bits_(bits) {}
+    evaluator(const std::vector<formula_node>& nodes, const real& theta0, bool theta0_exact, mpfr_prec_t bits, double& work)
+        : nodes_(nodes), theta0_(theta0), theta0_exact_(theta0_exact), bits_(bits), work_(work) {}
 
     mp_value at(int i) const {
         const auto& n = nodes_[static_cast<std::size_t>(i)];
+        if (work_ > work_budget) return {real(std::numeric_limits<double>::quiet_NaN(), bits_), all_lost, false};
+        if (n.what != op::besselj) work_ += node_seconds(n, bits_, 0);
         switch (n.what) {
             case op::number: {
                 real r(bits_);
@@ -155,11 +185,13 @@ private:
 
     mp_value bessel(const formula_node& n) const {
         const mp_value x = at(n.a);
+        const double xd = x.v.to_double();
+        work_ += node_seconds(n, bits_, xd);
+        if (bessel_too_costly(n.order, xd)) return {real(std::numeric_limits<double>::quiet_NaN(), bits_), all_lost, false};
         real r(bits_);
         const bool exact = mpfr_jn(r.get(), n.order, x.v.get(), MPFR_RNDN) == 0 && x.exact;
         if (exact) return {std::move(r), 0, true};
         // x J_n'(x)/J_n(x) = x J_{n-1}(x)/J_n(x) - n, estimated in doubles.
-        const double xd = x.v.to_double();
         const double ratio = std::fabs(xd * jn(n.order - 1, xd) / jn(n.order, xd) - n.order);
         const double cond = std::isfinite(ratio) ? ratio : std::fabs(xd) + std::abs(n.order) + 1;
         const long cost = r.is_zero() && !x.v.is_zero() ? all_lost : static_cast<long>(std::log2(cond + 1)) + 1;
@@ -190,6 +222,9 @@ private:
     }
 
     mp_value trigonometric(op what, const mp_value& x) const {
+        formula_node node;
+        node.what = what;
+        work_ += node_seconds(node, bits_, x.v.to_double());
         if (!mpfr_number_p(x.v.get())) return {real(std::numeric_limits<double>::quiet_NaN(), bits_), x.lost, false};
         if (x.v.is_zero()) return {real(what == op::cos ? 1.0 : 0.0, bits_), x.lost, x.exact};
         real s(bits_);
@@ -238,6 +273,7 @@ private:
     const real& theta0_;
     bool theta0_exact_;
     mpfr_prec_t bits_;
+    double& work_;
 };
 
 /// The amplitude and k' with `bits`, from the exact amplitude (pi - d close to pi where the
@@ -257,8 +293,8 @@ mp_amplitude exact_amplitude(const amplitude& a, mpfr_prec_t bits) {
     return {theta, mp::cos(theta / 2.0), true};
 }
 
-mp_value evaluate_mp(const formula& f, const mp_amplitude& x, mpfr_prec_t bits) {
-    return evaluator(f.nodes(), x.theta, x.exact, bits).at(static_cast<int>(f.nodes().size()) - 1);
+mp_value evaluate_mp(const formula& f, const mp_amplitude& x, mpfr_prec_t bits, double& work) {
+    return evaluator(f.nodes(), x.theta, x.exact, bits, work).at(static_cast<int>(f.nodes().size()) - 1);
 }
 
 /// How many bits of a value computed with `bits` are left after it lost `lost`.
@@ -271,9 +307,9 @@ struct error_at {
     bool finite = true;
 };
 
-error_at error_with(const formula& f, const amplitude& a, mpfr_prec_t bits) {
+error_at error_with(const formula& f, const amplitude& a, mpfr_prec_t bits, double& work) {
     const mp_amplitude x = exact_amplitude(a, bits);
-    const mp_value value = evaluate_mp(f, x, bits);
+    const mp_value value = evaluate_mp(f, x, bits, work);
     const real ratio = value.v * mp::agm(real(1.0, bits), x.kp);  // T_f/T = T_f agm(1, k')
     const bool finite = mpfr_number_p(ratio.get()) != 0;
     // Not finite: whether it is so for certain depends on the bits lost on the way only.
@@ -291,8 +327,10 @@ bool agree(const real& a, const real& b) {
 
 period_error formula_period_error(const formula& f, const amplitude& theta0) {
     std::optional<error_at> previous;
+    double work = 0;
     for (const mpfr_prec_t bits : precisions) {
-        error_at now = error_with(f, theta0, bits);
+        if (work > work_budget) break;
+        error_at now = error_with(f, theta0, bits, work);
         if (!now.finite) {
             // Not finite with bits to spare: the formula has no value here.
             if (now.left > 0) return {period_error::kind::no_period, 0};
@@ -312,13 +350,22 @@ period_error formula_period_error(const formula& f, const amplitude& theta0) {
     return {period_error::kind::not_computed, 0};
 }
 
+double formula_error_seconds(const formula& f) {
+    double seconds = 0;
+    for (const mpfr_prec_t bits : precisions) {
+        for (const auto& n : f.nodes()) seconds += node_seconds(n, bits, 1e3);
+    }
+    return std::min(seconds, work_budget);
+}
+
 double formula_period(const formula& f, const amplitude& theta0) {
     if (!theta0.near_pi() || theta0.exact_radians()) return f.value(theta0.radians());
     // Close to pi from an expression: the double theta0 is rounded, the exact amplitude is not.
     std::optional<double> previous;
+    double work = 0;
     for (const mpfr_prec_t bits : precisions) {
         const mp_amplitude x = exact_amplitude(theta0, bits);
-        const mp_value value = evaluate_mp(f, x, bits);
+        const mp_value value = evaluate_mp(f, x, bits, work);
         const double v = value.v.to_double();
         if (left_bits(bits, value.lost) > 53 && previous && (v == *previous || std::fabs(v - *previous) <= 1e-15 * std::fabs(v))) return v;
         if (!std::isfinite(v) && left_bits(bits, value.lost) > 0) return std::numeric_limits<double>::quiet_NaN();

@@ -326,3 +326,39 @@ TEST(FormulaCli, PlotTakesFormulas) {
     const auto bad = run_cli("plot period --methods 'formula:sqrt(-1 - theta0)' -f svg -o .", dir);
     EXPECT_EQ(bad.status, 2) << bad.err;
 }
+
+TEST(FormulaTrajectory, CommandWritesTheLaw) {
+    const auto r = run_cli("trajectory --theta0 1 --method 'formula:theta0*cos(t)' --at 0,0.5 --time t/T0");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "t_over_T0,theta\n0,1\n0.5," + format_double(std::cos(std::numbers::pi)) + "\n");
+    const auto state = run_cli("trajectory --theta0 1 --omega0 0.1 --method 'formula:theta0*cos(t)' --samples 3");
+    EXPECT_EQ(state.status, 2);
+    EXPECT_NE(state.err.find("starts at rest at its amplitude: give --theta0 alone"), std::string::npos) << state.err;
+    const auto period = run_cli("trajectory --theta0 1 --method 'formula:1/sqrt(cos(theta0/2))' --samples 3");
+    EXPECT_EQ(period.status, 2);
+    EXPECT_NE(period.err.find("gives a period only, not a law of motion"), std::string::npos) << period.err;
+    const auto nowhere = run_cli("trajectory --theta0 1 --method 'formula:sqrt(-1)*t' --samples 3");
+    EXPECT_EQ(nowhere.status, 2);
+    EXPECT_NE(nowhere.err.find("is not finite at any of the times asked for"), std::string::npos) << nowhere.err;
+    EXPECT_EQ(nowhere.out, "");  // nothing partial
+}
+
+TEST(FormulaTrajectory, PanelDrawsTheLaw) {
+    const auto dir = temp_dir("formula_trajectory");
+    write(dir / "t.toml",
+          "[[panel]]\nplot = \"trajectory\"\ntheta0 = \"0.9pi\"\n"
+          "methods = [\"exact\", { formula = \"theta0*cos(t)\", label = \"harmonic, as a formula\" }]\n");
+    const auto r = run_cli("render t.toml -f svg", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(slurp(dir / "t.svg").find("harmonic, as a formula"), std::string::npos);
+    write(dir / "s.toml",
+          "[[panel]]\nplot = \"trajectory\"\nenergy = [1.0]\nmethods = [\"exact\", { formula = \"theta0*cos(t)\" }]\n");
+    const auto s = run_cli("render s.toml -f svg", dir);
+    EXPECT_EQ(s.status, 2);
+    EXPECT_NE(s.err.find("starts at rest at its amplitude: give the panel theta0"), std::string::npos) << s.err;
+    write(dir / "n.toml", "[[panel]]\nplot = \"trajectory\"\ntheta0 = 1.0\nmethods = [{ formula = \"log(-1 - t^2)\" }]\n");
+    const auto n = run_cli("render n.toml -f svg", dir);
+    EXPECT_EQ(n.status, 2);
+    EXPECT_NE(n.err.find("is not finite anywhere on the panel's axis"), std::string::npos) << n.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "n.svg"));
+}

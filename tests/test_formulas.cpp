@@ -362,3 +362,19 @@ TEST(FormulaTrajectory, PanelDrawsTheLaw) {
     EXPECT_NE(n.err.find("is not finite anywhere on the panel's axis"), std::string::npos) << n.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "n.svg"));
 }
+
+TEST(FormulaSpec, NotFiniteSomewhereBreaksTheCurve) {
+    const auto dir = temp_dir("formula_partly");
+    write(dir / "p.toml",
+          "[[panel]]\nplot = \"period\"\nmethods = [\"exact\", { formula = \"1/sqrt(1 - theta0/2)\" }]\n"
+          "[[panel]]\nplot = \"period\"\ny = \"error-log\"\nmethods = [{ formula = \"1/sqrt(1 - theta0/2)\" }]\n");
+    const auto r = run_cli("render p.toml -f svg", dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    // eval: no period where the formula has none (an empty field), and its error empty too.
+    const auto e = run_cli("eval --theta0 1,3 --method 'formula:1/sqrt(1 - theta0/2)' --columns theta0");
+    ASSERT_EQ(e.status, 0) << e.err;
+    const double at_one = 1 / std::sqrt(0.5);
+    EXPECT_EQ(e.out.substr(e.out.find('\n') + 1, 2), "1,");
+    EXPECT_NE(e.out.find("1," + format_double(at_one) + ","), std::string::npos) << e.out;
+    EXPECT_NE(e.out.find("\n3,,\n"), std::string::npos) << e.out;
+}

@@ -59,13 +59,12 @@ std::optional<method_choice> error_column_method(std::string_view name) {
     }
 }
 
-double error_column_value(const method_choice& m, const amplitude& theta0) {
-    const period_error e = method_period_error(m, theta0);
+std::variant<std::string, double> period_error_field(const period_error& e) {
     switch (e.what) {
         case period_error::kind::value: return e.value;
-        case period_error::kind::below_limit: return 0.0;
-        case period_error::kind::no_period:
-        case period_error::kind::not_computed: break;
+        case period_error::kind::below_limit: return std::string("below_limit");
+        case period_error::kind::not_computed: return std::string("not_computed");
+        case period_error::kind::no_period: break;
     }
     return std::numeric_limits<double>::quiet_NaN();
 }

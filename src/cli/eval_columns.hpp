@@ -4,11 +4,13 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/period_error.hpp"
 
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 
 namespace pendulum::cli {
 
@@ -57,10 +59,9 @@ inline constexpr std::string_view error_column_prefix = "err:";
 /// prefix; an unknown method is a usage_error naming it.
 std::optional<method_choice> error_column_method(std::string_view name);
 
-/// An error column's value at theta0: T_m/T - 1 from method_period_error (right to 1e-12
-/// relative), 0 where |T_m/T - 1| < 1e-300, NaN (an empty field, null) where the method has
-/// no period or the iteration's projection did not converge.
-double error_column_value(const method_choice& m, const amplitude& theta0);
+/// A period error as eval writes it in an err:METHOD column: the number T_m/T - 1, "below_limit" under 1e-300,
+/// "not_computed" where no precision resolved it, NaN (an empty field) where there is no period.
+std::variant<std::string, double> period_error_field(const period_error& e);
 
 /// The column list for --help: "theta0 (the amplitude), period_exact (T/T0 exact), ...".
 std::string eval_columns_help();

@@ -6,6 +6,7 @@
 #include "cli/report.hpp"
 #include "cli/table.hpp"
 #include "pendulum/approximants.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/seconds.hpp"
 
@@ -88,11 +89,20 @@ std::pair<std::vector<const eval_column*>, bool> chosen_columns(const eval_optio
 /// The methods of --method, each once.
 std::vector<method_choice> parse_methods(const std::vector<std::string>& given) {
     std::vector<method_choice> methods;
+    int formulas = 0;
+    const auto same = [](const method_choice& a, const method_choice& b) {
+        return a.user || b.user ? a.user && b.user && a.user->text() == b.user->text() : a.text() == b.text();
+    };
     for (const auto& text : list_items(given)) {
         if (text.empty()) throw usage_error("--method: empty value; see 'list' for the methods");
-        const auto m = parse_method_option("--method", text);
-        if (std::none_of(methods.begin(), methods.end(), [&](const method_choice& c) { return c.text() == m.text(); })) {
-            methods.push_back(m);
+        auto m = parse_method_option("--method", text);
+        if (m.user && m.user->uses_t()) {
+            throw usage_error("--method '" + shown_text(text) + "': the formula uses t, a law of motion theta(t) whose "
+                              "period is not defined; eval takes a period formula in theta0 alone (use it with trajectory)");
+        }
+        if (std::none_of(methods.begin(), methods.end(), [&](const method_choice& c) { return same(c, m); })) {
+            if (m.user) m.n = ++formulas;  // formula:1, formula:2 in the order given
+            methods.push_back(std::move(m));
         }
     }
     return methods;
@@ -203,6 +213,11 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     const auto amplitudes = parse_amplitude_values(o.theta0);
     std::vector<method_choice> errors;
     const auto [fixed, seconds] = chosen_columns(o, errors);
+    // A user's formula comes with its error column, err:formula:K (T_f/T - 1 without cancellation).
+    for (const auto& m : methods) {
+        const bool listed = std::any_of(errors.begin(), errors.end(), [&](const method_choice& e) { return e.text() == m.text(); });
+        if (m.user && !listed) errors.push_back(m);
+    }
     // Only the solutions the chosen columns read are computed.
     unsigned needs = seconds ? static_cast<unsigned>(need_exact_period) : 0u;
     for (const auto* c : fixed) needs |= c->needs;
@@ -223,16 +238,19 @@ void eval_stream(std::ostream& out, const eval_options& o) {
         row.clear();
         for (const auto* c : fixed) row.push_back(c->value(point));
         for (double x : method_periods(value, orders, methods, highest, broken)) row.push_back(x);
+        std::vector<field> fields(row.begin(), row.end());
         for (const auto& m : errors) {
-            row.push_back(error_column_value(m, value));
+            const period_error e = method_period_error(m, value);
+            fields.push_back(period_error_field(e));
             // An iteration without a period is said, as for its period's column.
-            const bool iterated = m.row->role == method_role::iterated;
-            if (iterated && std::isnan(row.back()) && std::find(broken.begin(), broken.end(), m.n) == broken.end()) {
+            const bool iterated = !m.user && m.row->role == method_role::iterated;
+            if (iterated && e.what == period_error::kind::no_period &&
+                std::find(broken.begin(), broken.end(), m.n) == broken.end()) {
                 broken.push_back(m.n);
             }
         }
-        if (seconds) row.push_back(period_seconds(*point.exact_period, small_period_s));
-        writer.row(row);
+        if (seconds) fields.emplace_back(period_seconds(*point.exact_period, small_period_s));
+        writer.record(fields);
         if (!broken.empty()) {
             writer.flush();  // the warning follows its row
             warn_breakdown(value, broken);
@@ -262,7 +280,8 @@ command add_eval_command(CLI::App& app) {
         ->type_name("N")
         ->take_all();
     cmd->add_option("--method", ev->methods,
-                     "Add a column period_NAME for any method of 'list', e.g. kidd-fogg, agm:2, series:3; "
+                     "Add a column period_NAME for any method of 'list', e.g. kidd-fogg, agm:2, series:3, or for a "
+                     "formula, formula:EXPR (columns period_formula:K and err:formula:K, T_f/T - 1); "
                      "repeatable")
         ->type_name("NAME")
         ->take_all();

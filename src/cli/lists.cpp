@@ -6,14 +6,20 @@
 namespace pendulum::cli {
 
 std::vector<std::string> split_list(std::string_view text) {
+    // A comma inside parentheses belongs to its item: formula:besselj(1, theta0) is one.
     std::vector<std::string> items;
     std::size_t start = 0;
-    for (;;) {
-        const std::size_t comma = text.find(',', start);
-        items.emplace_back(text.substr(start, comma - start));
-        if (comma == std::string_view::npos) return items;
-        start = comma + 1;
+    long depth = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '(') ++depth;
+        if (text[i] == ')' && depth > 0) --depth;
+        if (text[i] == ',' && depth == 0) {
+            items.emplace_back(text.substr(start, i - start));
+            start = i + 1;
+        }
     }
+    items.emplace_back(text.substr(start));
+    return items;
 }
 
 std::string shown_text(std::string_view text) {

@@ -7,7 +7,8 @@
 
 namespace pendulum::cli {
 
-/// Splits a comma-separated list; empty items are kept so that they can be reported.
+/// Splits a comma-separated list (a comma inside parentheses does not split: "f(a, b)" is one
+/// item); empty items are kept so that they can be reported.
 std::vector<std::string> split_list(std::string_view text);
 
 /// Text from the user as a message quotes it: control characters and NUL as \xNN, so that

@@ -7,6 +7,7 @@
 #include "figures/figure_data.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
 #include "pendulum/phase.hpp"
@@ -79,7 +80,8 @@ constexpr std::size_t max_methods = 8;
 /// The methods of --method, a comma-separated list (order with --order N), each once, each
 /// with a law of motion that applies to the start.
 std::vector<method_choice> trajectory_methods(const trajectory_options& o, bool order_given, const start_option& start) {
-    const auto items = split_list(o.method);
+    // A formula is one method, commas and all (besselj(1, t)).
+    const auto items = o.method.starts_with("formula:") ? std::vector<std::string>{o.method} : split_list(o.method);
     if (items.size() > max_methods) {
         throw usage_error("--method '" + shown_text(o.method) + "': " + std::to_string(items.size()) +
                           " methods; at most " + std::to_string(max_methods) + " in one table");
@@ -254,6 +256,34 @@ std::string json_head(const start_option& start, const std::string& theta0_text,
     return out + "\n ],\n \"rows\": ";
 }
 
+/// The table of a user's theta(t) = f(t, theta0), t = w0 t, at the times asked for; refused
+/// for a state or an energy (the formula starts at rest at its amplitude) and where it is
+/// finite at none of them.
+void write_formula_trajectory(std::ostream& out, table_format format, const method_choice& method,
+                              const start_option& start, bool state, const time_unit_row& unit, long double w0,
+                              const trajectory_options& o, const std::vector<double>& times) {
+    if (state) {
+        throw usage_error("--method " + method.text() + " (a formula theta(t) = f(t, theta0)) starts at rest at its "
+                          "amplitude: give --theta0 alone, not " + start.text);
+    }
+    const double theta0 = start.motion.amplitude().radians();
+    const long double scale = unit.scale(start.motion, w0);
+    const auto time_at = [&](std::size_t i) {
+        return o.at.empty() ? o.periods * static_cast<double>(i) / (o.samples - 1) : times[i];
+    };
+    const std::size_t count = o.at.empty() ? static_cast<std::size_t>(o.samples) : times.size();
+    const auto theta = [&](double s) { return method.user->value(theta0, static_cast<double>(s * scale)); };
+    bool finite = false;
+    for (std::size_t i = 0; i < count && !finite; ++i) finite = std::isfinite(theta(time_at(i)));
+    if (!finite) {
+        throw usage_error("--method " + method.text() + " = '" + method.user->text() +
+                          "' is not finite at any of the times asked for; check the formula");
+    }
+    table_writer writer(out, {std::string(unit.column), "theta"}, format);
+    for (std::size_t i = 0; i < count; ++i) writer.row({time_at(i), theta(time_at(i))});
+    writer.finish();
+}
+
 /// Writes trajectory's table row by row; every input is checked before the first row.
 void trajectory_stream(std::ostream& out, const trajectory_options& o, bool order_given, bool periods_given) {
     const auto format = parse_table_format(o.format);
@@ -283,6 +313,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
                               ": must be greater than 0 and at most " + format_double(max_periods));
         }
     }
+    if (methods.front().user) return write_formula_trajectory(out, format, methods.front(), start, state, unit, w0, o, times);
     const trajectory_context c{m, state, !state && unit.name == "t/T", unit.scale(m, w0),
                                m.start().omega < 0 ? -1 : 1};
     std::deque<method_run> runs;  // in place: a time reducer stays where it is made
@@ -332,7 +363,8 @@ command add_trajectory_command(CLI::App& app) {
     cmd->add_option("--method", tr->method,
                      "Methods with a law of motion, a comma-separated LIST of up to " +
                          std::to_string(max_methods) + ": exact (default), harmonic, lowest, first, second, "
-                         "polynomial, or order:N (or order with --order N); see 'list'")
+                         "polynomial, or order:N (or order with --order N); see 'list'; or alone a formula "
+                         "'formula:theta0*cos(t)', theta(t) in t = w0 t and theta0")
         ->type_name("METHOD");
     auto* order_opt = cmd->add_option("--order", tr->order, "Order N of --method order (0.." +
                                                                 std::to_string(max_order) + ")")

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/panel_support.hpp"
 
+#include "figures/errors.hpp"
 #include "pendulum/angle.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/phase.hpp"
 #include "plot/tex_markup.hpp"
 #include "pendulum/seconds.hpp"
@@ -24,11 +26,20 @@ std::vector<double> grid(double a, double b, int n) {
     return v;
 }
 
+void check_formula_finite(const pendulum::method_choice& m, const std::vector<double>& xs,
+                          const std::function<double(double)>& value) {
+    if (!m.user || xs.empty() || std::any_of(xs.begin(), xs.end(), [&](double x) { return std::isfinite(value(x)); })) return;
+    throw bad_input("method " + m.text() + " = '" + m.user->text() + "' is not finite anywhere on the panel's axis (from " +
+                    pendulum::format_double(xs.front()) + " to " + pendulum::format_double(xs.back()) +
+                    "); check the formula, or the panel's range");
+}
+
 series_style style_of(const method_spec& m, int index) {
     series_style s{m.label.empty() ? method_label(m.method) : plot::tex_label(m.label), method_line(m.method),
                    m.method.is_exact() ? marker_style::open_circle : marker_style::none, index, ""};
     // The theme styles a method by name unless the spec says how it looks.
-    if (!m.style && !m.marker) s.style_key = std::string(m.method.row->name);
+    // A user's formula keeps its own line (method_line): no theme style for all formulas alike.
+    if (!m.style && !m.marker && !m.method.user) s.style_key = std::string(m.method.row->name);
     if (m.style) s.line = *m.style;
     if (m.marker) s.marker = *m.marker;
     s.rgb_color = m.color;
@@ -139,6 +150,12 @@ series_style amplitude_style(std::size_t i, const plot::label& label) {
 
 plot::line_style method_line(const pendulum::method_choice& m) {
     if (m.is_exact()) return line_style::none;
+    if (m.user) {
+        // Users' formulas apart from each other in one colour too: formula:K takes the K-th style.
+        static const line_style cycle[] = {line_style::dashed, line_style::dotted, line_style::dash_dot,
+                                           line_style::dash_dot_dot, line_style::solid};
+        return cycle[static_cast<std::size_t>(std::max(m.n - 1, 0)) % 5];
+    }
     if (m.has_motion()) return line_style::solid;
     return line_style::dashed;
 }
@@ -193,6 +210,12 @@ std::pair<double, double> state_at(const method_spec& m, const pendulum::exact_s
     const double period = 4 * exact.quarter_period();
     if (is_exact(m)) {
         return {exact.theta_at_fraction(w0_t / period), pendulum::velocity_at_fraction(exact, w0_t / period)};
+    }
+    if (m.method.user) {
+        // A user's theta(t) = f(t, theta0); its velocity by a central difference.
+        const double t0 = exact.amplitude();
+        const double h = 1e-5 * std::max(1.0, std::fabs(w0_t));
+        return {m.method.user->value(t0, w0_t), (m.method.user->value(t0, w0_t + h) - m.method.user->value(t0, w0_t - h)) / (2 * h)};
     }
     const auto sol = pendulum::method_solution(m.method, exact.amplitude());
     return {sol.theta(w0_t), pendulum::velocity(sol, w0_t)};

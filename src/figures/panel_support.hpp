@@ -87,6 +87,11 @@ std::string typeset_angle(std::string_view text);
 /// The legend label of a method where the spec gives none: "lowest order", "order 6", ...
 plot::label method_label(const pendulum::method_choice& m);
 
+/// Throws bad_input naming a user's formula (method m) that is finite at none of `xs`
+/// (value(x) is what the panel draws at x); nothing for other methods.
+void check_formula_finite(const pendulum::method_choice& m, const std::vector<double>& xs,
+                          const std::function<double(double)>& value);
+
 /// The line style of a method where neither the spec nor the theme gives one: none (circles)
 /// for the exact solution, solid for laws of motion, dashed for period formulas.
 plot::line_style method_line(const pendulum::method_choice& m);

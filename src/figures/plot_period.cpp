@@ -3,6 +3,7 @@
 #include "figures/plot_builders.hpp"
 
 #include "figures/panel_support.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
@@ -110,6 +111,7 @@ plot::panel period_panel(const panel_context& c, const panel_spec& p) {
     for (std::size_t i = 0; i < p.methods.size(); ++i) {
         const auto& m = p.methods[i];
         const series_style st = style_of(m, static_cast<int>(i));
+        if (m.method.user) check_formula_finite(m.method, curve, [f = m.method.user](double t) { return f->value(t); });
         if (p.y == period_axis::value) {
             const std::function<double(double)> period = [method = m.method, seconds](double t) {
                 return seconds * pendulum::method_period(method, t);

@@ -4,6 +4,7 @@
 
 #include "figures/panel_support.hpp"
 #include "pendulum/exact.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
 #include "pendulum/phase.hpp"
@@ -133,6 +134,12 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
         std::function<double(double)> theta;  // of s = t/T
         if (is_exact(m)) {
             theta = [exact, angle](double s) { return angle * exact.theta_at_fraction(s); };
+        } else if (m.method.user) {
+            // A user's theta(t) = f(t, theta0), t = w0 t.
+            theta = [f = m.method.user, t0 = a.theta0().radians(), period, angle](double s) {
+                return angle * f->value(t0, s * period);
+            };
+            check_formula_finite(m.method, grid(lo, hi, points), [&theta](double s) { return theta(s); });
         } else {
             theta = [solution = pendulum::method_solution(m.method, a.theta0()), period, angle](double s) {
                 return angle * solution.theta(s * period);

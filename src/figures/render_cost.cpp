@@ -4,6 +4,7 @@
 #include "figures/plots.hpp"
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/seconds.hpp"
 
 #include <algorithm>
@@ -122,6 +123,8 @@ constexpr double bytes_per_point = 50;
 
 /// One call of the method's period, or of its error, on an amplitude axis.
 double axis_call(const pendulum::method_choice& m, bool error) {
+    // A user's formula: its nodes in doubles, or its bounded work in MPFR.
+    if (m.user) return error ? pendulum::formula_error_seconds(*m.user) : 1e-8 * static_cast<double>(m.user->nodes().size());
     if (m.row->role == pendulum::method_role::iterated) return at(error ? order_error : order_period, m.n);
     for (const auto& f : fixed_methods) {
         if (f.name == m.row->name) return error ? f.error : f.period;

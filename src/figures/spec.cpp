@@ -7,6 +7,7 @@
 #include "plot/latex_overlay.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/angle.hpp"
+#include "pendulum/formula.hpp"
 #include "pendulum/seconds.hpp"
 
 #include <toml++/toml.h>
@@ -46,7 +47,7 @@ constexpr std::string_view pendulum_keys = "length_m g";
 constexpr std::string_view top_keys = "figure pendulum animation panel";
 constexpr std::string_view animation_keys = "fps periods duration_s speed clock";
 constexpr std::string_view line_keys = "x y label style span";
-constexpr std::string_view method_keys = "method label style color marker";
+constexpr std::string_view method_keys = "method formula label style color marker";
 
 constexpr std::array<std::pair<std::string_view, legend_mode>, 3> legend_modes = {{
     {"first", legend_mode::first},
@@ -77,16 +78,60 @@ constexpr std::array<std::pair<std::string_view, bool>, 2> angle_units = {{
 }};
 
 
+/// Where a user's formula may go: a period formula (in theta0) in period panels, a law of
+/// motion (in t and theta0) in trajectory panels; empty where it fits, else the problem.
+std::string formula_misplaced(const pendulum::method_choice& m, const plot_row& plot) {
+    if (!m.user) return {};
+    if (m.has_motion() && plot.name != "trajectory") {
+        return "formula '" + m.user->text() + "' uses t: it is a law of motion theta(t), whose period is not defined; "
+               "use it in a trajectory panel, or write T/T0 in theta0 alone for a " + std::string(plot.name) + " panel";
+    }
+    if (!m.has_motion() && plot.name != "period") {
+        return "formula '" + m.user->text() + "' is a period T/T0 in theta0; use it in a period panel (plot '" +
+               std::string(plot.name) + "' needs a law of motion theta(t): a formula in t and theta0)";
+    }
+    return {};
+}
+
+/// The method's name: method = "NAME", or formula = "EXPR" (read as "formula:EXPR").
+const toml::node* method_name_node(reader& r, const toml::table& t, const toml::node& n) {
+    const toml::node* name_node = t.get("method");
+    const toml::node* formula_node = t.get("formula");
+    if (name_node && formula_node) {
+        r.problem(*formula_node, "a method table takes method = \"NAME\" or formula = \"EXPR\", not both");
+        return nullptr;
+    }
+    if (!name_node && !formula_node) r.problem(n, "a method table needs method = \"NAME\" or formula = \"EXPR\"");
+    return name_node ? name_node : formula_node;
+}
+
+/// Parses a method's name, reporting a problem (with a guess) at the node.
+std::optional<pendulum::method_choice> read_method_name(reader& r, const toml::node& node, const std::string& text) {
+    try {
+        return pendulum::parse_method(text);
+    } catch (const pendulum::domain_error& e) {
+        std::vector<std::string> names;
+        for (const auto& row : pendulum::method_table()) names.emplace_back(row.name);
+        names.emplace_back("formula");
+        std::string what = e.what();
+        const std::string base = text.substr(0, text.find(':'));
+        if (!contains(names, base)) {
+            if (const auto guess = suggest(base, names); !guess.empty()) what += "; did you mean " + guess + "?";
+        }
+        r.problem(node, what);
+        return std::nullopt;
+    }
+}
+
 std::optional<method_spec> read_method(reader& r, const toml::node& n, const plot_row& plot) {
     method_spec m;
     const toml::node* name_node = &n;
+    bool formula = false;
     if (const auto* t = n.as_table()) {
         r.check_keys(*t, words(method_keys), "a method table");
-        name_node = t->get("method");
-        if (!name_node) {
-            r.problem(n, "a method table needs method = \"NAME\"");
-            return std::nullopt;
-        }
+        name_node = method_name_node(r, *t, n);
+        if (!name_node) return std::nullopt;
+        formula = name_node == t->get("formula");
         if (auto label = r.label(*t, "label")) m.label = *label;
         m.style = r.choice(*t, "style", line_styles);
         m.marker = r.choice(*t, "marker", markers);
@@ -97,20 +142,15 @@ std::optional<method_spec> read_method(reader& r, const toml::node& n, const plo
     }
     const auto* s = name_node->as_string();
     if (!s) {
-        r.problem(*name_node, "a method is a name such as \"exact\" or \"order:6\", or a table with method = NAME");
+        r.problem(*name_node, formula ? "formula = \"EXPR\" takes a string, e.g. \"1/sqrt(cos(theta0/2))\""
+                                      : "a method is a name such as \"exact\" or \"order:6\", or a table with method = NAME");
         return std::nullopt;
     }
-    try {
-        m.method = pendulum::parse_method(s->get());
-    } catch (const pendulum::domain_error& e) {
-        std::vector<std::string> names;
-        for (const auto& row : pendulum::method_table()) names.emplace_back(row.name);
-        std::string what = e.what();
-        const std::string base = s->get().substr(0, s->get().find(':'));
-        if (!contains(names, base)) {
-            if (const auto guess = suggest(base, names); !guess.empty()) what += "; did you mean " + guess + "?";
-        }
-        r.problem(*name_node, what);
+    auto chosen = read_method_name(r, *name_node, formula ? "formula:" + s->get() : s->get());
+    if (!chosen) return std::nullopt;
+    m.method = std::move(*chosen);
+    if (const std::string why = formula_misplaced(m.method, plot); !why.empty()) {
+        r.problem(*name_node, why);
         return std::nullopt;
     }
     if (plot.needs_motion && !m.method.has_motion()) {
@@ -337,6 +377,12 @@ void check_starts(reader& r, const toml::table& t, const panel_spec& p) {
         const std::string what = plain_text(start.label) + " is a " + std::string(row.name) + " (E = " +
                                  pendulum::format_double(start.motion.energy()) + ")";
         for (const auto& m : p.methods) {
+            if (m.method.user) {
+                r.problem(t.get("methods") ? r.at(t.get("methods")->source()) : p.where,
+                          "method '" + m.method.text() + "' (a formula theta(t) = f(t, theta0)) starts at rest at its "
+                          "amplitude: give the panel theta0 = ..., not " + plain_text(start.label));
+                continue;
+            }
             if (m.method.is_exact() || start.motion.kind() == pendulum::regime::libration) continue;
             r.problem(t.get("methods") ? r.at(t.get("methods")->source()) : p.where,
                       "method '" + m.method.text() + "' describes librations only (E < 2), but " + what +
@@ -482,8 +528,12 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
         } else if (const auto* a = n->as_array(); !a || a->empty()) {
             r.problem(*n, "'methods' must be a non-empty list, e.g. [\"exact\", \"lowest\"]");
         } else {
+            int formulas = 0;
             for (const auto& e : *a) {
-                if (auto m = read_method(r, e, *plot)) p.methods.push_back(std::move(*m));
+                auto m = read_method(r, e, *plot);
+                if (!m) continue;
+                if (m->method.user) m->method.n = ++formulas;  // formula:1, formula:2 in panel order
+                p.methods.push_back(std::move(*m));
             }
         }
     }

@@ -25,20 +25,20 @@ period_error closed_form_error(const amplitude& a, int n, precision p, double (*
 
 /// T/T0 of formula F in doubles, as a method table entry.
 template <class F>
-double formula_period(const amplitude& theta0, int n) {
+double closed_form_period(const amplitude& theta0, int n) {
     return F{}(formulas::view_of(theta0), n);
 }
 
 /// T/T0 of formula F in MPFR.
 template <class F>
-mp::real formula_period_mp(const formulas::amplitude_view<mp::real>& x, int n) {
+mp::real closed_form_period_mp(const formulas::amplitude_view<mp::real>& x, int n) {
     return F{}(x, n);
 }
 
 /// T_m/T - 1 of formula F, as a method table entry.
 template <class F>
-period_error formula_period_error(const amplitude& theta0, int n, precision p) {
-    return closed_form_error(theta0, n, p, formula_period<F>, formula_period_mp<F>);
+period_error closed_form_period_error(const amplitude& theta0, int n, precision p) {
+    return closed_form_error(theta0, n, p, closed_form_period<F>, closed_form_period_mp<F>);
 }
 
 }  // namespace pendulum

@@ -8,7 +8,7 @@
 // lookup). Internal to the core library: the installed headers do not include it.
 //
 // A new period formula is one struct here with a templated call operator, and one row of
-// the method table (methods.cpp) naming formula_period<F> and formula_period_error<F>
+// the method table (methods.cpp) naming closed_form_period<F> and closed_form_period_error<F>
 // (formula_methods.hpp).
 #pragma once
 

@@ -5,11 +5,14 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/period_error.hpp"
 
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
 
 namespace pendulum {
+
+class formula;
 
 /// What a method is: the exact solution, one of the paper's closed-form approximants (or
 /// another law of motion), the paper's iteration to order N, or a formula for the period only.
@@ -37,19 +40,21 @@ std::span<const method_row> method_table();
 /// A method chosen by name, with its N where it takes one.
 struct method_choice {
     const method_row* row = nullptr;  ///< the table row
-    int n = -1;                       ///< N, or -1
+    int n = -1;                       ///< N, or -1; for a user's formula its number K (formula:K)
+    std::shared_ptr<const formula> user;  ///< a user's formula ("formula:EXPR"), or null
 
-    /// The name as written: "lowest", "order:6".
+    /// The name as written: "lowest", "order:6"; a user's formula by its number, "formula:1".
     std::string text() const;
     /// True for methods with a law of motion.
     bool has_motion() const { return row->has_motion(); }
     /// True for the exact solution.
     bool is_exact() const { return row->role == method_role::exact; }
     /// The legend label, text with TeX math in $...$: "lowest order", "order 6", ...
-    std::string label() const { return row->label(n); }
+    std::string label() const;
 };
 
-/// Parses NAME or NAME:N; throws domain_error naming the text and listing the methods.
+/// Parses NAME or NAME:N, or formula:EXPR (a user's formula, numbered 1: callers number
+/// several in their order); throws domain_error naming the text and listing the methods.
 method_choice parse_method(std::string_view text);
 
 /// The period ratio T/T0 of the method at amplitude theta0.

@@ -185,7 +185,7 @@ period_error closed_form_error(const amplitude& a, int n, precision p, double (*
 period_error exact_period_error(const amplitude&, int, precision) { return {period_error::kind::value, 0}; }
 
 period_error harmonic_period_error(const amplitude& a, int n, precision p) {
-    return formula_period_error<formulas::harmonic>(a, n, p);
+    return closed_form_period_error<formulas::harmonic>(a, n, p);
 }
 period_error lowest_period_error(const amplitude& a, int n, precision p) {
     return closed_form_error(
@@ -205,7 +205,7 @@ period_error second_period_error(const amplitude& a, int n, precision p) {
 period_error polynomial_period_error(const amplitude& a, int n, precision p) {
     return closed_form_error(
         a, n, p, [](const amplitude& t, int) { return polynomial(t).period_ratio(); },
-        formula_period_mp<formulas::polynomial>);
+        closed_form_period_mp<formulas::polynomial>);
 }
 period_error iterated_period_error(const amplitude& a, int n, precision p) {
     // The double iteration where its own rounding (measured against extended precision) is
@@ -220,25 +220,25 @@ period_error iterated_period_error(const amplitude& a, int n, precision p) {
     return iterated_period_errors(a, n).back();
 }
 period_error kidd_fogg_period_error(const amplitude& a, int n, precision p) {
-    return formula_period_error<formulas::kidd_fogg>(a, n, p);
+    return closed_form_period_error<formulas::kidd_fogg>(a, n, p);
 }
 period_error lima_arun_period_error(const amplitude& a, int n, precision p) {
-    return formula_period_error<formulas::lima_arun>(a, n, p);
+    return closed_form_period_error<formulas::lima_arun>(a, n, p);
 }
 period_error ganley_period_error(const amplitude& a, int n, precision p) {
-    return formula_period_error<formulas::ganley>(a, n, p);
+    return closed_form_period_error<formulas::ganley>(a, n, p);
 }
 period_error agm_period_error(const amplitude& a, int n, precision p) {
-    return closed_form_error(a, n, p, period_agm, formula_period_mp<formulas::agm>);
+    return closed_form_error(a, n, p, period_agm, closed_form_period_mp<formulas::agm>);
 }
 period_error denman_period_error(const amplitude& a, int n, precision p) {
-    return formula_period_error<formulas::denman>(a, n, p);
+    return closed_form_period_error<formulas::denman>(a, n, p);
 }
 period_error series_period_error(const amplitude& a, int n, precision p) {
-    return closed_form_error(a, n, p, period_series, formula_period_mp<formulas::series>);
+    return closed_form_error(a, n, p, period_series, closed_form_period_mp<formulas::series>);
 }
 period_error log_asymptote_period_error(const amplitude& a, int n, precision p) {
-    return formula_period_error<formulas::log_asymptote>(a, n, p);
+    return closed_form_period_error<formulas::log_asymptote>(a, n, p);
 }
 
 }  // namespace pendulum

@@ -310,7 +310,7 @@ void read_file_series(reader& r, const toml::table& t, data_series& d) {
         r.problem(file_node, "'file' = \"" + d.shown_file + "\": " + e.what());
         return;
     }
-    file_problems fp{r, d.shown_file};
+    file_problems fp{r, d.file};
     const data_table table = split_table(text, fp);
     if (fp.any()) return;
     for (const auto& [key, out] : {std::pair{"x", &d.x}, std::pair{"y", &d.y}}) {

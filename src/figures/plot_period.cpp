@@ -125,9 +125,12 @@ void add_residual_curves(plot::panel& panel, const panel_spec& p, double lo, dou
         };
         auto s = make_series(style_of(m, static_cast<int>(i)), curve, residual);
         for (double& v : s.x) v = to_axis_angle(p, v);
-        s.marker = marker_style::none;
-        if (s.line == line_style::none) s.line = line_style::solid;
-        s.style_key.clear();
+        if (s.line == line_style::none) {
+            // The exact period's circles become a line here: a residual is a curve.
+            s.line = line_style::solid;
+            s.marker = marker_style::none;
+            s.style_key.clear();
+        }
         s.curve = amplitude_curve(p, curve.front(), curve.back(), residual);
         panel.data.push_back(std::move(s));
     }

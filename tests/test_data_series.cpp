@@ -4,6 +4,7 @@
 #include "figures/data_series.hpp"
 #include "figures/spec.hpp"
 #include "figures/spec_build.hpp"
+#include "plot/layout.hpp"
 #include "process.hpp"
 
 #include <cairo.h>
@@ -445,4 +446,55 @@ TEST(DataSeries, PlotDataIsOneCommand) {
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("--g '9.8' needs --length"), std::string::npos) << r.err;
     EXPECT_FALSE(files_in(dir).count("x.png"));
+}
+
+// ---------- The plot layer and the themes ----------
+
+TEST(DataSeries, ErrorBarsCountInTheAxisLimits) {
+    plot::series s;
+    s.x = {1, 2};
+    s.y = {1, 1};
+    s.line = plot::line_style::none;
+    s.marker = plot::marker_style::filled_square;
+    const auto plain = plot::axis_ticks(plot::axis{}, {s}, false);
+    s.errors.y_lower = {0.5, 0.1};
+    s.errors.y_upper = {0.1, 2.0};
+    const auto with_bars = plot::axis_ticks(plot::axis{}, {s}, false);
+    EXPECT_GT(plain.lo, 0.5);
+    EXPECT_LE(with_bars.lo, 0.5);
+    EXPECT_GE(with_bars.hi, 3.0);
+    s.errors.x_upper = {0, 4};
+    s.errors.x_lower = {0, 0};
+    EXPECT_GE(plot::axis_ticks(plot::axis{}, {s}, true).hi, 6.0);
+}
+
+TEST(DataSeries, ThemeDataStylesAreChecked) {
+    const auto dir = temp_dir("data-theme");
+    write(dir / "s.toml", period_with("x = [1]\nx_unit = \"rad\"\ny = [1]\ny_unit = \"T/T0\"\n"));
+    auto r = run_cli("render s.toml -f png --set 'data_markers=[\"diamond\", \"triangle\"]' "
+                     "--set 'data_palette=[\"#123456\"]'",
+                     dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    r = run_cli("render s.toml -f svg --set 'data_markers=[\"hexagon\"]'", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("'data_markers' = \"hexagon\" is not one of square, triangle, diamond, dot"), std::string::npos)
+        << r.err;
+    r = run_cli("render s.toml -f svg --set 'data_palette=[\"red\"]'", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("'data_palette' must be a colour"), std::string::npos) << r.err;
+    EXPECT_FALSE(files_in(dir).count("s.svg"));
+}
+
+TEST(DataSeries, HostileLabelsAndFileNamesStayText) {
+    const auto dir = temp_dir("data-hostile-label");
+    // A label is TeX like every other label: a macro the tool does not know is refused.
+    auto p = problems_of(period_with("x = [1]\nx_unit = \"rad\"\ny = [1]\ny_unit = \"T/T0\"\n"
+                                     "label = \"$\\\\input{/etc/passwd}$\"\n"),
+                         dir / "s.toml");
+    EXPECT_NE(p.find("'label': "), std::string::npos) << p;
+    // A file's name as the default label is text: markup characters are escaped.
+    write(dir / "a<b>&c.csv", "x,y\n1,1\n");
+    const auto f = built(period_with("file = \"a<b>&c.csv\"\nx = 1\nx_unit = \"rad\"\ny = 2\ny_unit = \"T/T0\"\n"),
+                         dir / "s.toml");
+    EXPECT_EQ(data_of(f).label.markup, "a&lt;b&gt;&amp;c.csv");
 }

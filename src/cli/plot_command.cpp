@@ -50,7 +50,7 @@ constexpr key_option key_options[] = {
     {"harmonic", false, "--harmonic", "N", value_kind::integer, "Coefficient plots: the harmonic 2k+1 (default 1)"},
     {"harmonics", false, "--harmonics", "N", value_kind::integer, "Spectrum plots: how many odd harmonics"},
     {"orders", false, "--orders", "A,B", value_kind::integer_pair, "Convergence plots: the orders N from A to B"},
-    {"y", false, "--y", "AXIS", value_kind::text, "Period plots: value (default), error-percent or error-log"},
+    {"y", false, "--y", "AXIS", value_kind::text, "Period plots: value (default), error-percent, error-log or residual ((T_meas - T)/T0 of --data)"},
     {"x", false, "--x", "AXIS", value_kind::text,
      "Period plots: against the amplitude (default) or the energy, T/T0 across the separatrix at E = 2"},
     {"angle_unit", false, "--angle-unit", "UNIT", value_kind::text, "Angles on the axes in rad (default) or deg"},

@@ -208,8 +208,11 @@ std::optional<std::size_t> column_index(const data_table& t, const column_choice
     const auto& name = std::get<std::string>(c);
     const auto it = std::find(t.names.begin(), t.names.end(), name);
     if (it != t.names.end()) return static_cast<std::size_t>(it - t.names.begin());
+    // The first few names: a header may have thousands.
+    std::vector<std::string> names(t.names.begin(), t.names.begin() + std::min<std::ptrdiff_t>(12, t.names.size()));
+    if (names.size() < t.names.size()) names.push_back("... (" + std::to_string(t.names.size()) + " in all)");
     fp.add(t.header_line, 1, "'" + std::string(key) + "' = \"" + name + "\": no such column in the header; columns: " +
-                                 listed(t.names));
+                                 listed(names));
     return std::nullopt;
 }
 

@@ -59,7 +59,7 @@ _pendulum_figures() {
             return ;;
         --methods) _pendulum_figures_words "$exe" methods list; return ;;
         --time) COMPREPLY=($(compgen -W "t/T t/T0 t/s" -- "$cur")); return ;;
-        --y) COMPREPLY=($(compgen -W "value error-percent error-log" -- "$cur")); return ;;
+        --y) COMPREPLY=($(compgen -W "value error-percent error-log residual" -- "$cur")); return ;;
         --x) COMPREPLY=($(compgen -W "amplitude energy" -- "$cur")); return ;;
         --angle-unit) COMPREPLY=($(compgen -W "rad deg" -- "$cur")); return ;;
         --separatrix) COMPREPLY=($(compgen -W "true false" -- "$cur")); return ;;
@@ -75,7 +75,7 @@ _pendulum_figures() {
         list) options="--markdown --help --help-all" ;;
         show) options="--theme --help --help-all" ;;
         render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --jobs --help --help-all" ;;
-        plot) options="--theta0 --energy --omega0 --methods --range --time --harmonic --harmonics --orders --y --x --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --help --help-all" ;;
+        plot) options="--theta0 --energy --omega0 --methods --range --time --harmonic --harmonics --orders --y --x --angle-unit --separatrix --trail --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --data --length --g --help --help-all" ;;
         data) options="-o --output --theta0 -f --format --layout --help --help-all" ;;
         describe) options="--alt --help --help-all" ;;
     esac

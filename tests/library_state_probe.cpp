@@ -27,7 +27,7 @@ int main() {
         sum += exact.coefficient_by_quadrature(1) + iterated(theta0, 3).period_ratio() + first_order(theta0).period_ratio();
         sum += motion::from_state({theta0, 0.5}).theta(1.0);
         for (const auto& row : method_table()) {
-            const method_choice m{&row, row.min_n < 0 ? -1 : row.min_n};
+            const method_choice m{&row, row.min_n < 0 ? -1 : row.min_n, nullptr};
             const auto e = method_period_error(m, theta0, precision::correctly_rounded);
             if (e.what == period_error::kind::value) sum += e.value;
         }

@@ -66,7 +66,7 @@ TEST_F(HostHandler, StaysThroughEveryCoreFunction) {
         (void)first_order(theta0);
         (void)motion::from_state({theta0, 0.25}).theta(2.0);
         for (const auto& row : method_table()) {
-            const method_choice m{&row, row.min_n < 0 ? -1 : row.min_n};
+            const method_choice m{&row, row.min_n < 0 ? -1 : row.min_n, nullptr};
             (void)method_period_error(m, theta0);
             (void)method_period_error(m, theta0, precision::correctly_rounded);
         }

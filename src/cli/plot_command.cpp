@@ -50,7 +50,7 @@ constexpr key_option key_options[] = {
     {"harmonic", false, "--harmonic", "N", value_kind::integer, "Coefficient plots: the harmonic 2k+1 (default 1)"},
     {"harmonics", false, "--harmonics", "N", value_kind::integer, "Spectrum plots: how many odd harmonics"},
     {"orders", false, "--orders", "A,B", value_kind::integer_pair, "Convergence plots: the orders N from A to B"},
-    {"y", false, "--y", "AXIS", value_kind::text, "Period plots: value (default), error-percent or error-log"},
+    {"y", false, "--y", "AXIS", value_kind::text, "Period plots: value (default), error-percent, error-log or residual ((T_meas - T)/T0 of --data)"},
     {"x", false, "--x", "AXIS", value_kind::text,
      "Period plots: against the amplitude (default) or the energy, T/T0 across the separatrix at E = 2"},
     {"angle_unit", false, "--angle-unit", "UNIT", value_kind::text, "Angles on the axes in rad (default) or deg"},
@@ -76,6 +76,9 @@ struct plot_options {
     std::optional<double> dpi;
     std::string size;
     std::optional<int> jobs;  // worker threads, as render takes them
+    std::vector<std::string> data;  // --data FILE:X[UNIT],Y[UNIT][,YERR], in order
+    std::string length;             // --length, metres
+    std::string g;                  // --g, m/s^2
 };
 
 /// A TOML string: the text in quotes, with backslashes and quotes escaped.
@@ -151,6 +154,56 @@ std::string toml_value(const key_option& k, const std::string& text, const std::
     throw std::logic_error("unknown option kind");
 }
 
+/// One column of --data, "NAME[UNIT]" or "N[UNIT]": its key (a TOML string or number) and
+/// its unit key, if a unit is given.
+std::string data_column(const std::string& option, const std::string& text, std::string_view key) {
+    std::string name = text;
+    std::string unit;
+    if (const auto open = text.find('['); open != std::string::npos) {
+        if (text.back() != ']' || open == 0) {
+            throw usage_error("--data '" + option + "': a column is NAME or NAME[UNIT], e.g. theta0[deg]");
+        }
+        name = text.substr(0, open);
+        unit = text.substr(open + 1, text.size() - open - 2);
+    }
+    const bool number = !name.empty() && name.find_first_not_of("0123456789") == std::string::npos && name.size() < 10;
+    std::string out = std::string(key) + " = " + (number ? name : toml_string(name)) + "\n";
+    if (!unit.empty() && key != "y_err") out += std::string(key) + "_unit = " + toml_string(unit) + "\n";
+    if (!unit.empty() && key == "y_err") {
+        throw usage_error("--data '" + option + "': the error column takes the unit of y; leave out [" + unit + "]");
+    }
+    return out;
+}
+
+/// --data FILE:X[UNIT],Y[UNIT][,YERR] as a [[panel.data]] table: the columns by header name
+/// or number, their units in brackets, the error symmetric, in y's unit.
+std::string data_table(const std::string& option) {
+    const auto colon = option.rfind(':');
+    if (colon == std::string::npos || colon == 0) {
+        throw usage_error("--data '" + option + "': give FILE:X[UNIT],Y[UNIT][,YERR], e.g. "
+                          "measured.csv:theta0[deg],T[s],dT");
+    }
+    const auto columns = split_list(option.substr(colon + 1));
+    if (columns.size() < 2 || columns.size() > 3) {
+        throw usage_error("--data '" + option + "': give two or three columns after the file, X[UNIT],Y[UNIT][,YERR]");
+    }
+    std::string out = "[[panel.data]]\nfile = " + toml_string(option.substr(0, colon)) + "\n";
+    constexpr std::string_view keys[] = {"x", "y", "y_err"};
+    for (std::size_t i = 0; i < columns.size(); ++i) out += data_column(option, columns[i], keys[i]);
+    return out;
+}
+
+/// --length and --g as a [pendulum] table: seconds on the axes.
+std::string pendulum_table(const plot_options& o) {
+    if (o.length.empty() && o.g.empty()) return "";
+    if (o.length.empty()) throw usage_error("--g '" + o.g + "' needs --length, the pendulum's length in metres");
+    const key_option length{"length_m", false, "--length", "M", value_kind::number, ""};
+    const key_option g{"g", false, "--g", "G", value_kind::number, ""};
+    std::string out = "[pendulum]\nlength_m = " + number_text(length, o.length, false) + "\n";
+    if (!o.g.empty()) out += "g = " + number_text(g, o.g, false) + "\n";
+    return out;
+}
+
 /// The plot command: a one-panel spec made from the options, checked like a spec file.
 int run_plot(const plot_options& o) {
     std::string figure;
@@ -160,6 +213,8 @@ int run_plot(const plot_options& o) {
         if (it == o.values.end()) continue;
         (k.figure ? figure : toml) += std::string(k.key) + " = " + toml_value(k, it->second, o.kind) + "\n";
     }
+    for (const auto& d : o.data) toml += data_table(d);
+    toml = pendulum_table(o) + toml;
     if (!figure.empty()) toml = "[figure]\n" + figure + toml;
     figures::entry e;
     try {
@@ -169,7 +224,9 @@ int run_plot(const plot_options& o) {
         std::string message;
         for (const auto& p : err.problems()) {
             // The spec is made from the options: name the option, not a line of it.
-            message += (message.empty() ? "" : "\n") + std::string("plot ") + o.kind + ": " + p.what;
+            // A data file's problem keeps its FILE:LINE:COLUMN.
+            const std::string what = p.where.file == "plot" ? p.what : p.text();
+            message += (message.empty() ? "" : "\n") + std::string("plot ") + o.kind + ": " + what;
         }
         throw usage_error(message);
     }
@@ -217,6 +274,19 @@ command add_plot_command(CLI::App& app) {
                                           "the theme's)")
         ->type_name("N");
     cmd->add_option("--jobs", po->jobs, jobs_help)->type_name("N");
+    cmd->add_option("--data", po->data,
+                    "Measured data from a CSV or TSV file in the working directory's tree: "
+                    "FILE:X[UNIT],Y[UNIT][,YERR], columns by header name or number, "
+                    "units deg, rad, s, T/T0, t/T0, t/T; at most " +
+                        std::to_string(figures::max_data_rows) + " rows and " +
+                        std::to_string(figures::max_data_file_bytes) + " bytes; repeatable (up to " +
+                        std::to_string(figures::max_data_series_per_panel) + ")")
+        ->type_name("FILE:COLUMNS")
+        ->check(non_empty);
+    cmd->add_option("--length", po->length, "The pendulum's length in metres: periods and times in seconds")
+        ->type_name("M")
+        ->check(non_empty);
+    cmd->add_option("--g", po->g, "Gravity in m/s^2 with --length (default 9.80665)")->type_name("G")->check(non_empty);
     cmd->footer(std::string("\n") + angle_help +
                      "\n\nThe same as a spec with one [[panel]] of these keys; 'show' prints specs to start from.\n\n"
                      "Examples:\n"
@@ -225,7 +295,9 @@ command add_plot_command(CLI::App& app) {
                      "  pendulum-figures plot period --x energy --range 0,4\n"
                      "  pendulum-figures plot phase --theta0 'pi/3,2pi/3,0.99pi' --methods exact,first\n"
                      "  pendulum-figures plot phase --energy 0.5,1.5,2,2.5,3 --angle-unit deg\n"
-                     "  pendulum-figures plot trajectory --theta0 0 --omega0 2.2");
+                     "  pendulum-figures plot trajectory --theta0 0 --omega0 2.2\n"
+                     "  pendulum-figures plot period --methods exact,harmonic --angle-unit deg --length 1 \\\n"
+                     "      --data 'measured.csv:theta0[deg],T[s],dT'");
 
     return {cmd, [po] { return run_plot(*po); }};
 }

@@ -86,6 +86,16 @@ dependencies dependency_files(const render_options& o,
     for (const auto& g : groups) {
         if (!g.first.empty()) add(g.first);
     }
+    // Measured data files of the specs' panels ([[panel.data]]).
+    for (const auto& g : groups) {
+        for (const auto* e : g.second) {
+            for (const auto& panel : e->spec.panels) {
+                for (const auto& d : panel.data) {
+                    if (!d.file.empty()) add(d.file);
+                }
+            }
+        }
+    }
     add(program_file());
     for (const auto& path : outputs) d.outputs.push_back(path.lexically_normal().string());
     d.targets = o.depfile_target.empty() ? d.outputs : std::vector<std::string>{o.depfile_target};

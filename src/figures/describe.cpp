@@ -130,6 +130,7 @@ std::pair<double, double> data_range(const plot::panel& p, bool horizontal) {
 }
 
 std::string how_drawn(const plot::series& s) {
+    if (s.data_slot >= 0) return s.errors.empty() ? "measured points" : "measured points with error bars";
     if (s.line == plot::line_style::none) {
         return s.marker == plot::marker_style::filled_circle ? "dots" : "circles";
     }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/figure_data.hpp"
+#include "pendulum/formula.hpp"
 
 #include "figures/panel_support.hpp"
 #include "figures/plots.hpp"
@@ -104,12 +105,19 @@ axis_numbers axis_of(const plot::axis& a, double lo, double hi) {
     return {text, unit, a.kind == plot::scale::log ? "log" : "linear", lo, hi};
 }
 
-/// A series' uncertainties. The hook for series with error bars: none carry any yet.
-void add_errors(const plot::series& /*s*/, series_numbers& /*out*/) {}
+/// A series' uncertainties, as its error bars draw them.
+void add_errors(const plot::series& s, series_numbers& out) {
+    out.x_err_lower = s.errors.x_lower;
+    out.x_err_upper = s.errors.x_upper;
+    out.y_err_lower = s.errors.y_lower;
+    out.y_err_upper = s.errors.y_upper;
+}
 
-/// The method a series' id names (its repeat suffix dropped), or empty.
+/// The method a series' id names (its repeat suffix dropped), or empty; a user's formula
+/// (formula:K) is found among the panel's methods, measured data (data:K) is none.
 std::string method_of_id(const std::string& id) {
     const std::string name = id.substr(0, id.find('.'));
+    if (name.starts_with("data:") || name.starts_with("formula:")) return "";
     try {
         return pendulum::parse_method(name).text();
     } catch (const std::exception&) {
@@ -117,9 +125,23 @@ std::string method_of_id(const std::string& id) {
     }
 }
 
+/// A user's formula: its text as the method, its T/T0 where the panel has one amplitude.
+void formula_meaning(const panel_spec& p, series_numbers& s) {
+    const std::string name = s.id.substr(0, s.id.find('.'));
+    for (const auto& m : p.methods) {
+        if (!m.method.user || m.method.text() != name) continue;
+        s.method = "formula:" + m.method.user->text();
+        if (p.theta0.size() != 1 || m.method.user->uses_t()) return;
+        s.theta0 = p.theta0.front();
+        const double t = pendulum::method_period(m.method, s.theta0->theta0());
+        if (std::isfinite(t)) s.period = t;
+    }
+}
+
 /// The method, amplitude and period a series of panel spec p stands for, where its id says.
 void add_meaning(const panel_spec& p, series_numbers& s) {
     s.method = method_of_id(s.id);
+    if (s.id.starts_with("formula:")) return formula_meaning(p, s);
     if (s.id.starts_with("theta0:")) {
         const std::size_t i = std::strtoul(s.id.c_str() + 7, nullptr, 10);
         if (i >= 1 && i <= p.theta0.size()) s.theta0 = p.theta0[i - 1];
@@ -208,10 +230,21 @@ figure_numbers numbers_of(const plot::figure& f) {
 
 namespace {
 
-bool any_errors(const figure_numbers& n, bool x) {
+/// The uncertainty columns, by their suffix: "x_err_lower", ...
+struct error_column {
+    const char* suffix;
+    std::vector<double> series_numbers::*values;
+};
+constexpr error_column error_columns[] = {{"x_err_lower", &series_numbers::x_err_lower},
+                                          {"x_err_upper", &series_numbers::x_err_upper},
+                                          {"y_err_lower", &series_numbers::y_err_lower},
+                                          {"y_err_upper", &series_numbers::y_err_upper}};
+
+/// True when some series has the uncertainties of column c.
+bool any_errors(const figure_numbers& n, const error_column& c) {
     for (const auto& p : n.panels) {
         for (const auto& s : p.series) {
-            if (!(x ? s.x_err : s.y_err).empty()) return true;
+            if (!(s.*c.values).empty()) return true;
         }
     }
     return false;
@@ -223,18 +256,21 @@ std::string cell(const std::vector<double>& v, std::size_t i) {
 }
 
 std::string long_csv(const figure_numbers& n) {
-    const bool xe = any_errors(n, true);
-    const bool ye = any_errors(n, false);
+    std::vector<const error_column*> errors;
+    for (const auto& c : error_columns) {
+        if (any_errors(n, c)) errors.push_back(&c);
+    }
     std::ostringstream out;
-    out << "panel,series,x,y,id" << (xe ? ",x_err" : "") << (ye ? ",y_err" : "") << '\n';
+    out << "panel,series,x,y,id";
+    for (const auto* c : errors) out << ',' << c->suffix;
+    out << '\n';
     for (const auto& p : n.panels) {
         for (const auto& s : p.series) {
             const std::string name = csv_field(s.label);
             for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
                 out << p.name << ',' << name << ',' << pendulum::format_double(s.x[i]) << ','
                     << pendulum::format_double(s.y[i]) << ',' << csv_field(s.id);
-                if (xe) out << ',' << cell(s.x_err, i);
-                if (ye) out << ',' << cell(s.y_err, i);
+                for (const auto* c : errors) out << ',' << cell(s.*c->values, i);
                 out << '\n';
             }
         }
@@ -254,8 +290,10 @@ std::string wide_csv(const figure_numbers& n) {
         for (const auto& s : p.series) {
             columns.push_back({wide_column(p.name, s.id, 'x'), &s.x});
             columns.push_back({wide_column(p.name, s.id, 'y'), &s.y});
-            if (!s.x_err.empty()) columns.push_back({wide_column(p.name, s.id, 'x') + "_err", &s.x_err});
-            if (!s.y_err.empty()) columns.push_back({wide_column(p.name, s.id, 'y') + "_err", &s.y_err});
+            for (const auto& c : error_columns) {
+                const auto& v = s.*c.values;
+                if (!v.empty()) columns.push_back({wide_column(p.name, s.id, c.suffix[0]) + c.suffix + 1, &v});
+            }
         }
     }
     std::size_t rows = 0;
@@ -298,8 +336,9 @@ std::string json_series(const panel_numbers& p, const series_numbers& s) {
     out += ",\"columns\":{\"x\":" + json_string(wide_column(p.name, s.id, 'x')) + ",\"y\":" +
            json_string(wide_column(p.name, s.id, 'y')) + "}";
     out += ",\"x\":" + json_array(s.x) + ",\"y\":" + json_array(s.y);
-    if (!s.x_err.empty()) out += ",\"x_err\":" + json_array(s.x_err);
-    if (!s.y_err.empty()) out += ",\"y_err\":" + json_array(s.y_err);
+    for (const auto& c : error_columns) {
+        if (!(s.*c.values).empty()) out += ",\"" + std::string(c.suffix) + "\":" + json_array(s.*c.values);
+    }
     return out + "}";
 }
 

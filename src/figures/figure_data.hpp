@@ -36,8 +36,10 @@ struct series_numbers {
     std::string label;                 ///< its legend text, plain
     std::vector<double> x;             ///< abscissae: a curve's samples, or the series' points
     std::vector<double> y;             ///< ordinates
-    std::vector<double> x_err;         ///< x uncertainties, one per point; empty: none
-    std::vector<double> y_err;         ///< y uncertainties, one per point; empty: none
+    std::vector<double> x_err_lower;   ///< x uncertainties to the left, one per point; empty: none
+    std::vector<double> x_err_upper;   ///< x uncertainties to the right
+    std::vector<double> y_err_lower;   ///< y uncertainties below
+    std::vector<double> y_err_upper;   ///< y uncertainties above
     bool sampled = false;              ///< x and y are a curve's samples (plot::drawn_data)
     bool reference_line = false;       ///< a reference line: its two ends within the panel
     std::string method;                ///< the method's name ("order:6"), where the series is one

@@ -2,6 +2,7 @@
 // The coefficient plot: one Fourier coefficient against the amplitude.
 #include "figures/plot_builders.hpp"
 
+#include "figures/data_series.hpp"
 #include "figures/panel_support.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
@@ -52,6 +53,7 @@ plot::panel coefficient_panel(const panel_context& c, const panel_spec& p) {
         for (double& v : s.x) v = to_axis_angle(p, v);
         panel.data.push_back(std::move(s));
     }
+    add_angle_number_data(panel, p);
     return panel;
 }
 

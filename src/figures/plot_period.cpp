@@ -2,6 +2,7 @@
 // The period plot: T/T0 of each method against the amplitude, or its error.
 #include "figures/plot_builders.hpp"
 
+#include "figures/data_series.hpp"
 #include "figures/panel_support.hpp"
 #include "pendulum/formula.hpp"
 #include "pendulum/exact.hpp"
@@ -86,9 +87,90 @@ plot::panel energy_period_panel(const panel_context& c, const panel_spec& p) {
     return panel;
 }
 
+plot::panel period_curves_panel(const panel_context& c, const panel_spec& p);
+
+/// The period axis' unit: seconds with [pendulum], else T/T0.
+data_unit period_unit(const panel_context& c) {
+    return c.spec.pendulum ? data_unit::seconds : data_unit::period_ratio;
+}
+
+/// The reference of a residual panel: residual_of, or the exact period.
+pendulum::method_choice residual_reference(const panel_spec& p) {
+    return p.residual_of ? *p.residual_of : pendulum::parse_method("exact");
+}
+
+/// The label of the residual axis, (T_meas - T_ref)/T0: measured minus reference, in T0.
+std::string residual_label(const panel_spec& p) {
+    const auto ref = residual_reference(p);
+    const std::string sub = ref.is_exact() ? "" : "<sub>" + plot::escape_markup(ref.text()) + "</sub>";
+    return "(<i>T</i><sub>meas</sub> \u2212 <i>T</i>" + sub + ")/<i>T</i><sub>0</sub>";
+}
+
+/// A residual panel: each method's (T_m - T_ref)/T0 as a curve, the reference itself a zero
+/// line with its legend entry, and the data's residuals (added by the caller).
+void add_residual_curves(plot::panel& panel, const panel_spec& p, double lo, double hi) {
+    const auto ref = residual_reference(p);
+    plot::series zero;
+    zero.label = method_label(ref);
+    zero.x = {to_axis_angle(p, lo), to_axis_angle(p, hi)};
+    zero.y = {0, 0};
+    zero.line = line_style::solid;
+    zero.width_scale = 0.6;
+    panel.data.push_back(std::move(zero));
+    const auto curve = curve_amplitudes(lo, hi);
+    for (std::size_t i = 0; i < p.methods.size(); ++i) {
+        const auto& m = p.methods[i];
+        if (m.method.text() == ref.text()) continue;
+        const std::function<double(double)> residual = [method = m.method, ref](double t) {
+            return pendulum::method_period(method, t) - pendulum::method_period(ref, t);
+        };
+        auto s = make_series(style_of(m, static_cast<int>(i)), curve, residual);
+        for (double& v : s.x) v = to_axis_angle(p, v);
+        if (s.line == line_style::none) {
+            // The exact period's circles become a line here: a residual is a curve.
+            s.line = line_style::solid;
+            s.marker = marker_style::none;
+            s.style_key.clear();
+        }
+        s.curve = amplitude_curve(p, curve.front(), curve.back(), residual);
+        panel.data.push_back(std::move(s));
+    }
+}
+
+/// The panel's measured data on its axes: amplitudes (or energies) across, periods in the
+/// axis' unit, or their residuals from the reference, (T_meas - T_ref)/T0.
+void add_period_data(plot::panel& panel, const panel_context& c, const panel_spec& p) {
+    if (p.data.empty()) return;
+    const double t0 = small_period_seconds_of(c.spec);
+    data_placement at;
+    at.x_factor = [&p, t0](data_unit u) {
+        return p.energy_axis ? 1.0 : unit_factor(u, angle_axis_unit(p), t0, 1.0);
+    };
+    at.y_factor = [&](data_unit u) {
+        if (p.y == period_axis::value) return unit_factor(u, period_unit(c), t0, 1.0);
+        if (p.y == period_axis::residual) return unit_factor(u, data_unit::period_ratio, t0, 1.0);
+        return 1.0;
+    };
+    if (p.y == period_axis::residual) {
+        at.y_offset = [ref = residual_reference(p), degrees = p.degrees](double x) {
+            const double theta = degrees ? x * pi / 180 : x;
+            return -pendulum::method_period(ref, theta);
+        };
+    }
+    add_data_series(panel, p, at);
+}
+
 }  // namespace
 
 plot::panel period_panel(const panel_context& c, const panel_spec& p) {
+    plot::panel panel = period_curves_panel(c, p);
+    add_period_data(panel, c, p);
+    return panel;
+}
+
+namespace {
+
+plot::panel period_curves_panel(const panel_context& c, const panel_spec& p) {
     if (p.energy_axis) return energy_period_panel(c, p);
     const double lo = p.range ? (*p.range)[0] : 0.0;
     const double hi = p.range ? (*p.range)[1] : pi;
@@ -106,6 +188,10 @@ plot::panel period_panel(const panel_context& c, const panel_spec& p) {
             panel.y.kind = plot::scale::log;
             panel.y.max_ticks = 9;
             break;
+        case period_axis::residual:
+            panel.y.label = residual_label(p);
+            add_residual_curves(panel, p, lo, hi);
+            return panel;
     }
     const auto curve = curve_amplitudes(lo, hi);
     for (std::size_t i = 0; i < p.methods.size(); ++i) {
@@ -142,5 +228,7 @@ plot::panel period_panel(const panel_context& c, const panel_spec& p) {
     }
     return panel;
 }
+
+}  // namespace
 
 }  // namespace figures

@@ -2,6 +2,7 @@
 // The phase plot: orbits in the phase plane, one per amplitude.
 #include "figures/plot_builders.hpp"
 
+#include "figures/data_series.hpp"
 #include "figures/panel_support.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
@@ -176,6 +177,7 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
             panel.data.insert(panel.data.begin() + (sign > 0 ? 0 : 1), std::move(s));
         }
     }
+    add_angle_number_data(panel, p);
     return panel;
 }
 

@@ -2,6 +2,8 @@
 // The trajectory plot: theta(t) of each method at one amplitude.
 #include "figures/plot_builders.hpp"
 
+#include "figures/data_series.hpp"
+#include "figures/errors.hpp"
 #include "figures/panel_support.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/formula.hpp"
@@ -23,6 +25,27 @@ using plot::marker_style;
 using std::numbers::pi;
 
 namespace {
+
+/// The panel's measured data: times in the time axis' unit (`period_ratio` is the motion's
+/// T/T0, for times in t/T), angles in the angle axis'.
+void add_trajectory_data(plot::panel& panel, const panel_context& c, const panel_spec& p, double period_ratio) {
+    if (p.data.empty()) return;
+    const double t0 = small_period_seconds_of(c.spec);
+    const data_unit axis = p.time == time_unit::seconds        ? data_unit::seconds
+                           : p.time == time_unit::small_period ? data_unit::small_period
+                                                               : data_unit::period;
+    for (const auto& d : p.data) {
+        if (d.x_unit == data_unit::period && !std::isfinite(period_ratio)) {
+            throw bad_input("data in x_unit = \"t/T\": this panel's motion has no period T; give the times in "
+                            "\"t/T0\" or \"s\"");
+        }
+    }
+    data_placement at;
+    at.x_factor = [=](data_unit u) { return unit_factor(u, axis, t0, period_ratio); };
+    at.y_factor = [&p, t0](data_unit u) { return unit_factor(u, angle_axis_unit(p), t0, 1.0); };
+    add_data_series(panel, p, at);
+}
+
 
 /// w0 t per unit of a start's time axis, and the axis label: the motion's own period T (a
 /// rotation's revolution), T0, or seconds.
@@ -83,6 +106,8 @@ plot::panel start_trajectory_panel(const panel_context& c, const panel_spec& p) 
             plot::parametric_curve(lo, hi, [theta](double x) { return std::pair{x, theta(x)}; }, pieces);
         panel.data.back().sets_limits = is_exact(m);
     }
+    add_trajectory_data(panel, c, p,
+                        start.motion.has_period() ? start.motion.period_ratio() : std::numeric_limits<double>::quiet_NaN());
     return panel;
 }
 
@@ -155,6 +180,7 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
     if (std::any_of(p.methods.begin(), p.methods.end(), [](const auto& m) { return is_exact(m); })) {
         for (std::size_t i = 0; i < p.methods.size(); ++i) panel.data[i].sets_limits = is_exact(p.methods[i]);
     }
+    add_trajectory_data(panel, c, p, exact.period_ratio());
     return panel;
 }
 

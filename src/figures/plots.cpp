@@ -11,16 +11,16 @@ namespace figures {
 namespace {
 
 constexpr std::array<plot_row, 7> plots = {{
-    {"trajectory", "time", "theta(t)", "theta0 energy omega0 methods time range angle_unit",
+    {"trajectory", "time", "theta(t)", "theta0 energy omega0 methods time range angle_unit data",
      "the law of motion theta(t) at one amplitude, energy or state", amplitude_policy::one_per_panel, range_kind::times, true, false,
      trajectory_panel, add_trajectory_frame},
-    {"phase", "theta", "theta'/w0", "theta0 energy omega0 methods separatrix angle_unit",
+    {"phase", "theta", "theta'/w0", "theta0 energy omega0 methods separatrix angle_unit data",
      "orbits in the phase plane, one per amplitude, energy or state", amplitude_policy::list, range_kind::none, true, false,
      phase_panel, add_phase_frame},
-    {"period", "theta0 or E", "T/T0", "methods range y x angle_unit",
+    {"period", "theta0 or E", "T/T0", "methods range y x angle_unit data residual_of",
      "the period against the amplitude (value, error in %, or log |error|) or against the energy across the separatrix", amplitude_policy::none,
      range_kind::amplitudes, false, false, period_panel, nullptr},
-    {"coefficient", "theta0", "c_{2k+1}", "harmonic methods range angle_unit",
+    {"coefficient", "theta0", "c_{2k+1}", "harmonic methods range angle_unit data",
      "one Fourier coefficient against the amplitude", amplitude_policy::none, range_kind::amplitudes, true, false,
      coefficient_panel, nullptr},
     {"convergence", "N", "|T_N/T - 1|", "theta0 orders", "the period error of the iteration against its order N",

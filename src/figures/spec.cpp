@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/spec.hpp"
 
+#include "figures/data_reader.hpp"
 #include "figures/input_file.hpp"
 #include "figures/panel_support.hpp"
 #include "figures/toml_reader.hpp"
@@ -61,10 +62,11 @@ constexpr std::array<std::pair<std::string_view, time_unit>, 3> time_units = {{
     {"t/s", time_unit::seconds},
 }};
 
-constexpr std::array<std::pair<std::string_view, period_axis>, 3> period_axes = {{
+constexpr std::array<std::pair<std::string_view, period_axis>, 4> period_axes = {{
     {"value", period_axis::value},
     {"error-percent", period_axis::error_percent},
     {"error-log", period_axis::error_log},
+    {"residual", period_axis::residual},
 }};
 
 constexpr std::array<std::pair<std::string_view, bool>, 2> period_x_axes = {{
@@ -418,6 +420,17 @@ void check_energy_axis(reader& r, const toml::table& t, const panel_spec& p) {
     }
 }
 
+/// residual_of = "METHOD": the reference of a residual panel (any method; default exact).
+void read_residual_of(reader& r, const toml::table& t, panel_spec& p) {
+    const toml::node* n = t.get("residual_of");
+    if (!n) return;
+    if (p.y != period_axis::residual) {
+        r.problem(*n, "'residual_of' is the reference of a residual panel: give it with y = \"residual\"");
+        return;
+    }
+    if (auto read = read_method(r, *n, *p.plot)) p.residual_of = read->method;
+}
+
 /// Reports every empty list under `n` (the value of `key`), the lists of [[panel.line]]
 /// tables too: no list key of any panel means anything empty. True if there was one.
 bool empty_lists(reader& r, const toml::node& n, std::string_view key) {
@@ -511,7 +524,9 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
     if (x_axis) p.energy_axis = *x_axis;
     // Starts (even ones refused above) and the energy axis take the exact method by default;
     // so does a panel whose x axis was refused, which is reported once.
-    const bool exact_by_default = t.get("energy") || t.get("omega0") || p.energy_axis || (t.get("x") && !x_axis);
+    const auto y_axis = r.choice(t, "y", period_axes);
+    const bool exact_by_default = t.get("energy") || t.get("omega0") || p.energy_axis || (t.get("x") && !x_axis) ||
+                                  y_axis == period_axis::residual;
     if (plot->name == "period" && t.get("energy")) {
         r.problem(*t.get("energy"), "a period panel draws T/T0 against the energy with x = \"energy\" (and range = "
                                     "[0, 4], say), not with energy = ...");
@@ -579,7 +594,8 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
             p.paper_file = *v;
         }
     }
-    if (auto v = r.choice(t, "y", period_axes)) p.y = *v;
+    if (y_axis) p.y = *y_axis;
+    read_residual_of(r, t, p);
     if (auto v = r.integer(t, "harmonic", 1, 99)) {
         if (*v % 2 == 0) {
             r.problem(*t.get("harmonic"), "'harmonic' must be odd (1, 3, 5, ...): the even coefficients vanish");
@@ -626,6 +642,7 @@ std::optional<panel_spec> read_panel(reader& r, const toml::table& t, const figu
             }
         }
     }
+    read_panel_data(r, t, f, p);
     check_costs(r, t, f, p);
     check_starts(r, t, p);
     if (p.energy_axis) check_energy_axis(r, t, p);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "figures/data_series.hpp"
 #include "figures/errors.hpp"
 #include "figures/plots.hpp"
 #include "pendulum/methods.hpp"
@@ -85,8 +86,9 @@ struct reference_line {
 /// The time axis of trajectory and phase panels.
 enum class time_unit { period, small_period, seconds };
 
-/// What a period panel's y axis shows.
-enum class period_axis { value, error_percent, error_log };
+/// What a period panel's y axis shows: the period, a method's error, or the residuals of
+/// measured data and methods from a reference, (T - T_ref)/T0.
+enum class period_axis { value, error_percent, error_log, residual };
 
 /// Which panels carry a legend.
 enum class legend_mode { first, each, none };
@@ -114,6 +116,8 @@ struct panel_spec {
     bool separatrix = false;                     ///< phase panels: draw the separatrix
     bool degrees = false;                        ///< angle axes in degrees
     std::vector<reference_line> lines;           ///< reference lines
+    std::vector<data_series> data;               ///< measured data ([[panel.data]])
+    std::optional<pendulum::method_choice> residual_of;  ///< y = "residual": the reference; default exact
 };
 
 /// The physical pendulum, when a spec gives one.

@@ -76,8 +76,8 @@ constexpr std::array<std::pair<std::string_view, plot::svg_size_unit>, 3> svg_si
     {{"pt", plot::svg_size_unit::pt}, {"px", plot::svg_size_unit::px}, {"viewbox", plot::svg_size_unit::viewbox}}};
 
 std::vector<std::string> all_keys() {
-    std::vector<std::string> keys = {"base",    "description", "font_family", "palette",
-                                     "styles",  "size_px",     "svg_text",    "svg_size"};
+    std::vector<std::string> keys = {"base",    "description", "font_family", "palette",      "styles",
+                                     "size_px", "svg_text",    "svg_size",    "data_palette", "data_markers"};
     for (const auto& k : number_keys) keys.emplace_back(k.name);
     for (const auto& k : color_keys) keys.emplace_back(k.name);
     for (const auto& k : flag_keys) keys.emplace_back(k.name);
@@ -119,6 +119,36 @@ std::variant<std::pair<int, int>, std::string> parse_size_px(const std::string& 
         }
     }
     return std::pair{w, h};
+}
+
+/// Markers of measured data: the filled shapes (the methods' circles stay theirs).
+constexpr std::array<std::pair<std::string_view, plot::marker_style>, 4> data_marker_names = {{
+    {"square", plot::marker_style::filled_square},
+    {"triangle", plot::marker_style::filled_triangle},
+    {"diamond", plot::marker_style::filled_diamond},
+    {"dot", plot::marker_style::filled_circle},
+}};
+
+/// data_palette and data_markers: the colours and markers measured data series take in turn.
+void read_data_style(reader& r, const toml::table& doc, plot::theme& t) {
+    if (const toml::node* n = doc.get("data_palette")) {
+        const auto* a = n->as_array();
+        std::vector<plot::rgb> palette;
+        for (std::size_t i = 0; a && i < a->size(); ++i) {
+            if (auto c = color(r, *a->get(i), "data_palette")) palette.push_back(*c);
+        }
+        if (!a || a->empty()) r.problem(*n, "'data_palette' must be a list of colours \"#rrggbb\"");
+        if (a && !a->empty() && palette.size() == a->size()) t.data_palette = std::move(palette);
+    }
+    if (const toml::node* n = doc.get("data_markers")) {
+        const auto* a = n->as_array();
+        std::vector<plot::marker_style> shapes;
+        for (std::size_t i = 0; a && i < a->size(); ++i) {
+            if (auto m = r.choice_of(*a->get(i), "data_markers", data_marker_names)) shapes.push_back(*m);
+        }
+        if (!a || a->empty()) r.problem(*n, "'data_markers' must be a list of square, triangle, diamond or dot");
+        if (a && !a->empty() && shapes.size() == a->size()) t.data_markers = std::move(shapes);
+    }
 }
 
 /// Applies the keys of one style file (or --set line) to `t`.
@@ -176,6 +206,7 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
             if (palette.size() == a->size()) t.palette = std::move(palette);
         }
     }
+    read_data_style(r, doc, t);
     if (const toml::node* n = doc.get("styles")) {
         const auto* styles = n->as_table();
         if (!styles) {

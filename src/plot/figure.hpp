@@ -48,7 +48,23 @@ struct label {
 enum class line_style { none, solid, dashed, dotted, dash_dot, dash_dot_dot };
 
 /// How a series' points are marked.
-enum class marker_style { none, open_circle, filled_circle };
+enum class marker_style { none, open_circle, filled_circle, filled_square, filled_triangle, filled_diamond };
+
+/// A series' error bars: distances below and above each point (>= 0), per point or empty
+/// for none; each vector is empty or as long as the series' x.
+struct error_bars {
+    std::vector<double> x_lower{};  ///< to the left of each point
+    std::vector<double> x_upper{};  ///< to the right
+    std::vector<double> y_lower{};  ///< below each point
+    std::vector<double> y_upper{};  ///< above
+
+    /// True when no point has a bar.
+    bool empty() const { return x_lower.empty() && x_upper.empty() && y_lower.empty() && y_upper.empty(); }
+};
+
+/// The ends of point i's bars along x (horizontal) or y: [v - lower, v + upper].
+std::pair<double, double> error_span(const std::vector<double>& v, const std::vector<double>& lower,
+                                     const std::vector<double>& upper, std::size_t i);
 
 /// A hash of a curve's parameter: its bits, mixed (std::hash<double> hashes them byte by
 /// byte, a tenth of a sampling's work); 0 and -0, equal, hash alike.
@@ -127,6 +143,10 @@ struct series {
     double width_scale = 1.0;               ///< line width in units of the theme's
     double alpha = 1.0;                     ///< opacity, 0 (invisible) to 1
     bool overlay = false;                   ///< moves from frame to frame: drawn in the overlay pass
+    plot::error_bars errors{};              ///< error bars with caps, in the series' colour
+    /// Measured data: its place among its panel's data series (0, 1, ...), which picks its
+    /// marker and colour from the theme's data_markers and data_palette; -1 for other series.
+    int data_slot = -1;
 };
 
 /// Axis scale.

@@ -38,6 +38,42 @@ bool clip_segment(double& x0, double& y0, double& x1, double& y1, const rect& r)
     return true;
 }
 
+std::pair<double, double> error_span(const std::vector<double>& v, const std::vector<double>& lower,
+                                     const std::vector<double>& upper, std::size_t i) {
+    const double lo = i < lower.size() ? lower[i] : 0.0;
+    const double hi = i < upper.size() ? upper[i] : 0.0;
+    return {v[i] - lo, v[i] + hi};
+}
+
+namespace {
+
+/// The error bars of a series' finite points, in device coordinates (a bar with an end off
+/// a log axis is left out).
+std::vector<device_bar> device_bars(const series& s, const axis_map& mx, const axis_map& my) {
+    std::vector<device_bar> bars;
+    const auto& e = s.errors;
+    if (e.empty()) return bars;
+    const std::size_t n = std::min(s.x.size(), s.y.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
+        const double x = mx(s.x[i]);
+        const double y = my(s.y[i]);
+        if (!e.y_lower.empty() || !e.y_upper.empty()) {
+            const auto [lo, hi] = error_span(s.y, e.y_lower, e.y_upper, i);
+            const device_bar b{x, my(lo), x, my(hi), true};
+            if (lo < hi && std::isfinite(b.y0) && std::isfinite(b.y1)) bars.push_back(b);
+        }
+        if (!e.x_lower.empty() || !e.x_upper.empty()) {
+            const auto [lo, hi] = error_span(s.x, e.x_lower, e.x_upper, i);
+            const device_bar b{mx(lo), y, mx(hi), y, false};
+            if (lo < hi && std::isfinite(b.x0) && std::isfinite(b.x1)) bars.push_back(b);
+        }
+    }
+    return bars;
+}
+
+}  // namespace
+
 device_series to_device(const series& s, const axis_map& mx, const axis_map& my) {
     device_series d;
     const std::size_t n = std::min(s.x.size(), s.y.size());
@@ -48,6 +84,7 @@ device_series to_device(const series& s, const axis_map& mx, const axis_map& my)
         d.x.push_back(ok ? mx(s.x[i]) : std::numeric_limits<double>::quiet_NaN());
         d.y.push_back(ok ? my(s.y[i]) : std::numeric_limits<double>::quiet_NaN());
     }
+    d.bars = device_bars(s, mx, my);
     return d;
 }
 

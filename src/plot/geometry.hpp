@@ -37,6 +37,13 @@ struct axis_map {
     }
 };
 
+/// One error bar in device coordinates, from (x0, y0) to (x1, y1), with a cap at each end
+/// across it.
+struct device_bar {
+    double x0, y0, x1, y1;
+    bool vertical;  // a y error: caps are horizontal
+};
+
 /// Device coordinates of one series; non-finite points are NaN.
 struct device_series {
     std::vector<double> x{};  // the points: markers, and the line of a series without a curve
@@ -44,6 +51,7 @@ struct device_series {
     bool sampled = false;      // the line is the series' curve, sampled into lx, ly
     std::vector<double> lx{};
     std::vector<double> ly{};
+    std::vector<device_bar> bars{};  // the error bars of its points
 
     /// The vertices of the drawn line.
     const std::vector<double>& line_x() const { return sampled ? lx : x; }

@@ -10,17 +10,36 @@
 
 namespace plot {
 
+namespace {
+
+/// Calls f with each value of the series along an axis, and with the ends of its error bars:
+/// the bars count in the axis limits as the points do.
+template <class F>
+void for_each_reach(const series& s, bool horizontal, F f) {
+    const auto& v = horizontal ? s.x : s.y;
+    for (double d : v) f(d);
+    const auto& lower = horizontal ? s.errors.x_lower : s.errors.y_lower;
+    const auto& upper = horizontal ? s.errors.x_upper : s.errors.y_upper;
+    if (lower.empty() && upper.empty()) return;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const auto [lo, hi] = error_span(v, lower, upper, i);
+        f(lo);
+        f(hi);
+    }
+}
+
+}  // namespace
+
 tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizontal) {
     double lo = std::numeric_limits<double>::infinity();
     double hi = -lo;
     for (const auto& s : data) {
         if (!s.autoscale || !s.sets_limits) continue;
-        const auto& v = horizontal ? s.x : s.y;
-        for (double d : v) {
-            if (!std::isfinite(d) || (a.kind == scale::log && !(d > 0))) continue;
+        for_each_reach(s, horizontal, [&](double d) {
+            if (!std::isfinite(d) || (a.kind == scale::log && !(d > 0))) return;
             lo = std::min(lo, d);
             hi = std::max(hi, d);
-        }
+        });
     }
     if (!std::isfinite(lo) || !std::isfinite(hi)) {
         lo = a.kind == scale::log ? 0.1 : 0.0;
@@ -190,12 +209,12 @@ std::vector<extent> extents(const panel& p, const theme& th, bool horizontal, bo
         if (!s.autoscale || !s.sets_limits) continue;
         if (s.line == line_style::none && s.marker == marker_style::none) continue;
         extent e{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), clearance(s, th)};
-        for (double v : horizontal ? s.x : s.y) {
-            if (!std::isfinite(v) || (log && !(v > 0))) continue;
+        for_each_reach(s, horizontal, [&](double v) {
+            if (!std::isfinite(v) || (log && !(v > 0))) return;
             const double u = log ? std::log10(v) : v;
             e.lo = std::min(e.lo, u);
             e.hi = std::max(e.hi, u);
-        }
+        });
         if (e.lo <= e.hi) out.push_back(e);
     }
     return out;

@@ -23,6 +23,10 @@ int overlap(const rect& box, const std::vector<series>& data, const std::vector<
                 if (clip_segment(x0, y0, x1, y1, box)) ++count;
             }
         }
+        for (const auto& b : d.bars) {
+            double x0 = b.x0, y0 = b.y0, x1 = b.x1, y1 = b.y1;
+            if (clip_segment(x0, y0, x1, y1, box)) ++count;
+        }
         if (data[k].marker != marker_style::none) {
             const rect grown{box.x - marker_radius, box.y - marker_radius, box.w + 2 * marker_radius,
                              box.h + 2 * marker_radius};
@@ -64,8 +68,18 @@ void draw_legend_sample(cairo_t* cr, const theme& th, const series& s, double x,
         cairo_line_to(cr, x + w, y);
         cairo_stroke(cr);
     }
+    device_series d{{x + 0.5 * w}, {y}};
+    if (!s.errors.y_lower.empty() || !s.errors.y_upper.empty()) {
+        // A data series: its marker on a bar with caps, as in the panel.
+        const double half = 0.55 * th.legend_font_pt;
+        d.bars.push_back({x + 0.5 * w, y - half, x + 0.5 * w, y + half, true});
+        draw_error_bars(cr, th, s, d.bars);
+    } else if (!s.errors.empty()) {
+        const double half = 0.3 * w;
+        d.bars.push_back({x + 0.5 * w - half, y, x + 0.5 * w + half, y, false});
+        draw_error_bars(cr, th, s, d.bars);
+    }
     if (s.marker != marker_style::none) {
-        device_series d{{x + 0.5 * w}, {y}};
         draw_markers(cr, th, s, d, rect{x, y - w, w, 2 * w});
     }
 }

@@ -152,6 +152,12 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         set_line_style(cr, th, s.line, s.width_scale);
         stroke_polyline(cr, dev[k], clip);
     }
+    // Error bars over the lines and under the markers, clipped to the axes as the lines are.
+    for (std::size_t k = 0; k < p.data.size(); ++k) {
+        if (dev[k].bars.empty() || !drawn(p.data[k])) continue;
+        set_color(cr, th, p.data[k]);
+        draw_error_bars(cr, th, p.data[k], dev[k].bars);
+    }
     cairo_restore(cr);
     // draw_markers keeps markers whose centre is within a radius of the rect it is given.
     const double inward = th.marker_radius_pt - 1e-6 * (area.w + area.h);
@@ -260,11 +266,18 @@ bool same_legend_entries(const std::vector<panel>& panels) {
 
 }  // namespace
 
+void apply_data_style(series& s, const theme& th) {
+    const auto slot = static_cast<std::size_t>(s.data_slot);
+    if (!th.data_markers.empty()) s.marker = th.data_markers[slot % th.data_markers.size()];
+    if (!th.data_palette.empty() && !s.rgb_color) s.rgb_color = th.data_palette[slot % th.data_palette.size()];
+}
+
 figure with_theme_styles(const figure& fig, const theme& th) {
     figure styled = fig;
     const auto style = [&](std::vector<panel>& panels) {
         for (auto& p : panels) {
             for (auto& s : p.data) {
+                if (s.data_slot >= 0) apply_data_style(s, th);
                 const auto it = s.style_key.empty() ? th.styles.end() : th.styles.find(s.style_key);
                 if (it == th.styles.end()) continue;
                 if (it->second.line) s.line = *it->second.line;
@@ -280,12 +293,13 @@ figure with_theme_styles(const figure& fig, const theme& th) {
 void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
                  std::vector<placed_text>* texts, bool vector, std::vector<panel_frame>* frames) {
     const auto keyed = [](const panel& p) {
-        return std::any_of(p.data.begin(), p.data.end(), [](const series& s) { return !s.style_key.empty(); });
+        return std::any_of(p.data.begin(), p.data.end(),
+                           [](const series& s) { return !s.style_key.empty() || s.data_slot >= 0; });
     };
     const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), keyed) ||
                          std::any_of(unstyled.peers.begin(), unstyled.peers.end(), keyed);
-    const figure styled = any_key && !th.styles.empty() ? with_theme_styles(unstyled, th) : figure{};
-    const figure& fig = any_key && !th.styles.empty() ? styled : unstyled;
+    const figure styled = any_key ? with_theme_styles(unstyled, th) : figure{};
+    const figure& fig = any_key ? styled : unstyled;
     if (fig.rows < 1 || fig.cols < 1 || fig.panels.size() > static_cast<std::size_t>(fig.rows * fig.cols)) {
         throw std::invalid_argument("figure grid is too small for its panels");
     }

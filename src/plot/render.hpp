@@ -60,8 +60,12 @@ void draw_figure(cairo_t* cr, const figure& fig, const theme& th, page_size size
                  std::vector<placed_text>* texts = nullptr, bool vector = false,
                  std::vector<panel_frame>* frames = nullptr);
 
+/// A data series (data_slot >= 0) in the theme's data style: its marker and colour (a
+/// colour of its own stays).
+void apply_data_style(series& s, const theme& th);
+
 /// The figure with the theme's named styles applied to the series that carry a style key,
-/// as draw_figure draws it.
+/// and its data styles to the data series, as draw_figure draws it.
 figure with_theme_styles(const figure& fig, const theme& th);
 
 /// The frames of the figure's panels as draw_figure lays them out at the figure's size.

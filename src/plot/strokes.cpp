@@ -76,6 +76,43 @@ void stroke_polyline(cairo_t* cr, const device_series& d, const rect& clip) {
     cairo_stroke(cr);
 }
 
+namespace {
+
+/// Adds one marker's outline at (x, y) to the path: a circle of radius r, or a square,
+/// triangle or diamond of about the circle's area.
+void marker_path(cairo_t* cr, marker_style m, double x, double y, double r) {
+    cairo_new_sub_path(cr);
+    switch (m) {
+        case marker_style::filled_square: {
+            const double h = 0.886 * r;  // the circle's area
+            cairo_rectangle(cr, x - h, y - h, 2 * h, 2 * h);
+            return;
+        }
+        case marker_style::filled_triangle: {
+            const double h = 1.35 * r;
+            cairo_move_to(cr, x, y - h);
+            cairo_line_to(cr, x + 0.866 * h, y + 0.5 * h);
+            cairo_line_to(cr, x - 0.866 * h, y + 0.5 * h);
+            cairo_close_path(cr);
+            return;
+        }
+        case marker_style::filled_diamond: {
+            const double h = 1.25 * r;
+            cairo_move_to(cr, x, y - h);
+            cairo_line_to(cr, x + h, y);
+            cairo_line_to(cr, x, y + h);
+            cairo_line_to(cr, x - h, y);
+            cairo_close_path(cr);
+            return;
+        }
+        default: cairo_arc(cr, x, y, r, 0, 2 * M_PI); return;
+    }
+}
+
+}  // namespace
+
+bool filled(marker_style m) { return m != marker_style::none && m != marker_style::open_circle; }
+
 void draw_markers(cairo_t* cr, const theme& th, const series& s, const device_series& d, const rect& area) {
     const double r = th.marker_radius_pt * s.marker_scale;
     cairo_set_dash(cr, nullptr, 0, 0);
@@ -86,17 +123,35 @@ void draw_markers(cairo_t* cr, const theme& th, const series& s, const device_se
             d.y[i] > area.y + area.h + r) {
             continue;
         }
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, d.x[i], d.y[i], r, 0, 2 * M_PI);
+        marker_path(cr, s.marker, d.x[i], d.y[i], r);
     }
-    if (s.marker == marker_style::filled_circle) {
+    if (filled(s.marker)) {
         cairo_fill_preserve(cr);
-    } else if (s.line != line_style::none) {
-        // An open marker on its own series' line stays open: the line does not run through it.
+    } else if (s.line != line_style::none || !d.bars.empty()) {
+        // An open marker on its own series' line or bars stays open: they do not run through it.
         cairo_save(cr);
         cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
         cairo_fill_preserve(cr);
         cairo_restore(cr);
+    }
+    cairo_stroke(cr);
+}
+
+double cap_half_width(const theme& th, const series& s) { return th.marker_radius_pt * s.marker_scale; }
+
+void draw_error_bars(cairo_t* cr, const theme& th, const series& s, const std::vector<device_bar>& bars) {
+    if (bars.empty()) return;
+    const double c = cap_half_width(th, s);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    cairo_set_line_width(cr, th.line_width_pt * s.width_scale);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    for (const auto& b : bars) {
+        cairo_move_to(cr, b.x0, b.y0);
+        cairo_line_to(cr, b.x1, b.y1);
+        for (const auto& [x, y] : {std::pair{b.x0, b.y0}, std::pair{b.x1, b.y1}}) {
+            cairo_move_to(cr, b.vertical ? x - c : x, b.vertical ? y : y - c);
+            cairo_line_to(cr, b.vertical ? x + c : x, b.vertical ? y : y + c);
+        }
     }
     cairo_stroke(cr);
 }

@@ -22,7 +22,17 @@ void set_line_style(cairo_t* cr, const theme& th, line_style style, double width
 /// points with each visible run simplified.
 void stroke_polyline(cairo_t* cr, const device_series& d, const rect& clip);
 
-/// Draws open circles at the points within `area` (grown by the marker radius).
+/// Draws the series' markers at the points within `area` (grown by the marker radius).
 void draw_markers(cairo_t* cr, const theme& th, const series& s, const device_series& d, const rect& area);
+
+/// True for the markers drawn filled.
+bool filled(marker_style m);
+
+/// Half the width of an error bar's cap: the marker's radius, so that the cap is as wide as
+/// the marker.
+double cap_half_width(const theme& th, const series& s);
+
+/// Strokes the error bars with their caps in the current colour, at the theme's line width.
+void draw_error_bars(cairo_t* cr, const theme& th, const series& s, const std::vector<device_bar>& bars);
 
 }  // namespace plot

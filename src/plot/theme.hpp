@@ -50,6 +50,10 @@ struct theme {
     bool opaque_vector_background = false;  ///< PDF, SVG and EPS paint the background too (PNG and GIF always do)
     std::vector<rgb> palette;         ///< series colours by index
     std::map<std::string, named_style> styles;  ///< styles of named series (style_key)
+    /// Markers of measured data series, in turn (distinct from the methods' circles).
+    std::vector<marker_style> data_markers{marker_style::filled_square, marker_style::filled_triangle,
+                                           marker_style::filled_diamond};
+    std::vector<rgb> data_palette{{0, 0, 0}};  ///< colours of measured data series, in turn
     double panel_width_cm = 6.0;      ///< width of one panel, where the figure sets none
     double panel_aspect = 0.75;       ///< panel height / width, where the figure sets none
     double fixed_width_cm = 0;        ///< whole-figure width, or 0 to size by panels

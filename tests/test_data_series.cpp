@@ -420,7 +420,14 @@ TEST(DataSeries, ResidualsAreInTheDataOutput) {
     const auto at = r.out.find("b,measured,10,");
     ASSERT_NE(at, std::string::npos) << r.out;
     const auto line = r.out.substr(at, r.out.find('\n', at) - at);
-    EXPECT_NEAR(std::stod(line.substr(line.rfind(',') + 1)), reference("measured_residual_first"), 1e-15) << line;
+    // panel,series,x,y,id,y_err_lower,y_err_upper: y is the residual, the errors its bars.
+    std::vector<std::string> cells;
+    std::stringstream cut(line);
+    for (std::string c; std::getline(cut, c, ',');) cells.push_back(c);
+    ASSERT_EQ(cells.size(), 7u) << line;
+    EXPECT_NEAR(std::stod(cells[3]), reference("measured_residual_first"), 1e-15) << line;
+    EXPECT_EQ(cells[5], cells[6]) << line;  // a symmetric uncertainty
+    EXPECT_GT(std::stod(cells[5]), 0) << line;
 }
 
 // ---------- plot --data ----------

@@ -294,7 +294,7 @@ command add_eval_command(CLI::App& app) {
                      "Only these columns, a comma-separated LIST of the columns below and T_s (with --length), "
                      "written in the table's order; only what they need is computed. --order and --method "
                      "columns follow them, then err:METHOD columns (T_m/T - 1 of any method of 'list', right to "
-                     "1e-12: err:lowest, err:order:6; 0 below 1e-300, empty where the method has no period)")
+                     "1e-12: err:lowest, err:order:6; below_limit under 1e-300, not_computed where it could not be resolved, empty where the method has no period)")
         ->type_name("LIST")->check(non_empty);
     cmd->footer(std::string("\n") + angle_help + "\n\nColumns: " + cli::eval_columns_help() +
                  "; then period_orderN for each --order N, period_NAME for each --method NAME, and T_s with "

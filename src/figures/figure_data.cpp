@@ -292,7 +292,7 @@ std::string wide_csv(const figure_numbers& n) {
             columns.push_back({wide_column(p.name, s.id, 'y'), &s.y});
             for (const auto& c : error_columns) {
                 const auto& v = s.*c.values;
-                if (!v.empty()) columns.push_back({wide_column(p.name, s.id, c.suffix[0]) + c.suffix + 1, &v});
+                if (!v.empty()) columns.push_back({wide_column(p.name, s.id, c.suffix[0]) + std::string(c.suffix + 1), &v});
             }
         }
     }

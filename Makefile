@@ -122,7 +122,7 @@ bench: build
 
 figures: build
 	mkdir -p figures
-	$(BUILD)/pendulum-figures render --all examples/*.toml -o figures -f pdf,png
+	$(BUILD)/pendulum-figures render --all examples/*.toml examples/lab/lab.toml -o figures -f pdf,png
 	$(BUILD)/pendulum-figures render swing --theme slides --dpi 48 -f gif -o figures
 	$(BUILD)/pendulum-figures render over-the-top --theme slides --dpi 48 -f gif -o figures
 

@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
+
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -69,7 +72,13 @@ TEST(Notation, EverySymbolAsMarkupAndLatex) {
         ++symbols;
         const std::string tex = "$a \\" + std::string(m.name) + " b$";
         const std::string drawn = m.italic ? "<i>" + escaped(m.markup) + "</i>" : escaped(m.markup);
-        const std::string spaced = m.spacing == math_class::ordinary ? drawn : " " + drawn + " ";
+        // an operator name (a word: sin, log) is followed by TeX's thin space before its operand
+        const bool word = m.markup.size() > 1 && std::all_of(m.markup.begin(), m.markup.end(), [](char c) {
+                              return std::isalpha(static_cast<unsigned char>(c)) != 0;
+                          });
+        const std::string spaced = m.spacing != math_class::ordinary ? " " + drawn + " "
+                                   : word                            ? drawn + "\u2009"
+                                                                     : drawn;
         EXPECT_EQ(tex_to_markup(tex), "<i>a</i>" + spaced + "<i>b</i>") << m.name;
         EXPECT_EQ(tex_to_latex(tex), "$a" + std::string(m.latex) + "b$") << m.name;
     }
@@ -109,6 +118,18 @@ TEST(Notation, RootsFractionsAndDelimiters) {
     EXPECT_EQ(tex_to_markup("$\\frac{1}{a-b}$"), "1/(<i>a</i> \u2212 <i>b</i>)");
     EXPECT_EQ(tex_to_markup("$\\frac{2\\pi}{3}$"), "2<i>\u03c0</i>/3");
     EXPECT_EQ(tex_to_markup("$\\frac12$"), "1/2");
+    // a quotient in a part is one too: 1/(x/2), never 1/x/2 (which reads (1/x)/2)
+    EXPECT_EQ(tex_to_markup("$\\frac{1}{x/2}$"), "1/(<i>x</i>/2)");
+    // what is inside written parentheses is not at the part's top
+    EXPECT_EQ(tex_to_markup("$\\frac{\\sin(x/2)}{(a+b)}$"), "sin(<i>x</i>/2)/(<i>a</i> + <i>b</i>)");
+    EXPECT_EQ(tex_to_markup("$\\frac{(a+b)c}{2}$"), "(<i>a</i> + <i>b</i>)<i>c</i>/2");
+    EXPECT_EQ(tex_to_markup("$\\frac{a*b}{c}$"), "(<i>a</i>\u2217<i>b</i>)/<i>c</i>");
+    // an operator name and its operand with TeX's thin space: sin x, sin² x; none before (
+    EXPECT_EQ(tex_to_markup("$\\frac{\\sin x}{x/2}$"), "sin\u2009<i>x</i>/(<i>x</i>/2)");
+    EXPECT_EQ(tex_to_markup("$\\sin^2 x$"), "sin<sup>2</sup>\u2009<i>x</i>");
+    EXPECT_EQ(tex_to_markup("$\\cos(x)$"), "cos(<i>x</i>)");
+    EXPECT_EQ(tex_to_markup("$\\log\\left(x\\right)$"), "log(<i>x</i>)");
+    EXPECT_EQ(tex_to_latex("$\\sin x$"), "$\\sin x$");
     for (const std::string f : {"frac", "tfrac", "dfrac"}) {
         EXPECT_EQ(tex_to_markup("$\\" + f + "{\\pi}{2}$"), "<i>\u03c0</i>/2") << f;
         EXPECT_EQ(tex_to_latex("$\\" + f + "{\\pi}{2}$"), "$\\" + f + "{\\pi }{2}$") << f;

@@ -79,7 +79,7 @@ constexpr tex_macro macro_table[] = {
     {"&", "&", "\\&", symbol},  {"#", "#", "\\#", symbol},  {"_", "_", "\\_", symbol},  {"|", "\u2016", "\\|", symbol},
     // Layout: the markup column says what the drawing shows
     {"sqrt", "\u221a and a line over x; [n]: n raised before", "\\sqrt", function},
-    {"frac", "a/b in line; a sum in parentheses", "\\frac", function},
+    {"frac", "a/b in line; a sum or quotient in parentheses", "\\frac", function},
     {"tfrac", "as \\frac", "\\tfrac", function},
     {"dfrac", "as \\frac", "\\dfrac", function},
     {"left", "a delimiter: ( ) [ ] \\{ \\} | \\| . (none)", "\\left", function},
@@ -280,8 +280,9 @@ private:
     struct atom_facts {
         math_class spacing = math_class::ordinary;  ///< a symbol's class
         bool group = false;                         ///< a braced group
-        bool sum = false;                           ///< a group with a binary operator or relation at its top
+        bool sum = false;                           ///< a group with a binary operator, relation, / or * at its top
         bool prime = false;                         ///< a lone ' (LaTeX: a prime on an empty base)
+        bool operator_name = false;                 ///< \sin, \log, ...: a thin space before an operand after it
     };
 
     /// True at "\right" (a whole macro name).
@@ -301,24 +302,35 @@ private:
     std::string math(char closing, bool* sum = nullptr) {
         std::string out;
         bool after_operand = false;
+        bool after_name = false;
+        int parens = 0;  // ( ... ) written in this group: what is inside them is not at its top
         for (;;) {
             skip_space();
             if (pos_ >= tex_.size()) return out;
             const char c = tex_[pos_];
             if (c == closing || (closing == right_ && (c == '$' || c == '}' || at_right()))) return out;
             if (c == '$' || c == '}') fail(c == '$' ? "unbalanced $" : "unbalanced }");
+            const bool opens = c == '(' || c == '[' || at_left(c);  // before atom_with_scripts moves pos_
             std::string item = atom_with_scripts();
             math_class spacing = last_.spacing;
             if (c == '=' || c == '<' || c == '>') spacing = math_class::relation;
             if (c == '+' || c == '-') spacing = math_class::binary;
             if (spacing == math_class::binary && !after_operand) spacing = math_class::ordinary;  // a sign
+            // TeX's thin space between an operator name and its operand: sin x, not sinx.
+            const bool operand = spacing == math_class::ordinary && !opens;
+            if (after_name && operand && !latex_) out += "\u2009";
+            after_name = last_.operator_name;
+            if (c == '(') ++parens;
+            if (c == ')' && parens > 0) --parens;
             if (spacing != math_class::ordinary) {
-                if (sum) *sum = true;
+                if (sum && parens == 0) *sum = true;
                 out += script_depth_ == 0 && !latex_ ? " " + item + " " : item;
                 after_operand = false;
             } else {
                 out += item;
                 after_operand = !(c == '(' || c == '/' || c == '*' || c == ',' || c == '+' || c == '-');
+                // a/b/c reads as (a/b)/c: a quotient or product in a fraction's part is one too
+                if (sum && parens == 0 && (c == '/' || c == '*')) *sum = true;
             }
         }
     }
@@ -442,6 +454,19 @@ private:
         return escape(std::string(1, c));
     }
 
+    /// An operator name (\sin, \log, \exp, ...): a symbol drawn as a word of letters.
+    static bool is_operator_name(const tex_macro& m) {
+        return m.markup.size() > 1 && std::all_of(m.markup.begin(), m.markup.end(), [](char ch) {
+                   return std::isalpha(static_cast<unsigned char>(ch)) != 0;
+               });
+    }
+
+    /// True at "\left" (a whole macro name), where character c is.
+    bool at_left(char c) const {
+        return c == '\\' && tex_.compare(pos_, 5, "\\left") == 0 &&
+               (pos_ + 5 >= tex_.size() || !std::isalpha(static_cast<unsigned char>(tex_[pos_ + 5])));
+    }
+
     /// A macro, looked up in the table: unknown ones are refused, naming the nearest name.
     std::string macro(atom_facts& facts) {
         ++pos_;  // the backslash
@@ -457,6 +482,7 @@ private:
         switch (m->kind) {
             case macro_kind::symbol:
                 facts.spacing = m->spacing;
+                facts.operator_name = is_operator_name(*m);
                 if (latex_) return std::string(m->latex);
                 return m->italic ? italic(escape_markup_or_plain(std::string(m->markup)))
                                  : escape_markup_or_plain(std::string(m->markup));
@@ -532,7 +558,8 @@ private:
         return raised + "\u221a" + (last_.group ? "(" + body + ")" : body);
     }
 
-    /// \frac{a}{b} inline as a/b, a or b in parentheses where it is a sum.
+    /// \frac{a}{b} inline as a/b, a or b in parentheses where it is a sum, a relation, or a
+    /// quotient or product written with / or * (\frac{1}{x/2} is 1/(x/2)).
     std::string fraction(const tex_macro& m) {
         const std::string num = atom();
         const atom_facts top = last_;

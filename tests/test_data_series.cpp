@@ -362,6 +362,28 @@ TEST(DataSeries, TheLegendHasAnEntryWithMarkerAndBar) {
     EXPECT_FALSE(s.errors.empty());
 }
 
+TEST(DataSeries, BesideDataTheExactSolutionIsALineUnlessTheSpecSaysOtherwise) {
+    const auto dir = temp_dir("data-exact-line");
+    const std::string data = "[[panel.data]]\nx = [10, 20]\nx_unit = \"deg\"\ny = [1.0, 1.01]\ny_unit = \"T/T0\"\n";
+    const auto exact_of = [](const plot::figure& f) -> const plot::series& { return data_of(f, 0, "exact"); };
+    // The themes draw the exact solution with circles; beside measured points it is a line.
+    const auto with_data = built(period_with(data.substr(std::string("[[panel.data]]\n").size())), dir / "a.toml");
+    EXPECT_EQ(exact_of(with_data).marker, plot::marker_style::none);
+    EXPECT_EQ(exact_of(with_data).line, plot::line_style::solid);
+    EXPECT_TRUE(exact_of(with_data).style_key.empty());
+    // Without data the theme's style stays.
+    const auto without = built(period_panel, dir / "b.toml");
+    EXPECT_EQ(exact_of(without).style_key, "exact");
+    EXPECT_EQ(exact_of(without).marker, plot::marker_style::open_circle);
+    // A marker the spec gives is kept.
+    const auto own = built("[[panel]]\nplot = \"period\"\nmethods = [{ method = \"exact\", marker = \"circle\" }]\n" + data,
+                           dir / "c.toml");
+    EXPECT_EQ(exact_of(own).marker, plot::marker_style::open_circle);
+    // The other methods keep their theme styles.
+    const auto two = built("[[panel]]\nplot = \"period\"\nmethods = [\"exact\", \"harmonic\"]\n" + data, dir / "d.toml");
+    EXPECT_EQ(data_of(two, 0, "harmonic").style_key, "harmonic");
+}
+
 namespace {
 
 /// Pixels of a PNG near a colour, and the rows they span in a column band.

@@ -511,7 +511,24 @@ double unit_factor(data_unit from, data_unit to, double t0_seconds, double perio
     return base(from) / base(to);
 }
 
+namespace {
+
+/// Beside measured points the markers are the data's: the exact solution, which the themes
+/// draw with circles, is drawn as a solid line instead, unless the spec gave it a style or
+/// marker of its own (then it has no theme style_key).
+void exact_as_line(plot::panel& panel) {
+    for (auto& s : panel.data) {
+        if (s.data_slot >= 0 || s.style_key != "exact" || s.overlay) continue;
+        s.style_key.clear();
+        s.line = plot::line_style::solid;
+        s.marker = plot::marker_style::none;
+    }
+}
+
+}  // namespace
+
 void add_data_series(plot::panel& panel, const panel_spec& p, const data_placement& at) {
+    if (!p.data.empty()) exact_as_line(panel);
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         const data_series& d = p.data[k];
         plot::series s;

@@ -79,7 +79,7 @@ constexpr tex_macro macro_table[] = {
     {"&", "&", "\\&", symbol},  {"#", "#", "\\#", symbol},  {"_", "_", "\\_", symbol},  {"|", "\u2016", "\\|", symbol},
     // Layout: the markup column says what the drawing shows
     {"sqrt", "\u221a and a line over x; [n]: n raised before", "\\sqrt", function},
-    {"frac", "a/b in line; a sum or quotient in parentheses", "\\frac", function},
+    {"frac", "a/b in line, parts in parentheses", "\\frac", function},
     {"tfrac", "as \\frac", "\\tfrac", function},
     {"dfrac", "as \\frac", "\\dfrac", function},
     {"left", "a delimiter: ( ) [ ] \\{ \\} | \\| . (none)", "\\left", function},

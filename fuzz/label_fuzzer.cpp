@@ -17,17 +17,32 @@
 namespace {
 
 /// What an overlay's text may contain after a backslash.
+/// The macro names in a piece of LaTeX: "\\sin " -> sin.
+void add_names(std::string_view latex, std::set<std::string>& names) {
+    for (std::size_t i = 0; i < latex.size(); ++i) {
+        if (latex[i] != '\\' || i + 1 >= latex.size()) continue;
+        std::size_t end = i + 1;
+        while (end < latex.size() && std::isalpha(static_cast<unsigned char>(latex[end]))) ++end;
+        if (end == i + 1) ++end;  // a control symbol: \, \{ ...
+        names.emplace(latex.substr(i + 1, end - i - 1));
+        i = end - 1;
+    }
+}
+
+/// What the LaTeX of a label may hold: the macros of the label table (plot::tex_macros(),
+/// whose names the notation tests check against every dangerous one), and the text-mode
+/// escapes and accents of characters outside math.
 bool allowed(const std::string& name) {
-    static const std::set<std::string> names = {
-        "alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta", "vartheta", "iota",
-        "kappa", "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "varphi", "chi", "psi",
-        "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega", "cdot", "times",
-        "pm", "mp", "le", "leq", "ge", "geq", "approx", "sim", "infty", "circ", "prime", "ldots", "dots", "to",
-        "propto", "partial", "ln", "log", "exp", "sin", "cos", "tan", "lvert", "rvert", "dot", "ddot", "quad",
-        "qquad", "mathrm", "mathit", "text", "textrm", "operatorname", "textbackslash", "textbar", "textless",
-        "textgreater", "backslash", "hat", "ss", "ae", "AE", "o", "O", "oe", "OE", "l", "L", "i", "c", "H", "v",
-        "u", "r", ",", ":", ">", ";", "!", " ", "{", "}", "%", "$", "&", "#", "_", "|", "^", "~", "`", "'", "\"",
-        "=", "."};
+    static const std::set<std::string> names = [] {
+        std::set<std::string> n = {
+            "textbackslash", "textbar", "textless", "textgreater", "backslash", "ss", "ae", "AE", "o", "O", "oe",
+            "OE", "l", "L", "i", "c", "H", "v", "u", "r", "prime", "ldots", "dots", "lvert", "rvert", "operatorname",
+            ",", ":", ">", ";", "!", " ", "{", "}", "%", "$", "&", "#", "_", "|", "^", "~", "`", "'", "\"", "=", "."};
+        for (const auto& m : plot::tex_macros()) {
+            add_names(m.latex, n);
+        }
+        return n;
+    }();
     return names.count(name) > 0;
 }
 

@@ -17,10 +17,8 @@
 
 namespace pendulum {
 
-namespace {
-
 /// Control characters and NUL as \xNN: a message is a C string, and NUL would cut it short.
-std::string escaped(const std::string& text) {
+std::string message_text(std::string_view text) {
     std::string out;
     for (const char c : text) {
         const auto u = static_cast<unsigned char>(c);
@@ -35,6 +33,9 @@ std::string escaped(const std::string& text) {
     }
     return out;
 }
+
+namespace {
+
 
 const std::string_view allowed =
     "expected a number, pi, or an expression such as 1.2, pi/2, 9pi/10, 0.9pi or 162deg";
@@ -71,7 +72,7 @@ public:
         const std::string shown = text_.size() <= 80 ? std::string(text_)
                                                       : std::string(text_.substr(0, 40)) + "..." +
                                                             std::string(text_.substr(text_.size() - 20));
-        throw domain_error("invalid value '" + escaped(shown) + "': " + escaped(why) + "; " + std::string(allowed));
+        throw domain_error("invalid value '" + message_text(shown) + "': " + message_text(why) + "; " + std::string(allowed));
     }
 
     /// Records a piece for angle_tokens.

@@ -9,6 +9,10 @@
 
 namespace pendulum {
 
+/// A text for a message: control characters and DEL as \xNN (a message is a C string that
+/// a terminal shows, and NUL would cut it short); every other byte as it is.
+std::string message_text(std::string_view text);
+
 /// Evaluates an arithmetic expression with numbers, pi (or π), + - * / and parentheses;
 /// a number directly before pi or "(" multiplies it ("9pi/10", "0.9pi"), correctly rounded
 /// (MPFR, 1280 bits, checked against 2560). Throws domain_error (a std::invalid_argument)

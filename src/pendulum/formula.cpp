@@ -8,6 +8,8 @@
 //   primary = number | name | name "(" sum { "," sum } ")" | "(" sum ")"
 #include "pendulum/formula.hpp"
 
+#include "pendulum/angle.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -85,22 +87,6 @@ bool name_start(char c) {
 
 bool digit(char c) { return c >= '0' && c <= '9'; }
 
-/// Control characters and bytes of no known character, as \xNN.
-std::string shown(std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-        const auto u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7f) {
-            constexpr char hex[] = "0123456789abcdef";
-            out += "\\x";
-            out += hex[u >> 4];
-            out += hex[u & 15];
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
 
 class parser {
 public:
@@ -115,7 +101,7 @@ public:
         skip_space();
         if (pos_ != text_.size()) {
             if (text_[pos_] == ')') fail(pos_, "unmatched ')'");
-            fail(pos_, "unexpected '" + shown(rest_word()) + "' after a complete expression");
+            fail(pos_, "unexpected '" + message_text(rest_word()) + "' after a complete expression");
         }
         return uses_t_;
     }
@@ -137,7 +123,7 @@ private:
         }
         for (std::size_t i = 0; i < text_.size(); ++i) {
             const auto u = static_cast<unsigned char>(text_[i]);
-            if (u < 0x20 || u == 0x7f) fail(i, "control character " + shown(text_.substr(i, 1)) + " in a formula");
+            if (u < 0x20 || u == 0x7f) fail(i, "control character " + message_text(text_.substr(i, 1)) + " in a formula");
         }
     }
 
@@ -256,12 +242,12 @@ private:
             const nesting level(*this, at);
             const int v = sum();
             if (!take(')')) fail(pos_, pos_ == text_.size() ? "missing ')' for the '(' at column " + column_of(at)
-                                                            : "expected ')' or an operator, not '" + shown(rest_word()) + "'");
+                                                            : "expected ')' or an operator, not '" + message_text(rest_word()) + "'");
             return v;
         }
         if (digit(text_[pos_]) || text_[pos_] == '.') return number();
         if (name_start(text_[pos_])) return name();
-        fail(pos_, "unexpected '" + shown(rest_word()) + "'; expected a number, a name or '('");
+        fail(pos_, "unexpected '" + message_text(rest_word()) + "'; expected a number, a name or '('");
     }
 
     std::string column_of(std::size_t at) const {
@@ -317,7 +303,7 @@ private:
     }
 
     [[noreturn]] void unknown(std::size_t at, std::string_view word) const {
-        std::string why = "unknown name '" + shown(word) + "'";
+        std::string why = "unknown name '" + message_text(word) + "'";
         if (const auto guess = nearest_name(word); !guess.empty()) why += "; did you mean '" + guess + "'?";
         fail(at, why + " (names: theta0 or \u03b80, t, pi or \u03c0; functions: " + formula_functions() + ")");
     }
@@ -356,7 +342,7 @@ private:
             if (take(')')) break;
             fail(pos_, pos_ == text_.size() ? "missing ')' for " + std::string(f.name) + "("
                                             : "expected ',' or ')' in " + std::string(f.name) + "(...), not '" +
-                                                  shown(rest_word()) + "'");
+                                                  message_text(rest_word()) + "'");
         }
         if (static_cast<int>(args.size()) != f.arguments) {
             fail(at, std::string(f.name) + " takes " + std::to_string(f.arguments) +

@@ -96,7 +96,15 @@ async function grab(item) {
       v.onerror = () => bad(new Error('cannot play (MediaError ' + (v.error && v.error.code) + ')'));
       v.src = item.src;
     });
+    // The frame at t, once it is presented: 'seeked' can come before the decoder has
+    // handed the frame over (on a busy machine the previous frame would be drawn).
+    const presented = new Promise((ok) => {
+      if (!v.requestVideoFrameCallback) { ok(); return; }
+      v.requestVideoFrameCallback(() => ok());
+      setTimeout(ok, 5000);
+    });
     await new Promise((ok) => { v.onseeked = ok; v.currentTime = item.t; });
+    await presented;
     c.width = v.videoWidth;
     c.height = v.videoHeight;
     g.drawImage(v, 0, 0);

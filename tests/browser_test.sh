@@ -20,17 +20,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 svg_tolerance=${3:-6}
 text_tolerance=${4:-8}
 video_tolerance=${5:-3.5}
-fail() { echo "FAIL: $*"; exit 1; }
-browser=$(command -v chromium || command -v chromium-browser || true)
-if [ -z "$browser" ]; then
-    [ "${CI:-}" != true ] || fail "chromium is missing (make deps installs it)"
-    echo "SKIP: chromium is not installed"
-    exit 77
-fi
-dir=$(mktemp -d)
-# KEEP=1 keeps the pictures, to look at them.
-if [ -n "${KEEP:-}" ]; then echo "pictures in $dir"; else trap 'rm -rf "$dir"' EXIT; fi
-cd "$dir"
+# shellcheck source=browser_prelude.sh
+source "$here/browser_prelude.sh"
 
 # Still figures at 192 dpi (two CSS pixels to the point and a half), on a white page.
 figures="period c1-lowest phase-portrait"

@@ -13,16 +13,8 @@ check=$(realpath "$2")
 here=$(cd "$(dirname "$0")" && pwd)
 # Measured: 0 (the same pixels); without the prefixes 20 and more.
 tolerance=${3:-1}
-fail() { echo "FAIL: $*"; exit 1; }
-browser=$(command -v chromium || command -v chromium-browser || true)
-if [ -z "$browser" ]; then
-    [ "${CI:-}" != true ] || fail "chromium is missing (make deps installs it)"
-    echo "SKIP: chromium is not installed"
-    exit 77
-fi
-dir=$(mktemp -d)
-if [ -n "${KEEP:-}" ]; then echo "pictures in $dir"; else trap 'rm -rf "$dir"' EXIT; fi
-cd "$dir"
+# shellcheck source=browser_prelude.sh
+source "$here/browser_prelude.sh"
 
 # Two figures with different glyphs at the same ids: a period plot and a phase portrait.
 "$exe" plot period --methods exact,harmonic -f svg --name a --set opaque_vector_background=true > /dev/null

@@ -343,6 +343,20 @@ TEST(FormulaTrajectory, CommandWritesTheLaw) {
     EXPECT_EQ(nowhere.out, "");  // nothing partial
 }
 
+TEST(FormulaTrajectory, AFormulaGoesAloneInTheMethodList) {
+    // A comma inside the formula's parentheses is its own: one method.
+    const auto one = run_cli("trajectory --theta0 1 --method 'formula:besselj(0, t)*theta0' --at 0");
+    EXPECT_EQ(one.status, 0) << one.err;
+    EXPECT_EQ(one.out, "t_over_T,theta\n0,1\n");
+    // Beside another method, before or after it, it is refused, never dropped.
+    for (const std::string list : {"exact,formula:theta0*cos(t)", "formula:theta0*cos(t),exact"}) {
+        const auto r = run_cli("trajectory --theta0 1 --method '" + list + "' --at 0");
+        EXPECT_EQ(r.status, 2) << list;
+        EXPECT_NE(r.err.find("a formula goes alone"), std::string::npos) << r.err;
+        EXPECT_TRUE(r.out.empty()) << r.out;
+    }
+}
+
 TEST(FormulaTrajectory, PanelDrawsTheLaw) {
     const auto dir = temp_dir("formula_trajectory");
     write(dir / "t.toml",

@@ -80,8 +80,8 @@ constexpr std::size_t max_methods = 8;
 /// The methods of --method, a comma-separated list (order with --order N), each once, each
 /// with a law of motion that applies to the start.
 std::vector<method_choice> trajectory_methods(const trajectory_options& o, bool order_given, const start_option& start) {
-    // A formula is one method, commas and all (besselj(1, t)).
-    const auto items = o.method.starts_with("formula:") ? std::vector<std::string>{o.method} : split_list(o.method);
+    // split_list keeps a comma inside parentheses in its item: formula:besselj(1, t) is one.
+    const auto items = split_list(o.method);
     if (items.size() > max_methods) {
         throw usage_error("--method '" + shown_text(o.method) + "': " + std::to_string(items.size()) +
                           " methods; at most " + std::to_string(max_methods) + " in one table");
@@ -103,6 +103,10 @@ std::vector<method_choice> trajectory_methods(const trajectory_options& o, bool 
         }
         if (std::any_of(methods.begin(), methods.end(), [&](const method_choice& m) { return m.text() == method.text(); })) {
             throw usage_error("--method '" + shown_text(o.method) + "': " + method.text() + " is listed twice");
+        }
+        if (method.user && items.size() > 1) {
+            throw usage_error("--method '" + shown_text(o.method) + "': a formula goes alone (its table is t and "
+                              "theta); give the other methods in a run of their own");
         }
         check_method_applies(method, start);
         methods.push_back(method);

@@ -343,6 +343,18 @@ TEST(FormulaTrajectory, CommandWritesTheLaw) {
     EXPECT_EQ(nowhere.out, "");  // nothing partial
 }
 
+TEST(FormulaEval, AFormulasErrorColumnComesWithItsMethod) {
+    const auto with = run_cli("eval --theta0 1 --method 'formula:1/sqrt(cos(theta0/2))' --columns theta0,err:lowest");
+    ASSERT_EQ(with.status, 0) << with.err;
+    EXPECT_EQ(with.out.substr(0, with.out.find('\n')), "theta0,period_formula:1,err:lowest,err:formula:1");
+    // Written in --columns it would be numbered apart from the --method formulas: refused.
+    const auto alone = run_cli("eval --theta0 1 --columns 'theta0,err:formula:1/sqrt(cos(theta0/2))'");
+    EXPECT_EQ(alone.status, 2);
+    EXPECT_NE(alone.err.find("--columns 'err:formula:1/sqrt(cos(theta0/2))': give the formula with --method"),
+              std::string::npos) << alone.err;
+    EXPECT_TRUE(alone.out.empty()) << alone.out;
+}
+
 TEST(FormulaTrajectory, AFormulaGoesAloneInTheMethodList) {
     // A comma inside the formula's parentheses is its own: one method.
     const auto one = run_cli("trajectory --theta0 1 --method 'formula:besselj(0, t)*theta0' --at 0");

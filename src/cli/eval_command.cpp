@@ -213,10 +213,16 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     const auto amplitudes = parse_amplitude_values(o.theta0);
     std::vector<method_choice> errors;
     const auto [fixed, seconds] = chosen_columns(o, errors);
-    // A user's formula comes with its error column, err:formula:K (T_f/T - 1 without cancellation).
+    // A user's formula comes with its error column, err:formula:K (T_f/T - 1 without cancellation):
+    // one written in --columns would be numbered apart from the --method ones.
+    for (const auto& e : errors) {
+        if (e.user) {
+            throw usage_error("--columns 'err:formula:" + shown_text(e.user->text()) + "': give the formula with --method "
+                              "'formula:...'; its err:formula:K column comes with it");
+        }
+    }
     for (const auto& m : methods) {
-        const bool listed = std::any_of(errors.begin(), errors.end(), [&](const method_choice& e) { return e.text() == m.text(); });
-        if (m.user && !listed) errors.push_back(m);
+        if (m.user) errors.push_back(m);
     }
     // Only the solutions the chosen columns read are computed.
     unsigned needs = seconds ? static_cast<unsigned>(need_exact_period) : 0u;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/lists.hpp"
 
-#include <cstdio>
+#include "pendulum/angle.hpp"
+
 
 namespace pendulum::cli {
 
@@ -22,19 +23,6 @@ std::vector<std::string> split_list(std::string_view text) {
     return items;
 }
 
-std::string shown_text(std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-        const auto u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7f) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\x%02x", u);
-            out += buf;
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
+std::string shown_text(std::string_view text) { return message_text(text); }
 
 }  // namespace pendulum::cli

@@ -8,9 +8,11 @@
 #include "figures/plots.hpp"
 #include "figures/spec.hpp"
 #include "figures/themes.hpp"
+#include "plot/output.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -26,10 +28,13 @@ namespace {
 /// How an option's text becomes a TOML value of its key.
 enum class value_kind { text, list, number, integer, pair, integer_pair, boolean, range };
 
-/// One option of plot: the spec key it sets, in [[panel]] or [figure].
+/// The table of the spec an option's key goes into.
+enum class spec_table { panel, figure, animation, pendulum };
+
+/// One option of plot: the spec key it sets, in [[panel]], [figure] or [animation].
 struct key_option {
     std::string_view key;        ///< the spec key
-    bool figure;                 ///< a [figure] key, not a [[panel]] one
+    spec_table table;            ///< the table it goes into
     std::string_view option;     ///< the option, --name
     std::string_view type_name;  ///< its value in --help
     value_kind kind;             ///< how its value is written in the spec
@@ -39,29 +44,39 @@ struct key_option {
 /// Every spec key that means something for a one-panel figure has its option here; the
 /// keys a spec file alone sets (paper_file, line, columns, panel sizes: see --set) do not.
 constexpr key_option key_options[] = {
-    {"theta0", false, "--theta0", "LIST", value_kind::list, "Amplitudes, a comma-separated LIST (one for trajectory)"},
-    {"energy", false, "--energy", "LIST", value_kind::list,
+    {"theta0", spec_table::panel, "--theta0", "LIST", value_kind::list, "Amplitudes, a comma-separated LIST (one for trajectory)"},
+    {"energy", spec_table::panel, "--energy", "LIST", value_kind::list,
      "Phase, trajectory and pendulum plots: energies E/(m g L) of launches from the bottom (2 is the separatrix)"},
-    {"omega0", false, "--omega0", "LIST", value_kind::list,
+    {"omega0", spec_table::panel, "--omega0", "LIST", value_kind::list,
      "Phase, trajectory and pendulum plots: initial velocities theta'/w0 of states started at --theta0"},
-    {"methods", false, "--methods", "LIST", value_kind::list, "Methods, a comma-separated LIST (see 'list')"},
-    {"range", false, "--range", "A,B", value_kind::range, "x range a,b: times, or amplitudes as angles"},
-    {"time", false, "--time", "UNIT", value_kind::text, "Time axis of a trajectory: t/T (default), t/T0 or t/s"},
-    {"harmonic", false, "--harmonic", "N", value_kind::integer, "Coefficient plots: the harmonic 2k+1 (default 1)"},
-    {"harmonics", false, "--harmonics", "N", value_kind::integer, "Spectrum plots: how many odd harmonics"},
-    {"orders", false, "--orders", "A,B", value_kind::integer_pair, "Convergence plots: the orders N from A to B"},
-    {"y", false, "--y", "AXIS", value_kind::text, "Period plots: value (default), error-percent, error-log or residual ((T_meas - T)/T0 of --data)"},
-    {"x", false, "--x", "AXIS", value_kind::text,
+    {"methods", spec_table::panel, "--methods", "LIST", value_kind::list, "Methods, a comma-separated LIST (see 'list')"},
+    {"range", spec_table::panel, "--range", "A,B", value_kind::range, "x range a,b: times, or amplitudes as angles"},
+    {"time", spec_table::panel, "--time", "UNIT", value_kind::text, "Time axis of a trajectory: t/T (default), t/T0 or t/s"},
+    {"harmonic", spec_table::panel, "--harmonic", "N", value_kind::integer, "Coefficient plots: the harmonic 2k+1 (default 1)"},
+    {"harmonics", spec_table::panel, "--harmonics", "N", value_kind::integer, "Spectrum plots: how many odd harmonics"},
+    {"orders", spec_table::panel, "--orders", "A,B", value_kind::integer_pair, "Convergence plots: the orders N from A to B"},
+    {"y", spec_table::panel, "--y", "AXIS", value_kind::text, "Period plots: value (default), error-percent, error-log or residual ((T_meas - T)/T0 of --data)"},
+    {"x", spec_table::panel, "--x", "AXIS", value_kind::text,
      "Period plots: against the amplitude (default) or the energy, T/T0 across the separatrix at E = 2"},
-    {"angle_unit", false, "--angle-unit", "UNIT", value_kind::text, "Angles on the axes in rad (default) or deg"},
-    {"separatrix", false, "--separatrix", "BOOL", value_kind::boolean, "Phase plots: draw the separatrix, true or false"},
-    {"trail", false, "--trail", "T", value_kind::number, "Pendulum drawings: a fading trail of T periods"},
-    {"y_range", false, "--y-range", "A,B", value_kind::pair, "y axis limits a,b (default: from the data)"},
-    {"x_label", false, "--x-label", "TEXT", value_kind::text, "x axis label, text with TeX math in $...$"},
-    {"y_label", false, "--y-label", "TEXT", value_kind::text, "y axis label, text with TeX math in $...$"},
-    {"title", false, "--panel-title", "TEXT", value_kind::text, "The panel's title above its frame (default: the amplitude)"},
-    {"title", true, "--title", "TEXT", value_kind::text, "The figure's title, drawn above it and kept in PDF and SVG metadata"},
-    {"legend", true, "--legend", "WHERE", value_kind::text, "Legend: each (default), first or none"},
+    {"angle_unit", spec_table::panel, "--angle-unit", "UNIT", value_kind::text, "Angles on the axes in rad (default) or deg"},
+    {"separatrix", spec_table::panel, "--separatrix", "BOOL", value_kind::boolean, "Phase plots: draw the separatrix, true or false"},
+    {"trail", spec_table::panel, "--trail", "T", value_kind::number, "Pendulum drawings: a fading trail of T periods"},
+    {"y_range", spec_table::panel, "--y-range", "A,B", value_kind::pair, "y axis limits a,b (default: from the data)"},
+    {"x_label", spec_table::panel, "--x-label", "TEXT", value_kind::text, "x axis label, text with TeX math in $...$"},
+    {"y_label", spec_table::panel, "--y-label", "TEXT", value_kind::text, "y axis label, text with TeX math in $...$"},
+    {"title", spec_table::panel, "--panel-title", "TEXT", value_kind::text, "The panel's title above its frame (default: the amplitude)"},
+    {"title", spec_table::figure, "--title", "TEXT", value_kind::text, "The figure's title, drawn above it and kept in PDF and SVG metadata"},
+    {"legend", spec_table::figure, "--legend", "WHERE", value_kind::text, "Legend: each (default), first or none"},
+    {"fps", spec_table::animation, "--fps", "N", value_kind::number,
+     "Animations: frames per second, 1..120 (default 30; GIF plays evenly at 25 or 50)"},
+    {"periods", spec_table::animation, "--periods", "P", value_kind::number,
+     "Animations: length in exact periods of the first start (default 1)"},
+    {"duration_s", spec_table::animation, "--duration", "S", value_kind::number,
+     "Animations: length in seconds, with --length (instead of --periods)"},
+    {"speed", spec_table::animation, "--speed", "X", value_kind::number,
+     "Animations: playback speed against real time (default 1; 0.25 is slow motion)"},
+    {"clock", spec_table::animation, "--clock", "BOOL", value_kind::boolean,
+     "Animations: show the time in the first panel's title, true or false"},
 };
 
 /// The options of plot.
@@ -79,6 +94,7 @@ struct plot_options {
     std::vector<std::string> data;  // --data FILE:X[UNIT],Y[UNIT][,YERR], in order
     std::string length;             // --length, metres
     std::string g;                  // --g, m/s^2
+    bool apart = false;             // --apart: one panel per start
 };
 
 /// A TOML string: the text in quotes, with backslashes and quotes escaped.
@@ -197,25 +213,110 @@ std::string data_table(const std::string& option) {
 std::string pendulum_table(const plot_options& o) {
     if (o.length.empty() && o.g.empty()) return "";
     if (o.length.empty()) throw usage_error("--g '" + o.g + "' needs --length, the pendulum's length in metres");
-    const key_option length{"length_m", false, "--length", "M", value_kind::number, ""};
-    const key_option g{"g", false, "--g", "G", value_kind::number, ""};
+    const key_option length{"length_m", spec_table::pendulum, "--length", "M", value_kind::number, ""};
+    const key_option g{"g", spec_table::pendulum, "--g", "G", value_kind::number, ""};
     std::string out = "[pendulum]\nlength_m = " + number_text(length, o.length, false) + "\n";
     if (!o.g.empty()) out += "g = " + number_text(g, o.g, false) + "\n";
     return out;
 }
 
-/// The plot command: a one-panel spec made from the options, checked like a spec file.
-int run_plot(const plot_options& o) {
-    std::string figure;
-    std::string toml = "[[panel]]\nplot = " + toml_string(o.kind) + "\n";
-    for (const auto& k : key_options) {
-        const auto it = o.values.find(k.option);
-        if (it == o.values.end()) continue;
-        (k.figure ? figure : toml) += std::string(k.key) + " = " + toml_value(k, it->second, o.kind) + "\n";
+/// The plot kinds that animate, "trajectory, phase or pendulum", from the kinds' rows.
+std::string moving_plot_names() {
+    std::vector<std::string> names;
+    for (const auto& row : figures::plot_table()) {
+        if (row.add_frame) names.emplace_back(row.name);
     }
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    }
+    return out;
+}
+
+/// True where one of the formats (a comma-separated list) has a row with that property.
+bool any_format(const std::string& formats, bool (*has)(const plot::format_row&)) {
+    const auto names = split_list(formats);
+    for (const auto& row : plot::format_table()) {
+        if (has(row) && std::find(names.begin(), names.end(), row.name) != names.end()) return true;
+    }
+    return false;
+}
+
+/// The [animation] table of the figure: the animation options given (`keys`), or an
+/// animation with the spec's defaults where the kind moves and a format holds moving
+/// pictures (GIF, video); empty for a still figure. A kind that does not move refuses the
+/// animation options and the video formats with a word on what does.
+std::string animation_table(const plot_options& o, const std::string& keys) {
+    const auto* row = figures::find_plot(o.kind);
+    if (!row) return "";  // the spec reader names the kinds
+    const bool video = any_format(o.formats, [](const plot::format_row& f) { return f.write == nullptr; });
+    // A format that plays motion: pictures whose every frame goes into one file (GIF, video),
+    // not a sequence of PNGs nor a PDF of pages.
+    const bool moving = any_format(o.formats, [](const plot::format_row& f) {
+        return f.raster && f.animate && f.frame_file && f.frame_file("x", 0, 2) == f.frame_file("x", 1, 2);
+    });
+    if (!row->add_frame && (video || !keys.empty())) {
+        throw usage_error("plot " + o.kind + ": a " + o.kind + " plot does not move, so it cannot be " +
+                          (keys.empty() ? "written as a video (-f " + o.formats + ")" : "animated (--fps, --periods, --duration, --speed, --clock)") +
+                          "; the plots that animate are " + moving_plot_names() + ", and a still " + o.kind +
+                          " plot is written by -f png, pdf, svg, eps or gif");
+    }
+    if (!row->add_frame || (keys.empty() && !moving)) return "";
+    return "[animation]\n" + keys;
+}
+
+/// The start options, whose lists --apart cuts into one panel per item.
+constexpr std::string_view start_options[] = {"--theta0", "--energy", "--omega0"};
+
+/// The options of each panel: all of them in one panel, or with --apart one panel per start,
+/// the i-th item of each start list in the i-th panel (a state's angle and velocity together).
+std::vector<std::map<std::string_view, std::string>> panel_values(const plot_options& o) {
+    if (!o.apart) return {o.values};
+    if (!o.data.empty()) throw usage_error("--apart draws one panel per start; --data goes in one panel: leave out one of them");
+    std::size_t count = 0;
+    for (const auto option : start_options) {
+        if (const auto it = o.values.find(option); it != o.values.end()) count = std::max(count, split_list(it->second).size());
+    }
+    if (count == 0) throw usage_error("--apart draws one panel per start: give --theta0, --energy or --omega0 with a list");
+    std::vector<std::map<std::string_view, std::string>> panels(count, o.values);
+    for (const auto option : start_options) {
+        const auto it = o.values.find(option);
+        if (it == o.values.end()) continue;
+        const auto items = split_list(it->second);
+        if (items.size() != 1 && items.size() != count) {
+            throw usage_error("--apart: " + std::string(option) + " has " + std::to_string(items.size()) +
+                              " items where another start list has " + std::to_string(count) + "; give as many, or one for all");
+        }
+        for (std::size_t i = 0; i < count; ++i) panels[i][option] = items[items.size() == 1 ? 0 : i];
+    }
+    return panels;
+}
+
+/// The plot command: a spec made from the options (one panel, or one per start with
+/// --apart), checked like a spec file.
+int run_plot(const plot_options& o) {
+    std::map<spec_table, std::string> tables;
+    std::string toml;
+    const auto panels = panel_values(o);
+    for (const auto& values : panels) {
+        std::string panel = "[[panel]]\nplot = " + toml_string(o.kind) + "\n";
+        for (const auto& k : key_options) {
+            const auto it = values.find(k.option);
+            if (it == values.end()) continue;
+            const std::string line = std::string(k.key) + " = " + toml_value(k, it->second, o.kind) + "\n";
+            if (k.table == spec_table::panel) {
+                panel += line;
+            } else if (&values == &panels.front()) {
+                tables[k.table] += line;
+            }
+        }
+        toml += panel;
+    }
+    if (panels.size() > 1) tables[spec_table::figure] += "columns = " + std::to_string(std::min<std::size_t>(panels.size(), 6)) + "\n";
     for (const auto& d : o.data) toml += data_table(d);
+    toml = animation_table(o, tables[spec_table::animation]) + toml;
     toml = pendulum_table(o) + toml;
-    if (!figure.empty()) toml = "[figure]\n" + figure + toml;
+    if (!tables[spec_table::figure].empty()) toml = "[figure]\n" + tables[spec_table::figure] + toml;
     figures::entry e;
     try {
         e.source = toml;
@@ -254,11 +355,12 @@ command add_plot_command(CLI::App& app) {
         ->required()
         ->type_name("KIND");
     for (const auto& k : key_options) {
-        cmd->add_option_function<std::string>(
-               std::string(k.option), [po, option = k.option](const std::string& v) { po->values[option] = v; },
-               std::string(k.help))
-            ->type_name(std::string(k.type_name))
-            ->check(non_empty);
+        auto* opt = cmd->add_option_function<std::string>(
+            std::string(k.option), [po, option = k.option](const std::string& v) { po->values[option] = v; },
+            std::string(k.help));
+        opt->type_name(std::string(k.type_name));
+        // A label may be empty, as in a spec (title = "" leaves the title out); a value may not.
+        if (k.type_name != "TEXT") opt->check(non_empty);
     }
     cmd->add_option("--name", po->name, "File name without extension (default: the kind)")->type_name("NAME")->check(non_empty);
     cmd->add_option("-o,--output-dir", po->dir, "Existing directory for the files (default: .)")->type_name("DIR")->check(non_empty);
@@ -286,6 +388,8 @@ command add_plot_command(CLI::App& app) {
     cmd->add_option("--length", po->length, "The pendulum's length in metres: periods and times in seconds")
         ->type_name("M")
         ->check(non_empty);
+    cmd->add_flag("--apart", po->apart,
+                  "One panel per amplitude, energy or state, side by side (default: all in one panel)");
     cmd->add_option("--g", po->g, "Gravity in m/s^2 with --length (default 9.80665)")->type_name("G")->check(non_empty);
     cmd->footer(std::string("\n") + angle_help +
                      "\n\nThe same as a spec with one [[panel]] of these keys; 'show' prints specs to start from.\n\n"
@@ -297,7 +401,12 @@ command add_plot_command(CLI::App& app) {
                      "  pendulum-figures plot phase --energy 0.5,1.5,2,2.5,3 --angle-unit deg\n"
                      "  pendulum-figures plot trajectory --theta0 0 --omega0 2.2\n"
                      "  pendulum-figures plot period --methods exact,harmonic --angle-unit deg --length 1 \\\n"
-                     "      --data 'measured.csv:theta0[deg],T[s],dT'");
+                     "      --data 'measured.csv:theta0[deg],T[s],dT'\n"
+                     "  pendulum-figures plot pendulum --theta0 10deg,170deg --methods exact --apart --periods 2 -f gif,mp4 \\\n"
+                     "      --theme slides\n\n"
+                     "A trajectory, phase or pendulum plot animates when a format holds moving pictures (gif, mp4, "
+                     "webm) or an animation option is given (--fps, --periods, --duration, --speed, --clock); "
+                     "png then writes one file per frame.");
 
     return {cmd, [po] { return run_plot(*po); }};
 }

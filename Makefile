@@ -40,7 +40,7 @@ DEB_PACKAGES += libgsl-dev libmpfr-dev libcairo2-dev libpango1.0-dev libcli11-de
 DEB_PACKAGES += libgtest-dev libbenchmark-dev
 DEB_PACKAGES += libtomlplusplus-dev libgif-dev
 # FFmpeg's libraries for -f mp4 and -f webm; ffmpeg's ffprobe and ffmpeg read them in the tests.
-DEB_PACKAGES += libavcodec-dev libavformat-dev libswscale-dev libavutil-dev ffmpeg
+DEB_PACKAGES += libavcodec-dev libavformat-dev libavutil-dev ffmpeg
 # Beamer and animate, for the test that plays an animation's PDF pages.
 # (and LaTeX overlays: pdflatex, latex, dvips, Times through mathptmx, ps2pdf)
 DEB_PACKAGES += texlive-latex-base texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended

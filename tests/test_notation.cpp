@@ -570,3 +570,18 @@ TEST(Notation, SvgTextOverlineIsOneLineOverTheWholeRun) {
     EXPECT_EQ(count, 2u);
     std::filesystem::remove_all(dir);
 }
+
+TEST(Notation, AccentCutsLeaveBadMarkupBad) {
+    // The cuts close and reopen the elements around an accent, but an element the markup
+    // leaves open stays open, and an end without a start stays: Pango refuses both.
+    auto pieces = plot::split_accents("<i>x\u0302 unclosed");
+    ASSERT_EQ(pieces.size(), 2u);
+    EXPECT_EQ(pieces[0].text, "<i>x</i>");
+    EXPECT_EQ(pieces[1].text, "<i> unclosed");
+    pieces = plot::split_accents("a</i>");
+    ASSERT_EQ(pieces.size(), 1u);
+    EXPECT_EQ(pieces[0].text, "a</i>");
+    plot::text_shaper shaper("CMU Serif");
+    EXPECT_THROW(shaper.box("<i>x\u0302 unclosed", 10), std::invalid_argument);
+    EXPECT_THROW(shaper.box("<i>unclosed", 10), std::invalid_argument);
+}

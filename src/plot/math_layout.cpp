@@ -123,7 +123,8 @@ public:
         for (std::size_t i = 0; i < markup.size();) {
             i = markup[i] == '<' ? tag(markup, i) : character(markup, i);
         }
-        cut();
+        // The rest as the markup leaves it: an element left open stays open, for Pango to report.
+        if (has_text_) pieces_.push_back({text_, {}});
         return std::move(pieces_);
     }
 

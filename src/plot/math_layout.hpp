@@ -30,7 +30,8 @@ struct accent_piece {
 };
 
 /// Cuts markup at its accented characters, closing the open elements before each cut and
-/// opening them again after it, so that every piece is markup of its own. Runs of nothing
+/// opening them again after it, so that every piece is markup of its own (the last piece
+/// is left as the markup ends: an element it leaves open, Pango reports). Runs of nothing
 /// but tags are left out.
 std::vector<accent_piece> split_accents(const std::string& markup);
 

@@ -2,6 +2,10 @@
 // The TeX a physicist writes in a label: every macro of the one table in markup and LaTeX,
 // \theta apart from \vartheta, nesting limits, hostile LaTeX, the man page's list; and SVGs
 // whose ids are their own.
+#include "figures/panel_support.hpp"
+#include "pendulum/formula.hpp"
+#include "pendulum/methods.hpp"
+#include "plot/math_layout.hpp"
 #include "plot/tex_markup.hpp"
 #include "plot/text.hpp"
 
@@ -11,6 +15,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 
 #include <filesystem>
 #include <fstream>
@@ -20,6 +26,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 using plot::macro_kind;
 using plot::math_class;
@@ -342,4 +350,238 @@ TEST(Notation, SvgIdsAreTheFiguresOwn) {
     // The same figure, the same bytes.
     EXPECT_EQ(slurp(dir / "a.svg"), slurp(dir / "again.svg"));
     std::filesystem::remove_all(dir);
+}
+
+// ---------------------------------------------------------------------------------------
+// Accents placed by the layout, TeX's thin space after a comma, a formula's label as math,
+// and the SVG text's overline.
+
+namespace {
+
+/// The inked pixels of a label drawn alone: their bounding box, in pixels of 20 a point.
+struct pixel_box {
+    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+    bool empty() const { return x1 < 0; }
+    double centre_x() const { return (x0 + x1 + 1) / 2.0; }
+};
+
+constexpr double px_per_pt = 20;
+constexpr double label_pt = 10;
+
+/// Draws the TeX label in `family` at label_pt, its baseline's left end at (4 pt, 16 pt), and
+/// returns the box of its ink in the rows from `from` to above `below` (all rows by default).
+pixel_box drawn_ink(const std::string& tex, const std::string& family, int below = 1 << 30, int from = 0) {
+    const int w = 40 * static_cast<int>(px_per_pt);
+    const int h = 24 * static_cast<int>(px_per_pt);
+    plot::surface_ptr s(cairo_image_surface_create(CAIRO_FORMAT_A8, w, h));
+    plot::context_ptr cr(cairo_create(s.get()));
+    cairo_scale(cr.get(), px_per_pt, px_per_pt);
+    const plot::text_engine engine(cr.get(), family);
+    engine.draw_on_baseline(plot::tex_label(tex), label_pt, 4, 16);
+    cairo_surface_flush(s.get());
+    const unsigned char* data = cairo_image_surface_get_data(s.get());
+    const int stride = cairo_image_surface_get_stride(s.get());
+    pixel_box b;
+    for (int y = std::max(from, 0); y < std::min(h, below); ++y) {
+        for (int x = 0; x < w; ++x) {
+            if (data[y * stride + x] <= 64) continue;
+            b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x);
+            b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
+        }
+    }
+    return b;
+}
+
+}  // namespace
+
+TEST(Notation, EveryAccentSitsCentredAboveItsLetter) {
+    // Every accent of the table drawn as a mark (the overline is a line over a run) over
+    // Latin and Greek, italic and upright letters, in the paper's and the slides' fonts: its
+    // ink is above the letter's ink, clear of it, and centred on its optical centre within 0.1 em (an
+    // italic letter's accent stands right of the middle of its ink, along its slope).
+    const std::vector<std::string> bases = {"\\theta", "\\vartheta", "\\psi", "\\phi", "\\omega", "i", "j", "l", "W",
+                                            "x", "\\Theta", "\\mathrm{x}", "\\mathrm{W}"};
+    int checked = 0;
+    double worst = 0;
+    for (const std::string family : {"CMU Serif, DejaVu Math TeX Gyre", "CMU Sans Serif, DejaVu Sans"}) {
+        for (const auto& m : plot::tex_macros()) {
+            if (m.kind != macro_kind::accent || m.markup.empty()) continue;
+            for (const auto& base : bases) {
+                // The letter without its accent: \imath for i and \jmath for j, as the accent draws them.
+                const std::string bare = base == "i" ? "\\mathit{\u0131}" : base == "j" ? "\\mathit{\u0237}" : base;
+                const pixel_box letter = drawn_ink("$" + bare + "$", family);
+                ASSERT_FALSE(letter.empty()) << base;
+                const std::string tex = "$\\" + std::string(m.name) + "{" + base + "}$";
+                const pixel_box accent = drawn_ink(tex, family, letter.y0);
+                const pixel_box whole = drawn_ink(tex, family);
+                const std::string what = tex + " in " + family;
+                ASSERT_FALSE(accent.empty()) << what << ": no ink above the letter (the accent is lost or inside it)";
+                // Nothing of the accent reaches the letter's rows but what is above it.
+                EXPECT_EQ(whole.y0, accent.y0) << what;
+                EXPECT_LE(accent.y1, letter.y0 - 0.02 * label_pt * px_per_pt) << what << ": the accent touches the letter";
+                // The letter's optical centre: the middle of the ink of its top part (the
+                // stem of j, not its hook; the loop of ϑ).
+                const int band = letter.y0 + static_cast<int>(0.3 * (letter.y1 - letter.y0 + 1));
+                const pixel_box top = drawn_ink("$" + bare + "$", family, band + 1, letter.y0);
+                EXPECT_NEAR(accent.centre_x(), top.centre_x(), 0.1 * label_pt * px_per_pt) << what;
+                worst = std::max(worst, std::fabs(accent.centre_x() - top.centre_x()) / (label_pt * px_per_pt));
+                EXPECT_LE(letter.y0 - accent.y1, 0.2 * label_pt * px_per_pt) << what << ": the accent floats off";
+                ++checked;
+            }
+        }
+    }
+    EXPECT_EQ(checked, 2 * 6 * 13);
+    std::printf("accents: farthest from the optical centre %.3f em\n", worst);
+}
+
+TEST(Notation, AccentsAreCutFromTheirRunsInTheirElements) {
+    using plot::split_accents;
+    auto pieces = split_accents("<i>a\u03b8\u0307b</i> c");
+    ASSERT_EQ(pieces.size(), 3u);
+    EXPECT_EQ(pieces[0].text, "<i>a</i>");
+    EXPECT_EQ(pieces[0].mark, "");
+    EXPECT_EQ(pieces[1].text, "<i>\u03b8</i>");
+    EXPECT_EQ(pieces[1].mark, "\u0307");
+    EXPECT_EQ(pieces[2].text, "<i>b</i> c");
+    // Two marks on one letter stay together; a run of nothing but tags is left out.
+    pieces = split_accents("<span overline=\"single\"><b>x\u0302\u0307</b></span>");
+    ASSERT_EQ(pieces.size(), 1u);
+    EXPECT_EQ(pieces[0].text, "<span overline=\"single\"><b>x</b></span>");
+    EXPECT_EQ(pieces[0].mark, "\u0302\u0307");
+    // An entity is one character; the vector arrow (U+20D7) is a mark too.
+    pieces = split_accents("&amp;\u20d7");
+    ASSERT_EQ(pieces.size(), 1u);
+    EXPECT_EQ(pieces[0].text, "&amp;");
+    EXPECT_EQ(pieces[0].mark, "\u20d7");
+    EXPECT_EQ(split_accents("no accents").size(), 1u);
+    // An accent on i or j drops its dot: TeX's \imath and \jmath.
+    EXPECT_EQ(tex_to_markup("$\\dot i \\hat j$"), "<i>\u0131\u0307</i><i>\u0237\u0302</i>");
+    EXPECT_EQ(tex_to_latex("$\\dot i$"), "$\\dot{i}$");
+}
+
+TEST(Notation, ThinSpaceAfterACommaInMath) {
+    // TeX's punctuation class: a thin space after a comma in math, none in scripts.
+    EXPECT_EQ(tex_to_markup("$f(a,b)$"), "<i>f</i>(<i>a</i>,\u2009<i>b</i>)");
+    EXPECT_EQ(tex_to_markup("$f(a, b)$"), "<i>f</i>(<i>a</i>,\u2009<i>b</i>)");
+    EXPECT_EQ(tex_to_markup("$x_{i,j}$"), "<i>x</i><sub><i>i</i>,<i>j</i></sub>");
+    // Text keeps its commas as they are; LaTeX spaces the comma itself.
+    EXPECT_EQ(tex_to_markup("a,b $a,b$"), "a,b <i>a</i>,\u2009<i>b</i>");
+    EXPECT_EQ(tex_to_latex("$f(a,b)$"), "$f(a,b)$");
+    EXPECT_EQ(tex_to_plain("$f(a,b)$"), "f(a,\u2009b)");
+}
+
+TEST(Notation, FormulaReadsAsMath) {
+    const auto tex = [](const std::string& f) { return pendulum::formula_tex(pendulum::formula(f)); };
+    const std::pair<std::string, std::string> cases[] = {
+        {"sqrt(1/cos(theta0/2))", "\\sqrt{\\frac{1}{\\cos(\\frac{\\theta_0}{2})}}"},
+        {"1 + theta0^2/16", "1 + \\frac{\\theta_0^{2}}{16}"},
+        {"2*pi*sqrt(t)", "2\\,\\pi\\,\\sqrt{t}"},
+        {"2pi", "2\\,\\pi"},
+        {"2*3", "2 \\cdot 3"},
+        {"\u03c0*\u03b80", "\\pi\\,\\theta_0"},
+        {"(1+theta0)*(1-theta0)", "(1 + \\theta_0)\\,(1 - \\theta_0)"},
+        {"1 - (theta0 - 1)", "1 - (\\theta_0 - 1)"},
+        {"1 - theta0 - 1", "1 - \\theta_0 - 1"},
+        {"-(theta0-1)^2", "-(\\theta_0 - 1)^{2}"},
+        {"-2^2", "-2^{2}"},
+        {"-(-t)", "-(-t)"},
+        {"2^3^2", "2^{3^{2}}"},
+        {"(2^3)^2", "(2^{3})^{2}"},
+        {"(1/2)^t", "(\\frac{1}{2})^{t}"},
+        {"1.5e-3*log(theta0)", "1.5 \\times 10^{-3}\\,\\ln(\\theta_0)"},
+        {"2E+5", "2 \\times 10^{5}"},
+        {"abs(sin(t))", "\\left|\\sin(t)\\right|"},
+        {"exp(asin(t)) + acos(t)*atan(t)", "\\exp(\\arcsin(t)) + \\arccos(t)\\,\\arctan(t)"},
+        {"tan(t) + sinh(t) + cosh(t) + tanh(t)", "\\tan(t) + \\sinh(t) + \\cosh(t) + \\tanh(t)"},
+        {"agm(1, cos(theta0/2))", "\\mathrm{agm}(1, \\cos(\\frac{\\theta_0}{2}))"},
+        {"besselj(-2, t)", "J_{-2}(t)"},
+        {"ellipk(sin(theta0/2)^2) + ellipe(t)", "K(\\sin(\\frac{\\theta_0}{2})^{2}) + E(t)"},
+    };
+    for (const auto& [formula, expected] : cases) {
+        EXPECT_EQ(tex(formula), expected) << formula;
+        // The engine draws every one of them, and LaTeX gets the same math.
+        EXPECT_NO_THROW(tex_to_markup("$" + expected + "$")) << formula;
+        EXPECT_EQ(tex_to_latex("$" + expected + "$").substr(0, 1), "$") << formula;
+    }
+}
+
+TEST(Notation, FormulasDefaultLegendLabelIsItsMath) {
+    const auto label = [](const std::string& f) { return figures::method_label(pendulum::parse_method("formula:" + f)); };
+    const plot::label l = label("sqrt(1/cos(theta0/2))");
+    EXPECT_EQ(l.markup, tex_to_markup("$\\sqrt{\\frac{1}{\\cos(\\frac{\\theta_0}{2})}}$"));
+    EXPECT_EQ(l.latex, tex_to_latex("$\\sqrt{\\frac{1}{\\cos(\\frac{\\theta_0}{2})}}$"));
+    // The formula itself stays the formula.
+    EXPECT_EQ(pendulum::parse_method("formula:sqrt(1/cos(theta0/2))").label(), "sqrt(1/cos(theta0/2))");
+    // A label holds at most max_label_bytes: a formula whose TeX (with its dollars) has
+    // 1000 bytes reads as math, one of 1001 as its text. 200 terms 1 + 1 + ... + 11...1:
+    // 4 bytes a term and the last one's digits.
+    const auto terms = [](std::size_t digits) {
+        std::string f;
+        for (int i = 0; i < 199; ++i) f += "1+";
+        return f + std::string(digits, '1');
+    };
+    ASSERT_EQ(pendulum::formula_tex(pendulum::formula(terms(202))).size() + 2, plot::max_label_bytes);
+    EXPECT_NE(label(terms(202)).markup.find("1 + 1"), std::string::npos) << "1000 bytes: math";
+    EXPECT_EQ(label(terms(203)).markup, tex_to_markup(terms(203))) << "1001 bytes: the formula's text";
+    EXPECT_EQ(label(terms(203)).markup.find("1 + 1"), std::string::npos);
+}
+
+TEST(Notation, FormulaLabelInARenderedLegend) {
+    // The spec's formula, drawn: the legend's text (SVG text) is the math, not the formula.
+    const auto dir = temp_dir("notation-formula-legend");
+    std::ofstream(dir / "f.toml") << "[figure]\ncolumns = 1\n[[panel]]\nplot = \"period\"\n"
+                                     "methods = [\"exact\", { formula = \"sqrt(1/cos(theta0/2))\" }]\n";
+    const auto r = run_cli("render f.toml -f svg --set svg_text=text", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string svg = slurp(dir / "f.svg");
+    std::string texts;
+    static const std::regex text("<text[^>]*>(.*?)</text>");
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator(); ++it) {
+        texts += (*it)[1].str() + "\n";
+    }
+    EXPECT_EQ(texts.find("theta0"), std::string::npos) << texts;
+    EXPECT_EQ(texts.find("sqrt"), std::string::npos) << texts;
+    EXPECT_NE(texts.find("\u221a<tspan text-decoration=\"overline\">1/cos("), std::string::npos) << texts;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Notation, SvgTextOverlineIsOneLineOverTheWholeRun) {
+    // \overline{x_1} and \sqrt{1 - k^2}: one <tspan> carries the overline around the runs of
+    // the letter and of its script, rather than each run its own at its own height.
+    const auto dir = temp_dir("notation-svg-overline");
+    std::ofstream(dir / "o.toml") << "[figure]\ncolumns = 1\ntitle = '$\\overline{x_1}$ and $\\sqrt{1 - k^2}$'\n"
+                                     "[[panel]]\nplot = \"period\"\nmethods = [\"exact\"]\n";
+    const auto r = run_cli("render o.toml -f svg --set svg_text=text", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string svg = slurp(dir / "o.svg");
+    static const std::regex overlined("<tspan text-decoration=\"overline\">(.*?)</tspan></tspan>");
+    std::vector<std::string> runs;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), overlined); it != std::sregex_iterator(); ++it) {
+        runs.push_back((*it)[1].str());
+    }
+    ASSERT_EQ(runs.size(), 2u) << svg;
+    EXPECT_NE(runs[0].find(">x<"), std::string::npos) << runs[0];
+    EXPECT_TRUE(runs[0].ends_with(">1")) << runs[0];
+    EXPECT_NE(runs[1].find(">k<"), std::string::npos) << runs[1];
+    EXPECT_TRUE(runs[1].ends_with(">2")) << runs[1];
+    // No other element draws an overline of its own.
+    std::size_t count = 0;
+    for (std::size_t pos = 0; (pos = svg.find("text-decoration", pos)) != std::string::npos; ++pos) ++count;
+    EXPECT_EQ(count, 2u);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Notation, AccentCutsLeaveBadMarkupBad) {
+    // The cuts close and reopen the elements around an accent, but an element the markup
+    // leaves open stays open, and an end without a start stays: Pango refuses both.
+    auto pieces = plot::split_accents("<i>x\u0302 unclosed");
+    ASSERT_EQ(pieces.size(), 2u);
+    EXPECT_EQ(pieces[0].text, "<i>x</i>");
+    EXPECT_EQ(pieces[1].text, "<i> unclosed");
+    pieces = plot::split_accents("a</i>");
+    ASSERT_EQ(pieces.size(), 1u);
+    EXPECT_EQ(pieces[0].text, "a</i>");
+    plot::text_shaper shaper("CMU Serif");
+    EXPECT_THROW(shaper.box("<i>x\u0302 unclosed", 10), std::invalid_argument);
+    EXPECT_THROW(shaper.box("<i>unclosed", 10), std::invalid_argument);
 }

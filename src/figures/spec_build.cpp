@@ -5,6 +5,7 @@
 #include "figures/errors.hpp"
 #include "figures/figure_data.hpp"
 #include "figures/panel_support.hpp"
+#include "pendulum/formula.hpp"
 #include "plot/tex_markup.hpp"
 
 #include <algorithm>
@@ -83,7 +84,18 @@ std::string panel_name(std::size_t i) {
     return letters;
 }
 
-plot::label method_label(const pendulum::method_choice& m) { return plot::tex_label(m.label()); }
+plot::label method_label(const pendulum::method_choice& m) {
+    if (m.user) {
+        // A user's formula reads as math (sqrt as a root, theta0 as a subscripted theta);
+        // one whose TeX is past a label's bounds (bytes, nesting) reads as its text.
+        const std::string tex = "$" + pendulum::formula_tex(*m.user) + "$";
+        try {
+            if (tex.size() <= plot::max_label_bytes) return plot::tex_label(tex);
+        } catch (const std::invalid_argument&) {
+        }
+    }
+    return plot::tex_label(m.label());
+}
 
 plot::figure figure_grid(const figure_spec& spec, const build_options& options) {
     const int n = static_cast<int>(panels_with(spec, options).size());

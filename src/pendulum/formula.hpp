@@ -62,6 +62,12 @@ private:
     bool uses_t_ = false;
 };
 
+/// The formula as TeX math (without the dollars), for its default label: sqrt as \sqrt,
+/// theta0 as \theta_0, pi as \pi, / as \frac, * as a thin space (\cdot before a number),
+/// functions by their TeX names (log is \ln), written from the tree, so parentheses stand
+/// only where precedence needs them.
+std::string formula_tex(const formula& f);
+
 /// T/T0 of a period formula at theta0: in doubles where the amplitude is its double, in
 /// MPFR from the exact amplitude otherwise (close to pi, from an expression). NaN where
 /// the formula is not finite.

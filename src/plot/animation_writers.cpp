@@ -23,26 +23,24 @@ namespace plot {
 
 namespace {
 
-/// Runs draw(i) for every i in [first, last] on `jobs` workers (0: one per usable CPU) and
-/// hands the results to use(i, result) in order, holding at most a few results at a time.
-template <class Result, class Draw, class Use>
-void in_order(int first, int last, unsigned jobs, Draw draw, Use use) {
-    const unsigned workers = worker_count(jobs, static_cast<std::size_t>(last - first + 1));
-    const int window = static_cast<int>(2 * workers);
-    std::mutex mutex;
-    std::condition_variable changed;
-    std::deque<std::optional<Result>> ready(static_cast<std::size_t>(window));
-    int next = first;       // next frame to draw
-    int consumed = first;   // next frame to use
-    std::exception_ptr error;
-    auto worker = [&] {
+/// The shared state of in_order: which index is drawn next and which used next, the
+/// results drawn and not yet used (a window of them), and the first failure.
+template <class Result>
+class ordered_results {
+public:
+    ordered_results(int first, int last, int window)
+        : last_(last), window_(window), ready_(static_cast<std::size_t>(window)), next_(first), consumed_(first) {}
+
+    /// A worker's loop: draws the next index within the window until all are drawn or one failed.
+    template <class Draw>
+    void work(Draw& draw) {
         for (;;) {
             int i = 0;
             {
-                std::unique_lock lock(mutex);
-                changed.wait(lock, [&] { return error || next > last || next < consumed + window; });
-                if (error || next > last) return;
-                i = next++;
+                std::unique_lock lock(mutex_);
+                changed_.wait(lock, [&] { return error_ || next_ > last_ || next_ < consumed_ + window_; });
+                if (error_ || next_ > last_) return;
+                i = next_++;
             }
             std::optional<Result> result;
             std::exception_ptr failure;
@@ -51,40 +49,78 @@ void in_order(int first, int last, unsigned jobs, Draw draw, Use use) {
             } catch (...) {
                 failure = std::current_exception();
             }
-            std::lock_guard lock(mutex);
-            if (failure && !error) error = failure;
-            ready[static_cast<std::size_t>(i % window)] = std::move(result);
-            changed.notify_all();
+            std::lock_guard lock(mutex_);
+            if (failure && !error_) error_ = failure;
+            slot(i) = std::move(result);
+            changed_.notify_all();
         }
-    };
+    }
+
+    /// The result of index i once drawn, or nothing if a worker failed.
+    std::optional<Result> take(int i) {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return error_ || slot(i).has_value(); });
+        if (error_) return std::nullopt;
+        std::optional<Result> result = std::move(slot(i));
+        slot(i).reset();
+        return result;
+    }
+
+    /// Index i used: its place in the window is free.
+    void used() {
+        std::lock_guard lock(mutex_);
+        ++consumed_;
+        changed_.notify_all();
+    }
+
+    /// A failure while using a result stops the workers.
+    void fail(std::exception_ptr e) {
+        std::lock_guard lock(mutex_);
+        if (!error_) error_ = std::move(e);
+        changed_.notify_all();
+    }
+
+    /// Stops the workers; returns the first failure (a result left unused is one).
+    std::exception_ptr finish() {
+        std::lock_guard lock(mutex_);
+        if (!error_ && consumed_ <= last_) error_ = std::make_exception_ptr(std::logic_error("frames left unused"));
+        next_ = last_ + 1;
+        changed_.notify_all();
+        return error_;
+    }
+
+private:
+    std::optional<Result>& slot(int i) { return ready_[static_cast<std::size_t>(i % window_)]; }
+
+    const int last_;
+    const int window_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::deque<std::optional<Result>> ready_;
+    int next_;      // next index to draw
+    int consumed_;  // next index to use
+    std::exception_ptr error_;
+};
+
+/// Runs draw(i) for every i in [first, last] on `jobs` workers (0: one per usable CPU) and
+/// hands the results to use(i, result) in order, holding at most a few results at a time.
+template <class Result, class Draw, class Use>
+void in_order(int first, int last, unsigned jobs, Draw draw, Use use) {
+    const unsigned workers = worker_count(jobs, static_cast<std::size_t>(last - first + 1));
+    ordered_results<Result> results(first, last, static_cast<int>(2 * workers));
     std::vector<std::thread> threads;
-    for (unsigned k = 0; k < workers; ++k) threads.emplace_back(worker);
+    for (unsigned k = 0; k < workers; ++k) threads.emplace_back([&] { results.work(draw); });
     try {
         for (int i = first; i <= last; ++i) {
-            Result result;
-            {
-                std::unique_lock lock(mutex);
-                changed.wait(lock, [&] { return error || ready[static_cast<std::size_t>(i % window)].has_value(); });
-                if (error) break;
-                result = std::move(*ready[static_cast<std::size_t>(i % window)]);
-                ready[static_cast<std::size_t>(i % window)].reset();
-            }
-            use(i, std::move(result));
-            std::lock_guard lock(mutex);
-            ++consumed;
-            changed.notify_all();
+            std::optional<Result> result = results.take(i);
+            if (!result) break;
+            use(i, std::move(*result));
+            results.used();
         }
     } catch (...) {
-        std::lock_guard lock(mutex);
-        if (!error) error = std::current_exception();
-        changed.notify_all();
+        results.fail(std::current_exception());
     }
-    {
-        std::lock_guard lock(mutex);
-        if (!error && consumed <= last) error = std::make_exception_ptr(std::logic_error("frames left unused"));
-        next = last + 1;
-        changed.notify_all();
-    }
+    const std::exception_ptr error = results.finish();
     for (auto& t : threads) t.join();
     if (error) std::rethrow_exception(error);
 }

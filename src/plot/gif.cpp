@@ -210,6 +210,84 @@ struct gif_encoder::state {
         if (reference) scratch.resize(static_cast<std::size_t>(width));
         has_previous = true;
     }
+
+    /// A frame's pixels, `stride` bytes a row.
+    struct frame {
+        const unsigned char* argb;
+        int stride;
+        const std::uint32_t* row(int y) const {
+            return reinterpret_cast<const std::uint32_t*>(argb + static_cast<std::ptrdiff_t>(y) * stride);
+        }
+    };
+
+    /// A rectangle of pixels, its corners included.
+    struct rect {
+        int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+    };
+
+    /// The rectangle of a frame that shows differently from the previous frame (the whole
+    /// frame at first; one pixel if nothing changed, which keeps the frame's delay).
+    rect changed(const frame& f) {
+        if (!has_previous) return {0, 0, width - 1, height - 1};
+        rect r{width, height, -1, -1};
+        for (int y = 0; y < height; ++y) {
+            const auto* a = f.row(y);
+            const auto* b = previous_row(y);
+            if (std::memcmp(a, b, static_cast<std::size_t>(width) * 4) == 0) continue;
+            // What changed on screen: pixels whose colour index changed.
+            int left = first_difference(a, b, 0, width);
+            int right = last_difference(a, b, width);
+            while (left <= right && shown_alike(a[left], b[left])) ++left;
+            while (right > left && shown_alike(a[right], b[right])) --right;
+            if (left > right) continue;
+            r.y0 = std::min(r.y0, y);
+            r.y1 = y;
+            r.x0 = std::min(r.x0, left);
+            r.x1 = std::max(r.x1, right);
+        }
+        if (r.x1 < 0) return {0, 0, 0, 0};
+        return r;
+    }
+
+    /// The graphics control block of frame n: its delay in hundredths of a second, rounded
+    /// so that the delays add up to the true time, and the transparent index after the first.
+    void put_control(int n, bool first) {
+        const auto centiseconds = [&](int k) { return static_cast<int>(std::lround(100.0 * k / fps)); };
+        GraphicsControlBlock gcb{};
+        gcb.DisposalMode = DISPOSE_DO_NOT;
+        gcb.UserInputFlag = false;
+        gcb.DelayTime = centiseconds(n + 1) - centiseconds(n);
+        gcb.TransparentColor = first ? NO_TRANSPARENT_COLOR : transparent;
+        GifByteType ext[4];
+        EGifGCBToExtension(&gcb, ext);
+        if (EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, sizeof ext, ext) == GIF_ERROR) fail("delay", gif->Error);
+    }
+
+    /// Palette indices of the rectangle, a row at a time; a pixel equal to the previous
+    /// frame's is transparent, which keeps it, so runs of them compress to almost nothing.
+    void put_pixels(const frame& f, const rect& r, bool first) {
+        const int rw = r.x1 - r.x0 + 1;
+        line.resize(static_cast<std::size_t>(rw));
+        for (int y = r.y0; y <= r.y1; ++y) {
+            const auto* a = f.row(y);
+            const auto* b = first ? nullptr : previous_row(y);
+            GifPixelType* out = line.data();
+            std::uint32_t last_pixel = a[r.x0] + 1;
+            GifPixelType last_index = 0;
+            for (int x = r.x0; x <= r.x1; ++x) {
+                if (b && shown_alike(a[x], b[x])) {
+                    out[x - r.x0] = static_cast<GifPixelType>(transparent);
+                    continue;
+                }
+                if (a[x] != last_pixel) {
+                    last_pixel = a[x];
+                    last_index = index_of(last_pixel);
+                }
+                out[x - r.x0] = last_index;
+            }
+            if (EGifPutLine(gif, out, rw) == GIF_ERROR) fail("pixels", gif->Error);
+        }
+    }
 };
 
 gif_encoder::gif_encoder(int width, int height, std::vector<rgb8> palette, double fps, int first_frame)
@@ -260,75 +338,17 @@ gif_encoder::~gif_encoder() {
 void gif_encoder::add_frame(const unsigned char* argb, int stride) {
     auto& s = *state_;
     if (!s.gif) throw std::logic_error("GIF already finished");
-    const int w = s.width;
-    const int h = s.height;
-    const auto row = [&](int y) {
-        return reinterpret_cast<const std::uint32_t*>(argb + static_cast<std::ptrdiff_t>(y) * stride);
-    };
+    const state::frame f{argb, stride};
     const bool first = !s.has_previous;
-    // The rectangle that changed since the previous frame (the whole frame at first).
-    int x0 = 0, y0 = 0, x1 = w - 1, y1 = h - 1;
-    if (!first) {
-        x0 = w;
-        y0 = h;
-        x1 = -1;
-        y1 = -1;
-        for (int y = 0; y < h; ++y) {
-            const auto* a = row(y);
-            const auto* b = s.previous_row(y);
-            if (std::memcmp(a, b, static_cast<std::size_t>(w) * 4) == 0) continue;
-            // What changed on screen: pixels whose colour index changed.
-            int left = first_difference(a, b, 0, w);
-            int right = last_difference(a, b, w);
-            while (left <= right && s.shown_alike(a[left], b[left])) ++left;
-            while (right > left && s.shown_alike(a[right], b[right])) --right;
-            if (left > right) continue;
-            y0 = std::min(y0, y);
-            y1 = y;
-            x0 = std::min(x0, left);
-            x1 = std::max(x1, right);
-        }
-        if (x1 < 0) x0 = y0 = x1 = y1 = 0;  // unchanged: one pixel keeps the frame's delay
+    const state::rect r = s.changed(f);
+    s.put_control(first_frame_ + frames_, first);
+    if (EGifPutImageDesc(s.gif, r.x0, r.y0, r.x1 - r.x0 + 1, r.y1 - r.y0 + 1, false, nullptr) == GIF_ERROR) {
+        fail("frame", s.gif->Error);
     }
-    const int rw = x1 - x0 + 1;
-    const int rh = y1 - y0 + 1;
-    // Delays in hundredths of a second, rounded so that they add up to the true time.
-    const auto centiseconds = [&](int n) { return static_cast<int>(std::lround(100.0 * n / s.fps)); };
-    GraphicsControlBlock gcb{};
-    gcb.DisposalMode = DISPOSE_DO_NOT;
-    gcb.UserInputFlag = false;
-    const int n = first_frame_ + frames_;
-    gcb.DelayTime = centiseconds(n + 1) - centiseconds(n);
-    gcb.TransparentColor = first ? NO_TRANSPARENT_COLOR : s.transparent;
-    GifByteType ext[4];
-    EGifGCBToExtension(&gcb, ext);
-    if (EGifPutExtension(s.gif, GRAPHICS_EXT_FUNC_CODE, sizeof ext, ext) == GIF_ERROR) fail("delay", s.gif->Error);
-    if (EGifPutImageDesc(s.gif, x0, y0, rw, rh, false, nullptr) == GIF_ERROR) fail("frame", s.gif->Error);
-    // Palette indices of the rectangle, a row at a time; a pixel equal to the previous
-    // frame's is transparent, which keeps it, so runs of them compress to almost nothing.
-    s.line.resize(static_cast<std::size_t>(rw));
-    for (int y = y0; y <= y1; ++y) {
-        const auto* a = row(y);
-        const auto* b = first ? nullptr : s.previous_row(y);
-        GifPixelType* out = s.line.data();
-        std::uint32_t last_pixel = a[x0] + 1;
-        GifPixelType last_index = 0;
-        for (int x = x0; x <= x1; ++x) {
-            if (b && s.shown_alike(a[x], b[x])) {
-                out[x - x0] = static_cast<GifPixelType>(s.transparent);
-                continue;
-            }
-            if (a[x] != last_pixel) {
-                last_pixel = a[x];
-                last_index = s.index_of(last_pixel);
-            }
-            out[x - x0] = last_index;
-        }
-        if (EGifPutLine(s.gif, out, rw) == GIF_ERROR) fail("pixels", s.gif->Error);
-    }
+    s.put_pixels(f, r, first);
     // Keep this frame's pixels (only the changed rows differ from the previous ones).
     if (first) s.start_keeping();
-    for (int y = y0; y <= y1; ++y) s.keep(y, row(y));
+    for (int y = r.y0; y <= r.y1; ++y) s.keep(y, f.row(y));
     ++frames_;
 }
 

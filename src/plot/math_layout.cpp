@@ -28,52 +28,178 @@ std::size_t closing(const std::string& s, std::size_t from, const std::string& t
 
 }  // namespace
 
-std::vector<math_piece> split_scripts(const std::string& markup) {
-    std::vector<math_piece> pieces(1);
-    int depth = 0;  // open elements other than top-level scripts
-    std::size_t i = 0;
-    bool after_script = false;
-    while (i < markup.size()) {
-        if (markup[i] != '<') {
-            if (after_script) pieces.emplace_back();
-            after_script = false;
-            pieces.back().base += markup[i++];
-            continue;
-        }
-        const std::size_t end = markup.find('>', i);
-        if (end == std::string::npos) {  // not markup; Pango reports it
-            pieces.back().base += markup.substr(i);
-            break;
-        }
-        const std::string tag = markup.substr(i + 1, end - i - 1);
-        if (depth == 0 && (tag == "sup" || tag == "sub")) {
-            const std::size_t close = closing(markup, end + 1, tag);
-            if (close != std::string::npos) {
-                const bool is_sup = tag == "sup";
-                // A second script of the same kind starts a new piece with an empty base.
-                if (!after_script || (is_sup ? pieces.back().has_sup : pieces.back().has_sub)) {
-                    if (after_script) pieces.emplace_back();
-                }
-                math_piece& p = pieces.back();
-                (is_sup ? p.sup : p.sub) = markup.substr(end + 1, close - end - 1);
-                (is_sup ? p.has_sup : p.has_sub) = true;
-                after_script = true;
-                i = close + tag.size() + 3;
+namespace {
+
+/// Builds the pieces of split_scripts: the depth of elements other than top-level scripts,
+/// and whether the last thing read was a script.
+class script_splitter {
+public:
+    explicit script_splitter(const std::string& markup) : markup_(markup) {}
+
+    std::vector<math_piece> run() {
+        while (i_ < markup_.size()) {
+            if (markup_[i_] != '<') {
+                base_text(markup_.substr(i_, 1));
+                ++i_;
                 continue;
             }
+            const std::size_t end = markup_.find('>', i_);
+            if (end == std::string::npos) {  // not markup; Pango reports it
+                pieces_.back().base += markup_.substr(i_);
+                break;
+            }
+            const std::string tag = markup_.substr(i_ + 1, end - i_ - 1);
+            if (!script(tag, end)) element(tag, end);
         }
-        if (after_script) pieces.emplace_back();
-        after_script = false;
-        if (!tag.empty() && tag[0] == '/') {
-            --depth;
-        } else if (tag.empty() || tag.back() != '/') {
-            ++depth;
-        }
-        pieces.back().base += markup.substr(i, end - i + 1);
-        i = end + 1;
+        return std::move(pieces_);
     }
-    return pieces;
+
+private:
+    /// Text (or a tag) on the baseline: after a script it starts a new piece.
+    void base_text(const std::string& text) {
+        if (after_script_) pieces_.emplace_back();
+        after_script_ = false;
+        pieces_.back().base += text;
+    }
+
+    /// A top-level <sup> or <sub> whose tag ends at `end`: true if taken as a script.
+    bool script(const std::string& tag, std::size_t end) {
+        if (depth_ != 0 || (tag != "sup" && tag != "sub")) return false;
+        const std::size_t close = closing(markup_, end + 1, tag);
+        if (close == std::string::npos) return false;
+        const bool is_sup = tag == "sup";
+        // A second script of the same kind starts a new piece with an empty base.
+        if (after_script_ && (is_sup ? pieces_.back().has_sup : pieces_.back().has_sub)) pieces_.emplace_back();
+        math_piece& p = pieces_.back();
+        (is_sup ? p.sup : p.sub) = markup_.substr(end + 1, close - end - 1);
+        (is_sup ? p.has_sup : p.has_sub) = true;
+        after_script_ = true;
+        i_ = close + tag.size() + 3;
+        return true;
+    }
+
+    /// Any other element's tag, ending at `end`: part of the base, counted in the depth.
+    void element(const std::string& tag, std::size_t end) {
+        if (!tag.empty() && tag[0] == '/') {
+            --depth_;
+        } else if (tag.empty() || tag.back() != '/') {
+            ++depth_;
+        }
+        base_text(markup_.substr(i_, end - i_ + 1));
+        i_ = end + 1;
+    }
+
+    const std::string& markup_;
+    std::vector<math_piece> pieces_ = std::vector<math_piece>(1);
+    std::size_t i_ = 0;
+    int depth_ = 0;  // open elements other than top-level scripts
+    bool after_script_ = false;
+};
+
+}  // namespace
+
+std::vector<math_piece> split_scripts(const std::string& markup) { return script_splitter(markup).run(); }
+
+std::size_t combining_marks_at(const std::string& s, std::size_t pos) {
+    std::size_t end = pos;
+    for (;;) {
+        const auto byte = [&](std::size_t k) { return end + k < s.size() ? static_cast<unsigned char>(s[end + k]) : 0; };
+        if ((byte(0) == 0xcc && byte(1) >= 0x80 && byte(1) <= 0xbf) || (byte(0) == 0xcd && byte(1) >= 0x80 && byte(1) <= 0xaf)) {
+            end += 2;
+        } else if (byte(0) == 0xe2 && byte(1) == 0x83 && byte(2) >= 0x90 && byte(2) <= 0xbf) {
+            end += 3;
+        } else {
+            return end - pos;
+        }
+    }
 }
+
+namespace {
+
+/// Builds the pieces of split_accents: the elements open at the cursor, and the run so far.
+class accent_splitter {
+public:
+    std::vector<accent_piece> run(const std::string& markup) {
+        for (std::size_t i = 0; i < markup.size();) {
+            i = markup[i] == '<' ? tag(markup, i) : character(markup, i);
+        }
+        // The rest as the markup leaves it: an element left open stays open, for Pango to report.
+        if (has_text_) pieces_.push_back({text_, {}});
+        return std::move(pieces_);
+    }
+
+private:
+    /// An element's start or end at markup[i]; returns the position after it.
+    std::size_t tag(const std::string& markup, std::size_t i) {
+        const std::size_t end = markup.find('>', i);
+        if (end == std::string::npos) {  // not markup; Pango reports it
+            text_ += markup.substr(i);
+            has_text_ = true;
+            return markup.size();
+        }
+        const std::string whole = markup.substr(i, end - i + 1);
+        text_ += whole;
+        if (whole.size() > 2 && whole[1] == '/') {
+            if (!open_.empty()) open_.pop_back();
+        } else if (whole[whole.size() - 2] != '/') {
+            open_.push_back(whole);
+        }
+        return end + 1;
+    }
+
+    /// A character (or entity) at markup[i] and the combining marks after it.
+    std::size_t character(const std::string& markup, std::size_t i) {
+        std::size_t end = i + 1;
+        if (markup[i] == '&') {
+            const std::size_t semicolon = markup.find(';', i);
+            end = semicolon == std::string::npos ? markup.size() : semicolon + 1;
+        } else {
+            while (end < markup.size() && (static_cast<unsigned char>(markup[end]) & 0xc0) == 0x80) ++end;
+        }
+        const std::size_t marks = combining_marks_at(markup, end);
+        if (marks == 0 || (end - i == 1 && markup[i] == ' ')) {
+            text_ += markup.substr(i, end + marks - i);
+            has_text_ = true;
+            return end + marks;
+        }
+        cut();
+        text_ = opened() + markup.substr(i, end - i);
+        has_text_ = true;
+        cut(markup.substr(end, marks));
+        return end + marks;
+    }
+
+    std::string opened() const {
+        std::string out;
+        for (const auto& t : open_) out += t;
+        return out;
+    }
+
+    std::string closed() const {
+        std::string out;
+        for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
+            const std::size_t name_end = it->find_first_of(" >");
+            out += "</" + it->substr(1, name_end - 1) + ">";
+        }
+        return out;
+    }
+
+    /// Ends the current piece (kept if it has text) and starts the next inside the open elements.
+    void cut(const std::string& mark = {}) {
+        if (has_text_) pieces_.push_back({text_ + closed(), mark});
+        text_ = opened();
+        has_text_ = false;
+    }
+
+    std::vector<accent_piece> pieces_;
+    std::vector<std::string> open_;  // the start tags of the elements open here
+    std::string text_;
+    bool has_text_ = false;
+};
+
+}  // namespace
+
+std::vector<accent_piece> split_accents(const std::string& markup) { return accent_splitter().run(markup); }
 
 bool only_primes(const std::string& markup) {
     if (markup.empty()) return false;

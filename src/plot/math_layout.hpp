@@ -21,6 +21,23 @@ struct math_piece {
 /// each other belong to one piece. Scripts nested in other elements stay in the base.
 std::vector<math_piece> split_scripts(const std::string& markup);
 
+/// A run of markup cut at its accented characters: either a run without accents, or one
+/// character with the combining marks (U+0300..U+036F, U+20D0..U+20FF) that sat on it, which
+/// the layout places from the character's ink, as TeX places a math accent.
+struct accent_piece {
+    std::string text;  ///< well-formed markup: the run, or the accented character in the elements around it
+    std::string mark;  ///< the combining marks over `text`; empty for a run without accents
+};
+
+/// Cuts markup at its accented characters, closing the open elements before each cut and
+/// opening them again after it, so that every piece is markup of its own (the last piece
+/// is left as the markup ends: an element it leaves open, Pango reports). Runs of nothing
+/// but tags are left out.
+std::vector<accent_piece> split_accents(const std::string& markup);
+
+/// The length in bytes of the combining marks (U+0300..U+036F, U+20D0..U+20FF) at s[pos].
+std::size_t combining_marks_at(const std::string& s, std::size_t pos);
+
 /// True if the markup is only prime marks (′ ″ ‴): TeX's prime is a superscript whose
 /// glyph stands on the baseline, while the Unicode glyph is drawn already raised.
 bool only_primes(const std::string& markup);

@@ -248,6 +248,80 @@ bool encode_png(png_sink* sink, png_bytepp rows, png_uint_32 width, png_uint_32 
     return true;
 }
 
+/// Cairo's RGB24 pixels, `stride` bytes a row, as the PNG passes read them.
+struct rgb24_pixels {
+    const unsigned char* data;
+    int stride;
+    int width;
+    int height;
+    const std::uint32_t* row(int y) const {
+        return reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+    }
+    std::uint32_t pixel(int x, int y) const { return row(y)[x] & 0xffffffu; }
+};
+
+/// The grey pass: each pixel's blue byte into `out`; false at the first row with a pixel
+/// that is not grey.
+bool grey_pass(const rgb24_pixels& im, std::vector<png_byte>& out) {
+    for (int y = 0; y < im.height; ++y) {
+        // A whole row at a time, without a branch per pixel (the compiler vectorises it).
+        const std::uint32_t* src = im.row(y);
+        png_bytep dst = out.data() + static_cast<std::size_t>(y) * im.width;
+        std::uint32_t off_grey = 0;
+        for (int x = 0; x < im.width; ++x) {
+            const std::uint32_t p = src[x] & 0xffffffu;
+            const std::uint32_t b = p & 0xff;
+            off_grey |= p ^ (b * 0x010101u);
+            dst[x] = static_cast<png_byte>(b);
+        }
+        if (off_grey != 0) return false;
+    }
+    return true;
+}
+
+/// The palette pass: each pixel's index into `out` and its colour into `palette`; false at
+/// the first pixel past 256 colours.
+bool palette_pass(const rgb24_pixels& im, std::vector<png_byte>& out, std::vector<png_color>& palette) {
+    std::unordered_map<std::uint32_t, png_byte> index;
+    // Line art is runs of one colour: a pixel like the one before needs no lookup
+    // (`last` starts as no pixel: pixels have 24 bits).
+    std::uint32_t last = 0xffffffffu;
+    png_byte last_index = 0;
+    for (int y = 0; y < im.height; ++y) {
+        png_bytep dst = out.data() + static_cast<std::size_t>(y) * im.width;
+        for (int x = 0; x < im.width; ++x) {
+            const std::uint32_t p = im.pixel(x, y);
+            if (p != last) {
+                auto it = index.find(p);
+                if (it == index.end()) {
+                    if (palette.size() == 256) return false;
+                    it = index.emplace(p, static_cast<png_byte>(palette.size())).first;
+                    palette.push_back(png_color{static_cast<png_byte>(p >> 16), static_cast<png_byte>((p >> 8) & 0xff),
+                                                static_cast<png_byte>(p & 0xff)});
+                }
+                last = p;
+                last_index = it->second;
+            }
+            dst[x] = last_index;
+        }
+    }
+    return true;
+}
+
+/// The RGB pass: three bytes a pixel into `out`.
+void rgb_pass(const rgb24_pixels& im, std::vector<png_byte>& out) {
+    out.resize(static_cast<std::size_t>(im.width) * im.height * 3);
+    for (int y = 0; y < im.height; ++y) {
+        png_bytep dst = out.data() + static_cast<std::size_t>(y) * im.width * 3;
+        for (int x = 0; x < im.width; ++x) {
+            const std::uint32_t p = im.pixel(x, y);
+            dst[3 * x] = static_cast<png_byte>(p >> 16);
+            dst[3 * x + 1] = static_cast<png_byte>((p >> 8) & 0xff);
+            dst[3 * x + 2] = static_cast<png_byte>(p & 0xff);
+        }
+    }
+}
+
 /// The PNG of width x height pixels of Cairo's RGB24, `stride` bytes a row, drawn at dpi;
 /// `pixels` holds the rows to encode.
 std::string png_of(const unsigned char* data, int stride, int width, int height, double dpi,
@@ -255,74 +329,18 @@ std::string png_of(const unsigned char* data, int stride, int width, int height,
     // The smallest exact pixel format: grey (the paper theme), a palette of at most 256
     // colours, or RGB. Each attempt is one pass that stops at the first pixel (the grey
     // one: row) it cannot hold.
-    const auto row = [&](int y) {
-        return reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
-    };
-    const auto pixel = [&](int x, int y) { return row(y)[x] & 0xffffffu; };
-    const std::size_t count = static_cast<std::size_t>(width) * height;
-    pixels.resize(count);
+    const rgb24_pixels im{data, stride, width, height};
+    pixels.resize(static_cast<std::size_t>(width) * height);
     int color_type = PNG_COLOR_TYPE_GRAY;
     int channels = 1;
     std::vector<png_color> palette;
-    bool fits = true;
-    for (int y = 0; y < height && fits; ++y) {
-        // A whole row at a time, without a branch per pixel (the compiler vectorises it).
-        const std::uint32_t* src = row(y);
-        png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width;
-        std::uint32_t off_grey = 0;
-        for (int x = 0; x < width; ++x) {
-            const std::uint32_t p = src[x] & 0xffffffu;
-            const std::uint32_t b = p & 0xff;
-            off_grey |= p ^ (b * 0x010101u);
-            dst[x] = static_cast<png_byte>(b);
-        }
-        fits = off_grey == 0;
-    }
-    if (!fits) {
+    if (!grey_pass(im, pixels)) {
         color_type = PNG_COLOR_TYPE_PALETTE;
-        fits = true;
-        std::unordered_map<std::uint32_t, png_byte> index;
-        // Line art is runs of one colour: a pixel like the one before needs no lookup
-        // (`last` starts as no pixel: pixels have 24 bits).
-        std::uint32_t last = 0xffffffffu;
-        png_byte last_index = 0;
-        for (int y = 0; y < height && fits; ++y) {
-            png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width;
-            for (int x = 0; x < width; ++x) {
-                const std::uint32_t p = pixel(x, y);
-                if (p == last) {
-                    dst[x] = last_index;
-                    continue;
-                }
-                auto it = index.find(p);
-                if (it == index.end()) {
-                    if (palette.size() == 256) {
-                        fits = false;
-                        break;
-                    }
-                    it = index.emplace(p, static_cast<png_byte>(palette.size())).first;
-                    palette.push_back(png_color{static_cast<png_byte>(p >> 16), static_cast<png_byte>((p >> 8) & 0xff),
-                                                static_cast<png_byte>(p & 0xff)});
-                }
-                dst[x] = it->second;
-                last = p;
-                last_index = it->second;
-            }
-        }
-    }
-    if (!fits) {
-        color_type = PNG_COLOR_TYPE_RGB;
-        channels = 3;
-        palette.clear();
-        pixels.resize(count * 3);
-        for (int y = 0; y < height; ++y) {
-            png_bytep dst = pixels.data() + static_cast<std::size_t>(y) * width * 3;
-            for (int x = 0; x < width; ++x) {
-                const std::uint32_t p = pixel(x, y);
-                dst[3 * x] = static_cast<png_byte>(p >> 16);
-                dst[3 * x + 1] = static_cast<png_byte>((p >> 8) & 0xff);
-                dst[3 * x + 2] = static_cast<png_byte>(p & 0xff);
-            }
+        if (!palette_pass(im, pixels, palette)) {
+            color_type = PNG_COLOR_TYPE_RGB;
+            channels = 3;
+            palette.clear();
+            rgb_pass(im, pixels);
         }
     }
     std::vector<png_bytep> rows(height);

@@ -163,8 +163,8 @@ public:
         }
     }
 
-    /// What was written.
-    const std::string& text() const { return out_; }
+    /// What was written, an overline open at its end closed.
+    std::string text() const { return overlined_ ? out_ + "</tspan>" : out_; }
 
 private:
     void add(const std::string& markup, double pt, double rise) {
@@ -176,17 +176,26 @@ private:
             if (std::fabs(r.pt - size_) > 1e-9) attributes += " font-size=\"" + svg_number(r.pt) + "\"";
             if (r.italic) attributes += " font-style=\"italic\"";
             if (r.bold) attributes += " font-weight=\"bold\"";
-            if (r.overline) attributes += " text-decoration=\"overline\"";
             if (!r.family.empty()) attributes += " font-family=\"" + css_families(r.family) + "\"";
             raised_ = up;
             dx_ = 0;
+            overline(r.overline);
             out_ += attributes.empty() ? escape_markup(r.text)
                                        : "<tspan" + attributes + ">" + escape_markup(r.text) + "</tspan>";
         }
     }
 
+    /// One <tspan> with the overline around every run under it (\sqrt's and \overline's
+    /// line), so that it is one line over the whole, not one per run at each run's height.
+    void overline(bool on) {
+        if (on == overlined_) return;
+        out_ += on ? "<tspan text-decoration=\"overline\">" : "</tspan>";
+        overlined_ = on;
+    }
+
     const text_engine& engine_;
     double size_;
+    bool overlined_ = false;  // an overline's <tspan> is open
     double raised_ = 0;  // the current baseline above the text's
     double dx_ = 0;      // a move along the baseline owed to the next run
     std::string out_;

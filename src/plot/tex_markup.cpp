@@ -301,9 +301,7 @@ private:
     /// a binary operator or relation stands at this level.
     std::string math(char closing, bool* sum = nullptr) {
         std::string out;
-        bool after_operand = false;
-        bool after_name = false;
-        int parens = 0;  // ( ... ) written in this group: what is inside them is not at its top
+        math_state state;
         for (;;) {
             skip_space();
             if (pos_ >= tex_.size()) return out;
@@ -311,28 +309,52 @@ private:
             if (c == closing || (closing == right_ && (c == '$' || c == '}' || at_right()))) return out;
             if (c == '$' || c == '}') fail(c == '$' ? "unbalanced $" : "unbalanced }");
             const bool opens = c == '(' || c == '[' || at_left(c);  // before atom_with_scripts moves pos_
-            std::string item = atom_with_scripts();
-            math_class spacing = last_.spacing;
-            if (c == '=' || c == '<' || c == '>') spacing = math_class::relation;
-            if (c == '+' || c == '-') spacing = math_class::binary;
-            if (spacing == math_class::binary && !after_operand) spacing = math_class::ordinary;  // a sign
-            // TeX's thin space between an operator name and its operand: sin x, not sinx.
-            const bool operand = spacing == math_class::ordinary && !opens;
-            if (after_name && operand && !latex_) out += "\u2009";
-            after_name = last_.operator_name;
-            if (c == '(') ++parens;
-            if (c == ')' && parens > 0) --parens;
-            if (spacing != math_class::ordinary) {
-                if (sum && parens == 0) *sum = true;
-                out += script_depth_ == 0 && !latex_ ? " " + item + " " : item;
-                after_operand = false;
-            } else {
-                out += item;
-                after_operand = !(c == '(' || c == '/' || c == '*' || c == ',' || c == '+' || c == '-');
-                // a/b/c reads as (a/b)/c: a quotient or product in a fraction's part is one too
-                if (sum && parens == 0 && (c == '/' || c == '*')) *sum = true;
-            }
+            const std::string item = atom_with_scripts();
+            append_item(out, item, c, opens, state, sum);
         }
+    }
+
+    /// What math() has read of its group, for the spacing of what follows.
+    struct math_state {
+        bool after_operand = false;  ///< a binary operator after it is one, not a sign
+        bool after_name = false;     ///< an operator name (\sin): a thin space before its operand
+        int parens = 0;              ///< ( ... ) written in this group: what is inside them is not at its top
+    };
+
+    /// The class of the item that began with character c: its symbol's, a relation for
+    /// = < >, a binary operator for + and - (a sign where no operand precedes it).
+    math_class item_spacing(char c, bool after_operand) const {
+        math_class spacing = last_.spacing;
+        if (c == '=' || c == '<' || c == '>') spacing = math_class::relation;
+        if (c == '+' || c == '-') spacing = math_class::binary;
+        if (spacing == math_class::binary && !after_operand) spacing = math_class::ordinary;  // a sign
+        return spacing;
+    }
+
+    /// Appends an item that began with character c, spaced as TeX spaces it: binary
+    /// operators and relations a space each side (none in scripts), a thin space between an
+    /// operator name and its operand and after a comma. `sum` is set if a binary operator,
+    /// relation, / or * stands at the group's top.
+    void append_item(std::string& out, const std::string& item, char c, bool opens, math_state& state, bool* sum) const {
+        const math_class spacing = item_spacing(c, state.after_operand);
+        // TeX's thin space between an operator name and its operand: sin x, not sinx.
+        const bool operand = spacing == math_class::ordinary && !opens;
+        if (state.after_name && operand && !latex_) out += "\u2009";
+        state.after_name = last_.operator_name;
+        if (c == '(') ++state.parens;
+        if (c == ')' && state.parens > 0) --state.parens;
+        if (spacing != math_class::ordinary) {
+            if (sum && state.parens == 0) *sum = true;
+            out += script_depth_ == 0 && !latex_ ? " " + item + " " : item;
+            state.after_operand = false;
+            return;
+        }
+        out += item;
+        // TeX's thin space after punctuation in math: f(a, b); none in scripts.
+        if (c == ',' && script_depth_ == 0 && !latex_) out += "\u2009";
+        state.after_operand = !(c == '(' || c == '/' || c == '*' || c == ',' || c == '+' || c == '-');
+        // a/b/c reads as (a/b)/c: a quotient or product in a fraction's part is one too
+        if (sum && state.parens == 0 && (c == '/' || c == '*')) *sum = true;
     }
 
     /// One atom and the primes and scripts that follow it; last_ keeps the atom's facts.
@@ -346,31 +368,42 @@ private:
             ++primes;
             ++pos_;
         }
+        const scripts sc = read_scripts();
+        last_ = facts;
+        if (primes > 0 || sc.has_sub || sc.has_sup) last_.spacing = math_class::ordinary;
+        if (latex_ && facts.prime && !sc.has_sup) {
+            std::string up;
+            for (int i = 0; i < primes; ++i) up += "\\prime";
+            return "{}^{" + up + "}" + (sc.has_sub ? "_" + script(ungrouped(sc.sub)) : "");
+        }
+        const std::string* sup = sc.has_sup ? &sc.sup : nullptr;
+        const std::string* sub = sc.has_sub ? &sc.sub : nullptr;
+        return latex_ ? scripts_latex(base, primes, sup, sub) : scripts_markup(base, primes, sup, sub);
+    }
+
+    /// The subscript and superscript after an atom, each at most once.
+    struct scripts {
         std::string sub;
         std::string sup;
         bool has_sub = false;
         bool has_sup = false;
+    };
+
+    scripts read_scripts() {
+        scripts sc;
         for (int i = 0; i < 2 && pos_ < tex_.size() && (tex_[pos_] == '_' || tex_[pos_] == '^'); ++i) {
             const bool is_sub = tex_[pos_] == '_';
             ++pos_;
-            if ((is_sub && has_sub) || (!is_sub && has_sup)) fail("double script");
+            if (is_sub ? sc.has_sub : sc.has_sup) fail("double script");
             skip_space();
             if (pos_ >= tex_.size() || tex_[pos_] == '$' || tex_[pos_] == '}') fail("script without an argument");
             if (tex_[pos_] == '^' || tex_[pos_] == '_') fail("double script");
             ++script_depth_;
-            (is_sub ? sub : sup) = atom();
+            (is_sub ? sc.sub : sc.sup) = atom();
             --script_depth_;
-            (is_sub ? has_sub : has_sup) = true;
+            (is_sub ? sc.has_sub : sc.has_sup) = true;
         }
-        last_ = facts;
-        if (primes > 0 || has_sub || has_sup) last_.spacing = math_class::ordinary;
-        if (latex_ && facts.prime && !has_sup) {
-            std::string up;
-            for (int i = 0; i < primes; ++i) up += "\\prime";
-            return "{}^{" + up + "}" + (has_sub ? "_" + script(ungrouped(sub)) : "");
-        }
-        return latex_ ? scripts_latex(base, primes, has_sup ? &sup : nullptr, has_sub ? &sub : nullptr)
-                      : scripts_markup(base, primes, has_sup ? &sup : nullptr, has_sub ? &sub : nullptr);
+        return sc;
     }
 
     /// A base with primes and scripts, as LaTeX: TeX's ' is ^\prime, so primes and a
@@ -501,6 +534,8 @@ private:
         if (latex_) return std::string(m.latex) + (group ? base : "{" + base + "}");
         if (m.markup.empty()) return markup_ ? "<span overline=\"single\">" + base + "</span>" : base;
         const std::string mark(m.markup);
+        // TeX's \imath and \jmath: an accent on i or j replaces its dot.
+        if (base == "<i>i</i>" || base == "<i>j</i>") base = base == "<i>i</i>" ? "<i>\u0131</i>" : "<i>\u0237</i>";
         const std::string close = "</i>";
         if (markup_ && base.size() > close.size() && base.ends_with(close)) {
             return base.insert(base.size() - close.size(), mark);
@@ -654,42 +689,47 @@ public:
     std::vector<markup_node> parse(const std::string& until = "") {
         std::vector<markup_node> out;
         while (pos_ < m_.size()) {
-            if (m_[pos_] == '<') {
-                const std::size_t end = m_.find('>', pos_);
-                if (end == std::string_view::npos) throw bad_input("unclosed tag in '" + std::string(m_) + "'");
-                const std::string tag(m_.substr(pos_ + 1, end - pos_ - 1));
-                pos_ = end + 1;
-                if (!until.empty() && tag == until) return out;
-                if (tag == "i") ++italic_;
-                if (tag == "/i") --italic_;
-                if (tag == "sub" || tag == "sup") {
-                    markup_node n;
-                    n.type = tag == "sub" ? markup_node::kind::sub : markup_node::kind::sup;
-                    n.inner = parse(std::string("/").append(tag));
-                    out.push_back(std::move(n));
-                }
+            if (m_[pos_] != '<') {
+                out.push_back(character());
                 continue;
             }
-            markup_node n;
-            n.italic = italic_ > 0;
-            if (m_[pos_] == '&') {
-                const std::size_t end = m_.find(';', pos_);
-                const std::string entity(m_.substr(pos_ + 1, end == std::string_view::npos ? 0 : end - pos_ - 1));
-                pos_ = end == std::string_view::npos ? m_.size() : end + 1;
-                const char c = entity == "amp" ? '&' : entity == "lt" ? '<' : entity == "gt" ? '>' : entity == "quot" ? '"' : '\'';
-                n.text.assign(1, c);
-            } else {
-                std::size_t end = pos_ + 1;
-                while (end < m_.size() && (static_cast<unsigned char>(m_[end]) & 0xc0) == 0x80) ++end;
-                n.text = std::string(m_.substr(pos_, end - pos_));
-                pos_ = end;
+            const std::size_t end = m_.find('>', pos_);
+            if (end == std::string_view::npos) throw bad_input("unclosed tag in '" + std::string(m_) + "'");
+            const std::string tag(m_.substr(pos_ + 1, end - pos_ - 1));
+            pos_ = end + 1;
+            if (!until.empty() && tag == until) return out;
+            if (tag == "i") ++italic_;
+            if (tag == "/i") --italic_;
+            if (tag == "sub" || tag == "sup") {
+                markup_node n;
+                n.type = tag == "sub" ? markup_node::kind::sub : markup_node::kind::sup;
+                n.inner = parse(std::string("/").append(tag));
+                out.push_back(std::move(n));
             }
-            out.push_back(std::move(n));
         }
         return out;
     }
 
 private:
+    /// The character or entity at pos_, italic or not.
+    markup_node character() {
+        markup_node n;
+        n.italic = italic_ > 0;
+        if (m_[pos_] == '&') {
+            const std::size_t end = m_.find(';', pos_);
+            const std::string entity(m_.substr(pos_ + 1, end == std::string_view::npos ? 0 : end - pos_ - 1));
+            pos_ = end == std::string_view::npos ? m_.size() : end + 1;
+            const char c = entity == "amp" ? '&' : entity == "lt" ? '<' : entity == "gt" ? '>' : entity == "quot" ? '"' : '\'';
+            n.text.assign(1, c);
+        } else {
+            std::size_t end = pos_ + 1;
+            while (end < m_.size() && (static_cast<unsigned char>(m_[end]) & 0xc0) == 0x80) ++end;
+            n.text = std::string(m_.substr(pos_, end - pos_));
+            pos_ = end;
+        }
+        return n;
+    }
+
     std::string_view m_;
     std::size_t pos_ = 0;
     int italic_ = 0;

@@ -111,6 +111,7 @@ public:
         double ascent = 0;   // logical, above the baseline
         double descent = 0;  // logical, below the baseline
         double ink_x0 = 0, ink_y0 = 0, ink_x1 = 0, ink_y1 = 0;
+        bool inked = false;  // some part has ink
     };
 
 
@@ -135,41 +136,91 @@ public:
 private:
 
 
+    /// Where a math accent goes, in ems of the base's size: the gap between the base's ink
+    /// and the accent's, and the slope an italic letter leans by (Computer Modern's is 1/4).
+    static constexpr double accent_gap = 0.08;
+    static constexpr double italic_slope = 0.25;
+
+    /// Adds a part: markup at pt with the left end of its baseline at (x, y); returns its
+    /// advance. The box's ascent grows by the part's logical extent, or (for an accent,
+    /// `logical` false) by its ink alone.
+    double add_part(text_box& b, const std::string& text, double pt, double x, double y, bool logical = true) const {
+        text_box::part p;
+        p.layout = make(text, pt, text);
+        p.x = x;
+        p.y = y;
+        p.baseline = pango_layout_get_baseline(p.layout.get()) / double(PANGO_SCALE);
+        PangoRectangle ink, extent;
+        pango_layout_get_extents(p.layout.get(), &ink, &extent);
+        const double top = y - p.baseline;
+        if (logical) {
+            b.ascent = std::max(b.ascent, -(top + extent.y / double(PANGO_SCALE)));
+            b.descent = std::max(b.descent, top + (extent.y + extent.height) / double(PANGO_SCALE));
+        }
+        if (ink.width > 0 && ink.height > 0) {
+            const double x0 = x + ink.x / double(PANGO_SCALE);
+            const double y0 = top + ink.y / double(PANGO_SCALE);
+            const double x1 = x0 + ink.width / double(PANGO_SCALE);
+            const double y1 = y0 + ink.height / double(PANGO_SCALE);
+            if (!logical) b.ascent = std::max(b.ascent, -y0);
+            b.ink_x0 = b.inked ? std::min(b.ink_x0, x0) : x0;
+            b.ink_y0 = b.inked ? std::min(b.ink_y0, y0) : y0;
+            b.ink_x1 = b.inked ? std::max(b.ink_x1, x1) : x1;
+            b.ink_y1 = b.inked ? std::max(b.ink_y1, y1) : y1;
+            b.inked = true;
+        }
+        b.parts.push_back(std::move(p));
+        return extent.width / double(PANGO_SCALE);
+    }
+
+    /// Adds a run of markup, its accents placed as TeX places them; returns its advance.
+    double add_run(text_box& b, const std::string& markup, double pt, double x, double y) const {
+        const std::vector<accent_piece> pieces = split_accents(markup);
+        // Nothing but tags, or nothing: one part all the same, which has the font's height.
+        if (pieces.empty()) return add_part(b, markup, pt, x, y);
+        double advance = 0;
+        for (const accent_piece& piece : pieces) {
+            const double w = add_part(b, piece.text, pt, x + advance, y);
+            if (!piece.mark.empty()) add_accent(b, piece, pt, x + advance, y);
+            advance += w;
+        }
+        return advance;
+    }
+
+    /// The accent of an accented character drawn at (x, y): its ink centred over the
+    /// character's optical centre (the middle of the ink of its top part, moved along the
+    /// slope of an italic letter up to the accent's middle), `accent_gap` above its ink.
+    void add_accent(text_box& b, const accent_piece& piece, double pt, double x, double y) const {
+        const text_ink base = ink_of(piece.text, pt);
+        // On a no-break space, as Unicode shows a mark alone: a mark at the start of a text
+        // is drawn on a dotted circle.
+        const std::string alone = "\u00a0" + piece.mark;
+        const text_ink mark = ink_of(alone, pt);
+        if (base.h <= 0 || mark.h <= 0) return;
+        const double gap = accent_gap * pt;
+        const auto [left, right] = ink_span_in_band(piece.text, pt, base.y, base.y + 0.3 * base.h);
+        double centre = std::isfinite(left) ? (left + right) / 2 : base.x + base.w / 2;
+        // The top band's middle is 0.15 of the height under the top; the accent's, half its
+        // height and the gap above it.
+        if (leans(piece.text)) centre += italic_slope * (0.15 * base.h + gap + mark.h / 2);
+        const double mark_y = y + base.y - gap - (mark.y + mark.h);
+        add_part(b, alone, pt, x + centre - (mark.x + mark.w / 2), mark_y, false);
+    }
+
+    /// True if the markup's glyphs lean: italic, or a mathematical italic letter (U+1D434..).
+    bool leans(const std::string& text) const {
+        const std::string d = drawn(text);
+        return d.find("<i>") != std::string::npos || d.find("\xf0\x9d") != std::string::npos;
+    }
+
     text_box make_box(const std::string& markup, double size) const {
         const script_metrics m;
         text_box b;
-        bool first = true;
-        auto add = [&](const std::string& text, double pt, double x, double y) {
-            text_box::part p;
-            p.layout = make(text, pt, markup);
-            p.x = x;
-            p.y = y;
-            p.baseline = pango_layout_get_baseline(p.layout.get()) / double(PANGO_SCALE);
-            PangoRectangle ink, logical;
-            pango_layout_get_extents(p.layout.get(), &ink, &logical);
-            const double top = y - p.baseline;
-            b.ascent = std::max(b.ascent, -(top + logical.y / double(PANGO_SCALE)));
-            b.descent = std::max(b.descent, top + (logical.y + logical.height) / double(PANGO_SCALE));
-            if (ink.width > 0 && ink.height > 0) {
-                const double x0 = x + ink.x / double(PANGO_SCALE);
-                const double y0 = top + ink.y / double(PANGO_SCALE);
-                const double x1 = x0 + ink.width / double(PANGO_SCALE);
-                const double y1 = y0 + ink.height / double(PANGO_SCALE);
-                b.ink_x0 = first ? x0 : std::min(b.ink_x0, x0);
-                b.ink_y0 = first ? y0 : std::min(b.ink_y0, y0);
-                b.ink_x1 = first ? x1 : std::max(b.ink_x1, x1);
-                b.ink_y1 = first ? y1 : std::max(b.ink_y1, y1);
-                first = false;
-            }
-            const double w = logical.width / double(PANGO_SCALE);
-            b.parts.push_back(std::move(p));
-            return w;
-        };
         for (const auto& piece : split_scripts(markup)) {
             const double start = b.width;
             std::string base_markup;
             if (!piece.base.empty() || (!piece.has_sup && !piece.has_sub)) {
-                b.width += add(piece.base, size, start, 0);
+                b.width += add_run(b, piece.base, size, start, 0);
                 base_markup = piece.base;
             }
             // A script starts after the base's advance, or clear of the base's ink beside
@@ -194,12 +245,12 @@ private:
                     y -= j.y + j.h;
                 }
                 const double x = script_x(piece.sup, pt, y);
-                script_w = std::max(script_w, add(piece.sup, pt, x, y) + x - b.width);
+                script_w = std::max(script_w, add_run(b, piece.sup, pt, x, y) + x - b.width);
             }
             if (piece.has_sub) {
                 const double y = (piece.has_sup ? m.sub_shift_with_sup : m.sub_shift) * size;
                 const double x = script_x(piece.sub, m.size * size, y);
-                script_w = std::max(script_w, add(piece.sub, m.size * size, x, y) + x - b.width);
+                script_w = std::max(script_w, add_run(b, piece.sub, m.size * size, x, y) + x - b.width);
             }
             b.width += script_w;
         }
@@ -209,6 +260,12 @@ private:
     /// The rightmost ink of plain markup between heights y0 and y1 (relative to its
     /// baseline, y down), found by drawing it; -infinity if there is none.
     double ink_right_in_band(const std::string& text, double pt, double y0, double y1) const {
+        return ink_span_in_band(text, pt, y0, y1).second;
+    }
+
+    /// The leftmost and rightmost ink of plain markup between heights y0 and y1 (relative
+    /// to its baseline, y down), found by drawing it; infinities if there is none.
+    std::pair<double, double> ink_span_in_band(const std::string& text, double pt, double y0, double y1) const {
         const gobject_ptr<PangoLayout> l = make(text, pt, text);
         PangoRectangle ink;
         pango_layout_get_extents(l.get(), &ink, nullptr);
@@ -218,7 +275,7 @@ private:
         const int w = static_cast<int>(std::ceil(std::max(x1, 0.0) * scale)) + 2;
         const int top = static_cast<int>(std::floor((baseline + y0) * scale));
         const int h = static_cast<int>(std::ceil((y1 - y0) * scale)) + 1;
-        if (w <= 2 || h <= 0) return -INFINITY;
+        if (w <= 2 || h <= 0) return {INFINITY, -INFINITY};
         surface_ptr surface(cairo_image_surface_create(CAIRO_FORMAT_A8, w, h));
         check_cairo(cairo_surface_status(surface.get()), "measure text");
         context_ptr cr(cairo_create(surface.get()));
@@ -226,14 +283,28 @@ private:
         cairo_translate(cr.get(), 0, -top / scale);
         pango_cairo_show_layout(cr.get(), l.get());
         cairo_surface_flush(surface.get());
-        const unsigned char* data = cairo_image_surface_get_data(surface.get());
-        const int stride = cairo_image_surface_get_stride(surface.get());
-        for (int x = w - 1; x >= 0; --x) {
+        return inked_columns(surface.get(), scale);
+    }
+
+    /// The left end of the first column and the right end of the last column of an A8
+    /// surface with ink (above a quarter's coverage), in points at `scale` pixels a point.
+    static std::pair<double, double> inked_columns(cairo_surface_t* surface, double scale) {
+        const unsigned char* data = cairo_image_surface_get_data(surface);
+        const int stride = cairo_image_surface_get_stride(surface);
+        const int w = cairo_image_surface_get_width(surface);
+        const int h = cairo_image_surface_get_height(surface);
+        const auto inked = [&](int x) {
             for (int y = 0; y < h; ++y) {
-                if (data[y * stride + x] > 64) return (x + 1) / scale;
+                if (data[y * stride + x] > 64) return true;
             }
-        }
-        return -INFINITY;
+            return false;
+        };
+        int first = 0;
+        while (first < w && !inked(first)) ++first;
+        if (first == w) return {INFINITY, -INFINITY};
+        int last = w - 1;
+        while (!inked(last)) --last;
+        return {first / scale, (last + 1) / scale};
     }
 
     /// Ink of plain markup (no scripts) relative to its baseline.

@@ -111,30 +111,55 @@ tick_set linear_ticks(double lo, double hi, int max_ticks, bool expand) {
     return t;
 }
 
-tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
-    widen_if_degenerate(lo, hi);
-    const double pi = 3.14159265358979323846;
-    // Steps as fractions num/den of pi.
+namespace {
+
+constexpr double pi_value = 3.14159265358979323846;
+
+/// The step of a pi axis as num/den of pi ({0, 1} if none fits): the finest of 1/8 ... 8
+/// with at most max_ticks ticks, eighths only where quarters would leave fewer than three.
+std::pair<int, int> pi_step(double lo, double hi, int max_ticks) {
     const int steps[][2] = {{1, 8}, {1, 4}, {1, 2}, {1, 1}, {2, 1}, {4, 1}, {8, 1}};
-    int num = 0;
-    int den = 1;
     for (const auto& s : steps) {
-        const auto [a, b] = index_range(lo, hi, pi * s[0] / s[1], true);
-        // Eighths of pi only where quarters would leave fewer than three ticks.
+        const auto [a, b] = index_range(lo, hi, pi_value * s[0] / s[1], true);
         const bool too_fine = s[1] == 8 && [&] {
-            const auto [qa, qb] = index_range(lo, hi, pi / 4, true);
+            const auto [qa, qb] = index_range(lo, hi, pi_value / 4, true);
             return qb - qa + 1 >= 3;
         }();
-        if (!too_fine && b - a + 1 <= std::max(max_ticks, 2)) {
-            num = s[0];
-            den = s[1];
-            break;
-        }
+        if (!too_fine && b - a + 1 <= std::max(max_ticks, 2)) return {s[0], s[1]};
     }
+    return {0, 1};
+}
+
+/// The label of p/q pi (reduced): 0, π, −3π/4, ...
+std::string pi_label(long long p, long long q) {
+    if (p == 0) return "0";
+    std::string label;
+    const long long ap = p < 0 ? -p : p;
+    if (p < 0) label += minus;
+    if (ap != 1) label += std::to_string(ap);
+    label += "<i>\u03c0</i>";
+    if (q != 1) label += "/" + std::to_string(q);
+    return label;
+}
+
+/// Minor ticks halfway between the major ones, `step` apart, within the set's range.
+void add_halves(tick_set& t, double step) {
+    const double minor_step = step / 2;
+    const auto [ma, mb] = index_range(t.lo, t.hi, minor_step, false);
+    for (long long i = ma; i <= mb; ++i) {
+        if (i % 2 != 0) t.minor.push_back(static_cast<double>(i) * minor_step);
+    }
+}
+
+}  // namespace
+
+tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
+    widen_if_degenerate(lo, hi);
+    const auto [num, den] = pi_step(lo, hi, max_ticks);
     // Too long a range for multiples of pi to read well, or too short for two of them
     // (amplitudes within a hair of pi): plain numbers.
     if (num == 0) return linear_ticks(lo, hi, max_ticks, expand);
-    const double step = pi * num / den;
+    const double step = pi_value * num / den;
     const auto [a, b] = index_range(lo, hi, step, expand);
     if (const auto [ia, ib] = index_range(lo, hi, step, false); ib - ia + 1 < 2) {
         return linear_ticks(lo, hi, max_ticks, expand);
@@ -151,27 +176,10 @@ tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
             p /= g;
             q /= g;
         }
-        t.major.push_back(static_cast<double>(p) * pi / static_cast<double>(q));
-        std::string label;
-        if (p == 0) {
-            label = "0";
-        } else {
-            const long long ap = p < 0 ? -p : p;
-            if (p < 0) label += minus;
-            if (ap != 1) label += std::to_string(ap);
-            label += "<i>\u03c0</i>";
-            if (q != 1) {
-                label += '/';
-                label += std::to_string(q);
-            }
-        }
-        t.labels.push_back(label);
+        t.major.push_back(static_cast<double>(p) * pi_value / static_cast<double>(q));
+        t.labels.push_back(pi_label(p, q));
     }
-    const double minor_step = step / 2;
-    const auto [ma, mb] = index_range(t.lo, t.hi, minor_step, false);
-    for (long long i = ma; i <= mb; ++i) {
-        if (i % 2 != 0) t.minor.push_back(static_cast<double>(i) * minor_step);
-    }
+    add_halves(t, step);
     return t;
 }
 
@@ -207,72 +215,96 @@ tick_set degree_ticks(double lo, double hi, int max_ticks, bool expand) {
     return t;
 }
 
-tick_set log_ticks(double lo, double hi, int max_ticks, bool expand) {
-    if (!(lo > 0) || !(hi > 0) || !std::isfinite(lo) || !std::isfinite(hi)) {
-        throw std::invalid_argument("a logarithmic axis needs a positive, finite range");
-    }
-    if (lo > hi) std::swap(lo, hi);
+namespace {
+
+/// The decades of a log axis: the first and last labelled exponent, and every how many
+/// decades a label stands (doubling until at most max_ticks fit).
+struct decades {
+    long long first = 0;
+    long long last = 0;
+    long long every = 1;
+};
+
+decades labelled_decades(double lo, double hi, int max_ticks, bool expand) {
     double a = std::log10(lo);
     double b = std::log10(hi);
     if (b - a < 1e-9) {
         a -= 1;
         b += 1;
     }
-    long long ea = expand ? static_cast<long long>(std::floor(a + 1e-9)) : static_cast<long long>(std::ceil(a - 1e-9));
-    long long eb = expand ? static_cast<long long>(std::ceil(b - 1e-9)) : static_cast<long long>(std::floor(b + 1e-9));
-    long long every = 1;
-    while ((eb - ea) / every + 1 > std::max(max_ticks, 2)) every *= 2;
+    decades d;
+    d.first = expand ? static_cast<long long>(std::floor(a + 1e-9)) : static_cast<long long>(std::ceil(a - 1e-9));
+    d.last = expand ? static_cast<long long>(std::ceil(b - 1e-9)) : static_cast<long long>(std::floor(b + 1e-9));
+    while ((d.last - d.first) / d.every + 1 > std::max(max_ticks, 2)) d.every *= 2;
     if (expand) {
         // Keep the limits on labelled decades.
-        ea = static_cast<long long>(std::floor(static_cast<double>(ea) / every)) * every;
-        eb = static_cast<long long>(std::ceil(static_cast<double>(eb) / every)) * every;
+        d.first = static_cast<long long>(std::floor(static_cast<double>(d.first) / d.every)) * d.every;
+        d.last = static_cast<long long>(std::ceil(static_cast<double>(d.last) / d.every)) * d.every;
     }
-    tick_set t;
-    t.lo = expand ? std::pow(10.0, static_cast<double>(ea)) : lo;
-    t.hi = expand ? std::pow(10.0, static_cast<double>(eb)) : hi;
+    return d;
+}
+
+/// 10^e as a major tick (labelled) or a minor one, as the decades say.
+void add_power(tick_set& t, const decades& d, long long e) {
+    if (e < d.first || e > d.last) return;
+    const double v = std::pow(10.0, static_cast<double>(e));
+    if ((e - d.first) % d.every == 0) {
+        t.major.push_back(v);
+        const std::string exponent = e < 0 ? minus + std::to_string(-e) : std::to_string(e);
+        t.labels.push_back("10<sup>" + exponent + "</sup>");
+    } else {
+        t.minor.push_back(v);
+    }
+}
+
+/// m times 10^e for m = 2 ... 9 within the set's range: minor ticks, except 2 and 5 times
+/// it within one decade, which are labelled too.
+void add_multiples(tick_set& t, long long e, bool within_decade) {
+    const double v = std::pow(10.0, static_cast<double>(e));
     const double slack = 1e-9 * (t.hi - t.lo);
-    const auto inside = [&](double v) { return v >= t.lo - slack && v <= t.hi + slack; };
-    const bool within_decade = eb - ea < 1;  // fewer than two powers of ten in range
+    for (int m = 2; m <= 9; ++m) {
+        const double u = m * v;
+        if (u < t.lo - slack || u > t.hi + slack) continue;
+        if (within_decade && (m == 2 || m == 5)) {
+            t.major.push_back(u);
+            t.labels.emplace_back();
+        } else {
+            t.minor.push_back(u);
+        }
+    }
+}
+
+/// The major ticks sorted and labelled as plain numbers sharing precision: 0.5 1 2 5.
+void label_as_numbers(tick_set& t) {
+    std::sort(t.major.begin(), t.major.end());
+    t.labels.clear();
+    for (double v : t.major) {
+        char buf[32];
+        const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(v) + 1e-9)));
+        std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+        t.labels.emplace_back(buf);
+    }
+}
+
+}  // namespace
+
+tick_set log_ticks(double lo, double hi, int max_ticks, bool expand) {
+    if (!(lo > 0) || !(hi > 0) || !std::isfinite(lo) || !std::isfinite(hi)) {
+        throw std::invalid_argument("a logarithmic axis needs a positive, finite range");
+    }
+    if (lo > hi) std::swap(lo, hi);
+    const decades d = labelled_decades(lo, hi, max_ticks, expand);
+    tick_set t;
+    t.lo = expand ? std::pow(10.0, static_cast<double>(d.first)) : lo;
+    t.hi = expand ? std::pow(10.0, static_cast<double>(d.last)) : hi;
+    const bool within_decade = d.last - d.first < 1;  // fewer than two powers of ten in range
     const long long first = static_cast<long long>(std::floor(std::log10(t.lo) + 1e-9));
     const long long last = static_cast<long long>(std::ceil(std::log10(t.hi) - 1e-9));
     for (long long e = first; e <= last; ++e) {
-        const double v = std::pow(10.0, static_cast<double>(e));
-        if (e >= ea && e <= eb && (e - ea) % every == 0) {
-            t.major.push_back(v);
-            const std::string exponent = e < 0 ? minus + std::to_string(-e) : std::to_string(e);
-            t.labels.push_back("10<sup>" + exponent + "</sup>");
-        } else if (e >= ea && e <= eb) {
-            t.minor.push_back(v);
-        }
-        if (every != 1 || last - first > 8) continue;
-        for (int m = 2; m <= 9; ++m) {
-            const double u = m * v;
-            if (!inside(u)) continue;
-            // Within one decade, 2 and 5 times a power of ten are labelled too.
-            if (within_decade && (m == 2 || m == 5)) {
-                t.major.push_back(u);
-                t.labels.emplace_back();
-            } else {
-                t.minor.push_back(u);
-            }
-        }
+        add_power(t, d, e);
+        if (d.every == 1 && last - first <= 8) add_multiples(t, e, within_decade);
     }
-    if (within_decade) {
-        // Plain numbers, sorted, sharing precision: 0.5 1 2 5.
-        std::vector<std::size_t> order(t.major.size());
-        std::iota(order.begin(), order.end(), std::size_t{0});
-        std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return t.major[i] < t.major[j]; });
-        std::vector<double> sorted;
-        for (std::size_t i : order) sorted.push_back(t.major[i]);
-        t.major = sorted;
-        t.labels.clear();
-        for (double v : t.major) {
-            char buf[32];
-            const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(v) + 1e-9)));
-            std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-            t.labels.emplace_back(buf);
-        }
-    }
+    if (within_decade) label_as_numbers(t);
     std::sort(t.minor.begin(), t.minor.end());
     return t;
 }

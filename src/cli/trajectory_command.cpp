@@ -383,7 +383,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     if (methods.front().user) return write_formula_trajectory(out, format, methods.front(), start, state, unit, w0, o, times);
     const bool paper_table = !state && unit.name == "t/T";
     const trajectory_context c{m, state, paper_table, unit.scale(m, w0), m.start().omega < 0 ? -1 : 1,
-                               !paper_table && unit.name == "t/T" && m.kind() == regime::libration};
+                               !paper_table && unit.name == "t/T" && m.kind() == regime::libration && m.starts_at_quarter()};
     std::deque<method_run> runs;  // in place: a time reducer stays where it is made
     for (const auto& method : methods) prepare_run(runs.emplace_back(method), c, start, o, unit, times);
     warn_conditioning(start, o, times, c.scale);

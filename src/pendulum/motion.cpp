@@ -123,7 +123,12 @@ motion motion::from_state(const written_number& theta, const written_number& ome
     }
     if (at_rest_within_pi(theta, omega)) {
         // Released at rest: the amplitude itself, with its distance from pi (pi is refused).
-        motion m = from_amplitude(theta.text().empty() ? pendulum::amplitude(theta.value()) : parse_amplitude(theta.text()));
+        // A double is itself: the one nearest pi is pi - 1.2e-16 (the text "pi" is refused).
+        constexpr double pi_lo = 1.2246467991473532e-16;
+        const auto held = [&] {
+            return theta.value() == pi ? pendulum::amplitude::from_pi(pi_lo) : pendulum::amplitude(theta.value());
+        };
+        motion m = from_amplitude(theta.text().empty() ? held() : parse_amplitude(theta.text()));
         m.first_ = theta;
         m.second_ = omega;
         return m;
@@ -165,13 +170,15 @@ motion motion::from_amplitude(const pendulum::amplitude& theta0) {
     m.origin_ = origin::amplitude;
     m.start_ = {theta0.radians(), 0.0};
     m.kind_ = regime::libration;
-    m.energy_ = 2.0 * k * k;
-    m.gap_ = 2.0 * kp * kp;
+    // E = 2 k^2 and 2 - E = 2 k'^2, each rounded once from extended precision.
+    m.energy_ = static_cast<double>(2.0L * theta0.k_extended() * theta0.k_extended());
+    m.gap_ = static_cast<double>(2.0L * theta0.kp_extended() * theta0.kp_extended());
     m.k_ = k;
     m.kp_ = kp;
     m.libration_.emplace(theta0);
     m.given_.emplace(theta0);
     m.quarter_ = m.libration_->quarter_period();
+    m.at_quarter_ = true;
     return m;
 }
 
@@ -197,6 +204,7 @@ void motion::prepare(const start_numbers& n, double half_speed) {
         // the bottom it is a quarter period exactly.
         offset_ = angle == 0 ? -quarter_ : -elliptic_f(half_speed, kp_ * std::sin(0.5 * angle), kp_);
         start_fraction_ = (offset_ + (mirror_ < 0 ? 2.0 * quarter_ : 0.0)) / (4.0 * quarter_);
+        at_quarter_ = angle == 0;
         return;
     }
     if (kind_ == regime::separatrix) {

@@ -132,6 +132,10 @@ public:
     double theta_at_fraction(double s) const;
     /// theta'/w0 the same way.
     double velocity_at_fraction(double s) const;
+    /// True where a libration's start is exactly at a quarter period (a turning point, or the
+    /// bottom), so that theta_at_fraction() keeps every digit; elsewhere the start's place is a
+    /// rounded fraction, and a time reduced in w0 t is the better clock.
+    bool starts_at_quarter() const { return at_quarter_; }
 
     /// theta at time w0 t, unwrapped (continuous in t).
     double theta(double w0_t) const;
@@ -165,6 +169,7 @@ private:
     written_number second_ = 0.0;               ///< a state's velocity as written
     long cancelled_ = 0;
     double start_fraction_ = 0;                 ///< a libration's clock at the start in periods
+    bool at_quarter_ = false;                   ///< start_fraction_ is a multiple of 1/4 exactly
     std::string energy_unheld_;
 };
 

@@ -346,11 +346,13 @@ TEST(Cli, StatesAndEnergiesInAllRegimes) {
     const auto l = table_lines("eval --theta0 0 --omega0 1.9,2,2.2",
                                "theta0,omega0,energy,regime,amplitude,period_exact,revolution_period", 3);
     ASSERT_FALSE(l.empty());
-    const auto lib = motion::from_state({0.0, 1.9});
+    // The velocities as written: 1.9 and 2.2 are those decimals, not their doubles (E = 2.42).
+    const auto written = [](const char* w) { return motion::from_state(written_number(0.0), written_number::expression(w)); };
+    const auto lib = written("1.9");
     EXPECT_EQ(l[1], "0,1.9,1.805,libration," + format_double(lib.amplitude().radians()) + "," +
                         format_double(lib.period_ratio()) + ",");
     EXPECT_EQ(l[2], "0,2,2,separatrix,,,");
-    EXPECT_EQ(l[3], "0,2.2,2.4200000000000004,rotation,,," + format_double(motion::from_state({0.0, 2.2}).period_ratio()));
+    EXPECT_EQ(l[3], "0,2.2,2.42,rotation,,," + format_double(written("2.2").period_ratio()));
 
     const auto m = run_cli("eval --energy 'pi/2' --method second");
     ASSERT_EQ(m.status, 0) << m.err;

@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -156,51 +157,154 @@ std::vector<double> method_periods(const amplitude& theta0, const std::vector<in
     return periods;
 }
 
+/// The methods less those whose column is one of `fixed` (--method exact is period_exact):
+/// a table has each column once.
+std::vector<method_choice> without_fixed(const std::vector<method_choice>& methods, const std::vector<std::string>& fixed) {
+    std::vector<method_choice> kept;
+    for (const auto& m : methods) {
+        if (std::find(fixed.begin(), fixed.end(), "period_" + m.text()) == fixed.end()) kept.push_back(m);
+    }
+    return kept;
+}
+
 /// The columns of eval for starts (states or energies), before --order, --method and T_s.
 constexpr const char* start_columns[] = {"theta0", "omega0", "energy", "regime", "amplitude", "period_exact",
                                          "revolution_period"};
 
-/// eval for states and energies: regime, energy, amplitude or revolution period per start.
-void eval_starts(std::ostream& out, const eval_options& o, const std::vector<int>& orders,
-                 const std::vector<method_choice>& methods, long double small_period_s) {
+/// Says on standard error that a start's energy is not held by a double (its field is the
+/// double nearest, with fewer digits where subnormal, or empty where it is 0 or beyond the largest).
+void warn_energy(const start_option& start) {
+    const auto& m = start.motion;
+    const bool empty = m.energy() == 0 || !std::isfinite(m.energy());
+    std::cerr << "pendulum-figures: warning: " << start.text << ": the energy is " << m.energy_unheld()
+              << ", which a double cannot hold "
+              << (empty ? "(beyond its range): the energy field is left empty"
+                        : "to every digit (it is below 2.2250738585072014e-308): the energy field has fewer digits")
+              << "; the other fields are computed from the exact energy\n";
+}
+
+/// Refuses --columns, and a method or order on a start that is not a libration.
+void check_starts(const eval_options& o, const std::vector<start_option>& starts, const std::vector<int>& orders,
+                  const std::vector<method_choice>& methods) {
     if (!o.columns.empty()) {
         throw usage_error("--columns chooses among the columns of amplitudes (--theta0 alone); with --omega0 or "
                           "--energy every column is written");
     }
-    const auto format = parse_table_format(o.format);
-    const auto starts = parse_starts(o.theta0, o.omega0, o.energy);
     for (const auto& start : starts) {
         for (const auto& m : methods) check_method_applies(m, start);
         if (!orders.empty() && start.motion.kind() != regime::libration) {
             check_method_applies(parse_method("order:" + std::to_string(orders.front())), start);
         }
     }
+}
+
+/// One start's row: the fixed fields, then --order and --method periods, then T_s.
+std::vector<field> start_row(const start_option& start, const eval_options& o, const std::vector<int>& orders,
+                             const std::vector<method_choice>& methods, long double small_period_s, std::vector<int>& broken) {
+    const auto& m = start.motion;
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    const bool libration = m.kind() == regime::libration;
+    const auto ratio = m.has_period() ? m.period_ratio() : none;
+    const double energy = m.energy() != 0 && std::isfinite(m.energy()) ? m.energy() : none;
+    std::vector<field> row{m.start().theta, m.start().omega, energy, std::string(row_of(m.kind()).name),
+                           libration ? m.amplitude().radians() : none, libration ? ratio : none,
+                           m.kind() == regime::rotation ? ratio : none};
+    broken.clear();
+    if (libration) {
+        for (double x : method_periods(m.amplitude(), orders, methods, highest_level(orders, methods), broken)) {
+            row.emplace_back(x);
+        }
+    }
+    if (o.length) row.emplace_back(std::isnan(ratio) ? ratio : period_seconds(ratio, small_period_s));
+    return row;
+}
+
+/// eval for states and energies: regime, energy, amplitude or revolution period per start.
+void eval_starts(std::ostream& out, const eval_options& o, const std::vector<int>& orders,
+                 const std::vector<method_choice>& all_methods, long double small_period_s) {
+    const auto format = parse_table_format(o.format);
+    const auto starts = parse_starts(o.theta0, o.omega0, o.energy);
     std::vector<std::string> columns(std::begin(start_columns), std::end(start_columns));
+    const auto methods = without_fixed(all_methods, columns);
+    check_starts(o, starts, orders, methods);
     for (int n : orders) columns.push_back("period_order" + std::to_string(n));
     for (const auto& m : methods) columns.push_back("period_" + m.text());
     if (o.length) columns.push_back("T_s");
-    const int highest = highest_level(orders, methods);
-    const double none = std::numeric_limits<double>::quiet_NaN();
     table_writer writer(out, columns, format);
+    std::vector<int> broken;
     for (const auto& start : starts) {
-        const auto& m = start.motion;
-        const bool libration = m.kind() == regime::libration;
-        const auto ratio = m.has_period() ? m.period_ratio() : none;
-        std::vector<field> row{m.start().theta, m.start().omega, m.energy(), std::string(row_of(m.kind()).name),
-                               libration ? m.amplitude().radians() : none, libration ? ratio : none,
-                               m.kind() == regime::rotation ? ratio : none};
-        std::vector<int> broken;
-        if (libration) {
-            for (double x : method_periods(m.amplitude(), orders, methods, highest, broken)) row.emplace_back(x);
-        }
-        if (o.length) row.emplace_back(std::isnan(ratio) ? ratio : period_seconds(ratio, small_period_s));
-        writer.record(row);
-        if (!broken.empty()) {
-            writer.flush();  // the warning follows its row
-            warn_breakdown(m.amplitude(), broken);
-        }
+        writer.record(start_row(start, o, orders, methods, small_period_s, broken));
+        if (broken.empty() && start.motion.energy_unheld().empty()) continue;
+        writer.flush();  // the warning follows its row
+        if (!broken.empty()) warn_breakdown(start.motion.amplitude(), broken);
+        if (!start.motion.energy_unheld().empty()) warn_energy(start);
     }
     writer.finish();
+}
+
+/// Refuses an err:formula column in --columns: a formula's column comes with its --method.
+void check_error_columns(const std::vector<method_choice>& errors) {
+    for (const auto& e : errors) {
+        if (e.user) {
+            throw usage_error("--columns 'err:formula:" + shown_text(e.user->text()) + "': give the formula with --method "
+                              "'formula:...'; its err:formula:K column comes with it");
+        }
+    }
+}
+
+/// What eval writes for amplitudes: the chosen columns, the methods and error columns.
+struct amplitude_table {
+    std::vector<const eval_column*> fixed;
+    bool seconds = false;
+    std::vector<method_choice> methods;
+    std::vector<method_choice> errors;
+    std::vector<std::string> columns;
+    unsigned needs = 0;
+};
+
+amplitude_table amplitude_columns(const eval_options& o, const std::vector<int>& orders,
+                                  const std::vector<method_choice>& all_methods) {
+    amplitude_table t;
+    std::tie(t.fixed, t.seconds) = chosen_columns(o, t.errors);
+    // A user's formula comes with its error column, err:formula:K (T_f/T - 1 without cancellation):
+    // one written in --columns would be numbered apart from the --method ones.
+    check_error_columns(t.errors);
+    for (const auto* c : t.fixed) t.columns.emplace_back(c->name);
+    t.methods = without_fixed(all_methods, t.columns);
+    for (const auto& m : t.methods) {
+        if (m.user) t.errors.push_back(m);
+    }
+    // Only the solutions the chosen columns read are computed.
+    t.needs = t.seconds ? static_cast<unsigned>(need_exact_period) : 0u;
+    for (const auto* c : t.fixed) t.needs |= c->needs;
+    for (int n : orders) t.columns.push_back("period_order" + std::to_string(n));
+    for (const auto& m : t.methods) t.columns.push_back("period_" + m.text());
+    for (const auto& m : t.errors) t.columns.push_back(std::string(error_column_prefix) + m.text());
+    if (t.seconds) t.columns.emplace_back(seconds_column);
+    return t;
+}
+
+/// One amplitude's fields; the iteration's levels without a period go to `broken`.
+std::vector<field> amplitude_row(const amplitude& value, const amplitude_table& t, const std::vector<int>& orders,
+                                 long double small_period_s, std::vector<int>& broken) {
+    const eval_point point(value, t.needs);
+    std::vector<field> fields;
+    for (const auto* c : t.fixed) fields.emplace_back(c->value(point));
+    for (double x : method_periods(value, orders, t.methods, highest_level(orders, t.methods), broken)) {
+        fields.emplace_back(x);
+    }
+    for (const auto& m : t.errors) {
+        const period_error e = method_period_error(m, value);
+        fields.push_back(period_error_field(e));
+        // An iteration without a period is said, as for its period's column.
+        const bool iterated = !m.user && m.row->role == method_role::iterated;
+        if (iterated && e.what == period_error::kind::no_period &&
+            std::find(broken.begin(), broken.end(), m.n) == broken.end()) {
+            broken.push_back(m.n);
+        }
+    }
+    if (t.seconds) fields.emplace_back(period_seconds(*point.exact_period, small_period_s));
+    return fields;
 }
 
 void eval_stream(std::ostream& out, const eval_options& o) {
@@ -211,52 +315,13 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     if (!o.omega0.empty() || !o.energy.empty()) return eval_starts(out, o, orders, methods, small_period_s);
     if (o.theta0.empty()) throw usage_error("give --theta0 (amplitudes, or with --omega0 states) or --energy");
     const auto amplitudes = parse_amplitude_values(o.theta0);
-    std::vector<method_choice> errors;
-    const auto [fixed, seconds] = chosen_columns(o, errors);
-    // A user's formula comes with its error column, err:formula:K (T_f/T - 1 without cancellation):
-    // one written in --columns would be numbered apart from the --method ones.
-    for (const auto& e : errors) {
-        if (e.user) {
-            throw usage_error("--columns 'err:formula:" + shown_text(e.user->text()) + "': give the formula with --method "
-                              "'formula:...'; its err:formula:K column comes with it");
-        }
-    }
-    for (const auto& m : methods) {
-        if (m.user) errors.push_back(m);
-    }
-    // Only the solutions the chosen columns read are computed.
-    unsigned needs = seconds ? static_cast<unsigned>(need_exact_period) : 0u;
-    for (const auto* c : fixed) needs |= c->needs;
-    std::vector<std::string> columns;
-    for (const auto* c : fixed) columns.emplace_back(c->name);
-    for (int n : orders) columns.push_back("period_order" + std::to_string(n));
-    for (const auto& m : methods) columns.push_back("period_" + m.text());
-    for (const auto& m : errors) columns.push_back(std::string(error_column_prefix) + m.text());
-    if (seconds) columns.emplace_back(seconds_column);
+    const amplitude_table t = amplitude_columns(o, orders, methods);
     // The iteration is computed once per amplitude, to the highest level asked for, and
     // every --order and --method order:N column is read off that one sequence.
-    const int highest = highest_level(orders, methods);
-    table_writer writer(out, columns, format);
-    std::vector<double> row;
+    table_writer writer(out, t.columns, format);
     std::vector<int> broken;
     for (const auto& value : amplitudes) {
-        const eval_point point(value, needs);
-        row.clear();
-        for (const auto* c : fixed) row.push_back(c->value(point));
-        for (double x : method_periods(value, orders, methods, highest, broken)) row.push_back(x);
-        std::vector<field> fields(row.begin(), row.end());
-        for (const auto& m : errors) {
-            const period_error e = method_period_error(m, value);
-            fields.push_back(period_error_field(e));
-            // An iteration without a period is said, as for its period's column.
-            const bool iterated = !m.user && m.row->role == method_role::iterated;
-            if (iterated && e.what == period_error::kind::no_period &&
-                std::find(broken.begin(), broken.end(), m.n) == broken.end()) {
-                broken.push_back(m.n);
-            }
-        }
-        if (seconds) fields.emplace_back(period_seconds(*point.exact_period, small_period_s));
-        writer.record(fields);
+        writer.record(amplitude_row(value, t, orders, small_period_s, broken));
         if (!broken.empty()) {
             writer.flush();  // the warning follows its row
             warn_breakdown(value, broken);

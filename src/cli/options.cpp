@@ -100,17 +100,22 @@ const char* const start_help =
     "A start is an amplitude (--theta0 alone: released at rest), a state (--theta0 ANGLE with --omega0 W, the "
     "initial velocity theta'/w0, any angle and either sign) or an energy (--energy E in units of m g L from the "
     "bottom, launched from the bottom forwards). E < 2 is a libration, E = 2 the separatrix (the top is reached "
-    "only as t -> infinity: no period), E > 2 a rotation over the top (its period is one revolution, T_rev).";
+    "only as t -> infinity: no period), E > 2 a rotation over the top (its period is one revolution, T_rev). "
+    "Angles, velocities and energies are taken as written (2pi/3, 2-1e-20, pi-1e-300): the energy and 2 - E come "
+    "from those exact numbers, so 2pi/3 with omega0 = 1 is the separatrix and 2-1e-20 a libration; a start whose "
+    "2 - E vanishes at 1280 and 2560 bits is the separatrix, one that only 2560 bits can tell from it is refused. "
+    "A state at rest at an angle in (0, pi] is that amplitude (pi itself is refused).";
 
 namespace {
 
-/// The values of a list option of expressions (angles, with deg, or plain numbers), as typed.
-std::vector<std::pair<std::string, double>> parse_values(const std::string& given, const std::string& option,
-                                                         bool angle) {
-    std::vector<std::pair<std::string, double>> values;
+/// The values of a list option of expressions (angles, with deg, or plain numbers), as typed
+/// and as written: each keeps every digit its text has.
+std::vector<std::pair<std::string, written_number>> parse_values(const std::string& given, const std::string& option,
+                                                                 bool angle) {
+    std::vector<std::pair<std::string, written_number>> values;
     for_each_item(given, option, [&](const std::string& item) {
         try {
-            values.emplace_back(item, angle ? parse_angle(item) : parse_expression(item));
+            values.emplace_back(item, angle ? written_number::angle(item) : written_number::expression(item));
         } catch (const std::invalid_argument& e) {
             throw usage_error(option + " '" + shown_text(item.substr(0, 80)) + "': " + e.what());
         }
@@ -118,11 +123,13 @@ std::vector<std::pair<std::string, double>> parse_values(const std::string& give
     return values;
 }
 
-start_option start_of(std::string text, const std::function<pendulum::motion()>& make) {
+start_option start_of(const std::string& text, const std::function<pendulum::motion()>& make) {
     try {
         return {text, make()};
     } catch (const domain_error& e) {
-        throw usage_error(text + ": " + e.what());
+        // The core's message names the start already where it can.
+        const std::string why = e.what();
+        throw usage_error(shown_text(why.starts_with(text) ? why : text + ": " + why));
     }
 }
 
@@ -140,7 +147,7 @@ std::vector<start_option> parse_starts(const std::string& theta0, const std::str
     std::vector<start_option> starts;
     if (!energy.empty()) {
         for (const auto& [text, e] : parse_values(energy, "--energy", false)) {
-            starts.push_back(start_of("energy = " + text, [e = e] { return pendulum::motion::from_energy(e); }));
+            starts.push_back(start_of("energy = " + text, [&e = e] { return pendulum::motion::from_energy(e); }));
         }
         return starts;
     }
@@ -160,8 +167,8 @@ std::vector<start_option> parse_starts(const std::string& theta0, const std::str
     for (std::size_t i = 0; i < count; ++i) {
         const auto& [angle_text, angle] = angles[angles.size() == 1 ? 0 : i];
         const auto& [speed_text, speed] = speeds[speeds.size() == 1 ? 0 : i];
-        starts.push_back(start_of("theta0 = " + angle_text + ", omega0 = " + speed_text, [angle = angle, speed = speed] {
-            return pendulum::motion::from_state({angle, speed});
+        starts.push_back(start_of("theta0 = " + angle_text + ", omega0 = " + speed_text, [&angle = angle, &speed = speed] {
+            return pendulum::motion::from_state(angle, speed);
         }));
     }
     return starts;

@@ -154,6 +154,7 @@ struct trajectory_context {
     bool paper_table;  // an amplitude in t/T: the paper's table
     long double scale; // w0 t per unit of time
     int turns_per_period;
+    bool fractions;    // a libration in t/T: times as fractions of its period
 };
 
 /// One method's run: its approximant (none for the exact solution), clock and phase.
@@ -213,6 +214,12 @@ void append_values(const trajectory_context& c, const method_run& r, double s, s
     if (c.paper_table) {
         // The amplitude's own table, reduced by the exact period's symmetries.
         row.push_back(m.libration().theta_at_fraction(s));
+        return;
+    }
+    if (c.fractions) {
+        // A libration's state in periods T: its turning points and crossings land exactly.
+        row.push_back(m.theta_at_fraction(s));
+        if (c.state) row.push_back(m.velocity_at_fraction(s));
         return;
     }
     const long double far = 1e300L;
@@ -288,46 +295,55 @@ void write_formula_trajectory(std::ostream& out, table_format format, const meth
     writer.finish();
 }
 
-/// Writes trajectory's table row by row; every input is checked before the first row.
-void trajectory_stream(std::ostream& out, const trajectory_options& o, bool order_given, bool periods_given) {
-    const auto format = parse_table_format(o.format);
-    const auto starts = parse_starts(o.theta0, o.omega0, o.energy);
-    if (starts.size() != 1) throw usage_error("trajectory takes one start: one --theta0 (and --omega0) or --energy");
-    const start_option& start = starts.front();
-    const motion& m = start.motion;
-    // An amplitude alone keeps the paper's table: t/T and theta; a state also prints theta'/w0.
-    const bool state = !o.omega0.empty() || !o.energy.empty();
-    const time_unit_row& unit = parse_time_unit(o.time.empty() ? "t/T" : o.time);
-    if (!m.has_period() && unit.name == "t/T") {
-        throw usage_error(start.text + " is on the separatrix (E = 2): it has no period T; give --time t/T0 or --time t/s");
-    }
-    const long double w0 = checked_w0(o, unit);
-    const std::vector<method_choice> methods = trajectory_methods(o, order_given, start);
+/// Refuses --samples and --periods outside their ranges (with --samples).
+void check_sampling(const trajectory_options& o) {
     if (o.at.empty() == (o.samples == 0)) {
         throw usage_error("give either --at LIST or --samples N (with --periods P)");
     }
-    const std::vector<double> times = times_at(o, unit, periods_given);
-    if (o.at.empty()) {
-        if (o.samples < 2 || o.samples > max_samples) {
-            throw usage_error("--samples " + std::to_string(o.samples) + ": must be between 2 and " +
-                              std::to_string(max_samples));
-        }
-        if (!(o.periods > 0.0) || !(o.periods <= max_periods)) {
-            throw usage_error("--periods " + format_double(o.periods) +
-                              ": must be greater than 0 and at most " + format_double(max_periods));
-        }
+    if (!o.at.empty()) return;
+    if (o.samples < 2 || o.samples > max_samples) {
+        throw usage_error("--samples " + std::to_string(o.samples) + ": must be between 2 and " +
+                          std::to_string(max_samples));
     }
-    if (methods.front().user) return write_formula_trajectory(out, format, methods.front(), start, state, unit, w0, o, times);
-    const trajectory_context c{m, state, !state && unit.name == "t/T", unit.scale(m, w0),
-                               m.start().omega < 0 ? -1 : 1};
-    std::deque<method_run> runs;  // in place: a time reducer stays where it is made
-    for (const auto& method : methods) prepare_run(runs.emplace_back(method), c, start, o, unit, times);
+    if (!(o.periods > 0.0) || !(o.periods <= max_periods)) {
+        throw usage_error("--periods " + format_double(o.periods) + ": must be greater than 0 and at most " +
+                          format_double(max_periods));
+    }
+}
 
-    std::vector<std::string> columns{std::string(unit.column)};
-    for (auto& name : value_columns(methods, state)) columns.push_back(std::move(name));
-    const bool several_json = methods.size() > 1 && format == table_format::json;
-    if (several_json) out << json_head(start, state ? "" : o.theta0, unit, methods, state);
-    table_writer writer(out, columns, format);
+/// |d ln T / d ln x| of a libration, x being whichever of theta0 and pi - theta0 its amplitude holds.
+double period_sensitivity(const amplitude& a) {
+    constexpr double h = 1e-6;
+    const amplitude b = a.near_pi() ? amplitude::from_pi(a.from_pi() * (1 + h)) : amplitude(a.radians() * (1 + h));
+    return std::fabs(std::log(exact_solution(b).period_ratio() / exact_solution(a).period_ratio())) / h;
+}
+
+/// Says on standard error how many digits of theta remain where an amplitude rounded from its
+/// expression (9pi/10, not 3) meets a time of many periods: the phase is off by about
+/// 2 pi (t/T) |d ln T/d ln theta0| 2^-53, however exactly the time itself is reduced.
+void warn_conditioning(const start_option& start, const trajectory_options& o, const std::vector<double>& times,
+                       long double scale) {
+    const motion& m = start.motion;
+    if (m.given_as() != motion::origin::amplitude || m.amplitude().exact()) return;
+    double largest = o.periods;
+    if (!o.at.empty()) {
+        largest = 0;
+        for (double s : times) largest = std::max(largest, std::fabs(s));
+    }
+    const double periods = largest * static_cast<double>(scale / m.period());
+    const double error = 2 * std::numbers::pi * periods * period_sensitivity(m.amplitude()) * 0x1p-53;
+    if (!(error > 1e-15)) return;
+    const int digits = std::max(0, static_cast<int>(std::floor(-std::log10(error))));
+    std::cerr << "pendulum-figures: warning: " << start.text << " is not a double as written, and its rounding "
+              << "(half an ulp) shifts the phase by about " << format_double(error) << " rad at " << format_double(periods)
+              << " periods: about " << digits << " digits of theta remain there; write the amplitude as a number "
+              << "(a double is taken exactly) for every digit\n";
+}
+
+/// Writes the rows: --samples times computed as they are written (ten million need no
+/// memory), or the times of --at.
+void write_rows(table_writer& writer, const trajectory_context& c, const std::deque<method_run>& runs,
+                const trajectory_options& o, const std::vector<double>& times) {
     std::vector<double> row;
     const auto write = [&](double s) {
         row.assign(1, s);
@@ -335,11 +351,49 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
         writer.row(row);
     };
     if (o.at.empty()) {
-        // Sample times computed as they are written: ten million rows need no memory.
         for (int i = 0; i < o.samples; ++i) write(o.periods * i / (o.samples - 1));
     } else {
         for (double s : times) write(s);
     }
+}
+
+/// The one start of trajectory and its time unit, checked.
+const start_option& single_start(const std::vector<start_option>& starts, const time_unit_row& unit) {
+    if (starts.size() != 1) throw usage_error("trajectory takes one start: one --theta0 (and --omega0) or --energy");
+    const start_option& start = starts.front();
+    if (!start.motion.has_period() && unit.name == "t/T") {
+        throw usage_error(start.text + " is on the separatrix (E = 2): it has no period T; give --time t/T0 or --time t/s");
+    }
+    return start;
+}
+
+/// Writes trajectory's table row by row; every input is checked before the first row.
+void trajectory_stream(std::ostream& out, const trajectory_options& o, bool order_given, bool periods_given) {
+    const auto format = parse_table_format(o.format);
+    const auto starts = parse_starts(o.theta0, o.omega0, o.energy);
+    const time_unit_row& unit = parse_time_unit(o.time.empty() ? "t/T" : o.time);
+    const start_option& start = single_start(starts, unit);
+    const motion& m = start.motion;
+    // An amplitude alone keeps the paper's table: t/T and theta; a state also prints theta'/w0.
+    const bool state = !o.omega0.empty() || !o.energy.empty();
+    const long double w0 = checked_w0(o, unit);
+    const std::vector<method_choice> methods = trajectory_methods(o, order_given, start);
+    check_sampling(o);
+    const std::vector<double> times = times_at(o, unit, periods_given);
+    if (methods.front().user) return write_formula_trajectory(out, format, methods.front(), start, state, unit, w0, o, times);
+    const bool paper_table = !state && unit.name == "t/T";
+    const trajectory_context c{m, state, paper_table, unit.scale(m, w0), m.start().omega < 0 ? -1 : 1,
+                               !paper_table && unit.name == "t/T" && m.kind() == regime::libration && m.starts_at_quarter()};
+    std::deque<method_run> runs;  // in place: a time reducer stays where it is made
+    for (const auto& method : methods) prepare_run(runs.emplace_back(method), c, start, o, unit, times);
+    warn_conditioning(start, o, times, c.scale);
+
+    std::vector<std::string> columns{std::string(unit.column)};
+    for (auto& name : value_columns(methods, state)) columns.push_back(std::move(name));
+    const bool several_json = methods.size() > 1 && format == table_format::json;
+    if (several_json) out << json_head(start, state ? "" : o.theta0, unit, methods, state);
+    table_writer writer(out, columns, format);
+    write_rows(writer, c, runs, o, times);
     writer.finish();
     if (several_json) out << "}\n";
 }

@@ -48,6 +48,10 @@ public:
     /// True where the amplitude is the double theta0 itself (not pi - d, nor an expression's
     /// rounded numbers).
     bool exact_radians() const { return source_ == source::theta0; }
+    /// True where the amplitude is a double itself, theta0 or pi - d (as written: "3",
+    /// "pi - 1e-9" has d = 1e-9 to its last bit only as a double d), false where its numbers
+    /// were rounded from an expression such as 9pi/10.
+    bool exact() const { return source_ != source::parts; }
     /// theta0 in extended precision: pi - d close to pi unless theta0 is the exact number.
     long double radians_extended() const;
     /// k in extended precision, from whichever of theta0 and d is exact (as k() where the

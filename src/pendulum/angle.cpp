@@ -3,6 +3,7 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/mp_real.hpp"
+#include "pendulum/written_mp.hpp"
 
 #include <cerrno>
 #include <cfloat>
@@ -262,26 +263,65 @@ std::optional<double> plain_value(std::string_view t) {
     return v;
 }
 
-double evaluate(std::string_view text, bool allow_units) {
-    if (const auto v = plain_value(text)) return *v;
-    const double coarse = parser(text, working_bits).parse_all(allow_units).to_double();
-    const double fine = parser(text, 2 * working_bits).parse_all(allow_units).to_double();
-    if (coarse != fine) {
+/// True where x is exactly the double d.
+bool equals(const real& x, double d) { return mpfr_cmp_d(x.get(), d) == 0; }
+
+/// Refuses a value that is not 0 but rounds to 0: a double cannot hold it, and 0 would be
+/// another number (the rule for every number read: never a silent 0).
+void check_held(std::string_view text, const real& value) {
+    if (!value.is_zero() && value.to_double() == 0) {
+        parser(text, working_bits)
+            .fail("its size is below the smallest double, 4.9406564584124654e-324, and it is not 0: a double "
+                  "cannot hold it (write 0, or a larger value)");
+    }
+}
+
+/// The value of a text rounded once, checked against twice the bits; `exact` says whether
+/// that double is the value itself.
+double evaluate(std::string_view text, bool allow_units, bool* exact = nullptr) {
+    if (const auto v = plain_value(text)) {
+        if (exact) *exact = equals(parser(text, working_bits).parse_all(allow_units), *v);
+        return *v;
+    }
+    const real coarse = parser(text, working_bits).parse_all(allow_units);
+    const real fine = parser(text, 2 * working_bits).parse_all(allow_units);
+    check_held(text, fine);
+    if (coarse.to_double() != fine.to_double()) {
         parser(text, working_bits).fail("it cancels beyond " + std::to_string(2 * working_bits) + " bits");
     }
-    return fine;
+    if (exact) *exact = equals(fine, fine.to_double());
+    return fine.to_double();
 }
 
 }  // namespace
 
 double parse_expression(std::string_view text) { return evaluate(text, false); }
 
+written_number::written_number(double x) : value_(x) {}
+
+written_number written_number::parse(std::string_view text, bool units) {
+    written_number w;
+    w.text_ = std::string(text);
+    w.units_ = units;
+    w.value_ = evaluate(text, units, &w.exact_);
+    return w;
+}
+
+written_number written_number::angle(std::string_view text) { return parse(text, true); }
+
+written_number written_number::expression(std::string_view text) { return parse(text, false); }
+
+mp::real evaluate_written(const written_number& x, mpfr_prec_t bits) {
+    if (x.text().empty() || x.exact_double()) return real(x.value(), bits);
+    return parser(x.text(), bits).parse_all(x.angle_units());
+}
+
 double parse_angle(std::string_view text) { return evaluate(text, true); }
 
 amplitude parse_amplitude(std::string_view text, std::string_view name) {
     // A plain number below 3 (d > 0.14): its double is all there is to know, and its distance
     // from pi and k' follow from it to rounding (a million amplitudes read without MPFR).
-    if (const auto v = plain_value(text); v && *v < 3.0) {
+    if (const auto v = plain_value(text); v && *v < 3.0 && *v > 0) {
         check_amplitude(*v, name);
         return amplitude(*v);
     }
@@ -303,6 +343,10 @@ amplitude parse_amplitude(std::string_view text, std::string_view name) {
             check_amplitude(fine > 0.0 ? std::numbers::pi : 0.0, name);
         }
         if (!agree) parser(text, bits).fail("it cancels beyond " + std::to_string(2 * bits) + " bits");
+        check_held(text, fine);
+        // A value that is a double ("3", "+1", "2/2") is that double, read as a plain number
+        // is: one amplitude, whichever way it is written.
+        if (equals(fine, theta0) && theta0 < std::numbers::pi) return amplitude(theta0);
         if (d < DBL_MIN) {
             throw domain_error(std::string(name) + " must be at least 2.2250738585072014e-308 below pi, got pi - " +
                                format_double(d));

@@ -29,6 +29,38 @@ double parse_angle(std::string_view text);
 /// domain_error, naming `name`, unless 0 < theta0 < pi with pi - theta0 >= 2.2e-308.
 amplitude parse_amplitude(std::string_view text, std::string_view name = "theta0");
 
+/// A number as written: the text of an expression (an angle, with its unit, or a plain
+/// expression), evaluated at whatever precision a result needs, or a double taken exactly.
+/// "2pi/3", "2-1e-20" and "pi-1e-300" keep every digit their text has; value() is the one
+/// rounding to a double.
+class written_number {
+public:
+    /// The double x itself, exactly.
+    written_number(double x);  // NOLINT: a double is a number as written
+    /// An angle as parse_angle reads it; throws domain_error as parse_angle does.
+    static written_number angle(std::string_view text);
+    /// An expression as parse_expression reads it; throws domain_error as it does.
+    static written_number expression(std::string_view text);
+    /// The value rounded once to a double.
+    double value() const { return value_; }
+    /// The text as written; empty for a double.
+    const std::string& text() const { return text_; }
+    /// True where the text may end in a unit (deg, rad).
+    bool angle_units() const { return units_; }
+    /// True where the value is exactly a double (a double given, or a text such as "3" or
+    /// "+1" or "2/2" whose value is one): value() is then the number itself.
+    bool exact_double() const { return exact_; }
+
+private:
+    written_number() = default;
+    /// Reads the text, rounds it once and sees whether that double is the number.
+    static written_number parse(std::string_view text, bool units);
+    std::string text_;
+    bool units_ = false;
+    bool exact_ = true;
+    double value_ = 0;
+};
+
 /// One piece of an angle expression as the parser reads it, for showing it typeset.
 struct angle_token {
     /// What the piece is.

@@ -5,6 +5,8 @@
 #include "pendulum/gsl_support.hpp"
 #include "pendulum/mp_real.hpp"
 #include "pendulum/phase.hpp"
+#include "pendulum/start_energy.hpp"
+#include "pendulum/written_mp.hpp"
 
 
 #include <cmath>
@@ -39,10 +41,6 @@ reduced_angle reduce(double theta) {
     if (turns == 0) return {0.0, theta};
     return {turns, std::fma(-turns, two_pi_hi, theta) - turns * two_pi_lo};
 }
-
-/// Working precision for the energy of a state: a double's square and the cosine of a
-/// double angle carry 106 and 53 bits; the gap between them is exact far below any double.
-constexpr mpfr_prec_t energy_bits = 320;
 
 /// am(r | k) for r in [-K, K], in [-pi/2, pi/2]: beyond K/2 through u = K - r, where
 /// sn(K - u) = cn(u)/dn(u) and cn(K - u) = k' sn(u)/dn(u) keep their digits next to k = 1.
@@ -80,6 +78,11 @@ double elliptic_f(double s, double c, double kp) {
         throw domain_error("elliptic_f needs s >= 0 and (s, c) nonzero, got " + format_double(s) + ", " +
                            format_double(c));
     }
+    // F is of degree 0 in (s, c): scaled by a power of 2 to the larger of 1, their squares
+    // neither underflow (s = 1e-300) nor overflow, and R_F stays in its domain.
+    const int scale = std::ilogb(std::max(s, std::fabs(c)));
+    s = std::scalbn(s, -scale);
+    c = std::scalbn(c, -scale);
     const auto rf = carlson_rf;
     if (s == 0) return c > 0 ? 0.0 : std::numbers::pi / agm(1.0, kp);
     const double half = s * rf(c * c, c * c + kp * s * kp * s, s * s + c * c);
@@ -89,38 +92,74 @@ double elliptic_f(double s, double c, double kp) {
 }
 
 motion motion::from_state(pendulum_state start) {
-    if (!std::isfinite(start.theta) || !std::isfinite(start.omega)) {
-        throw domain_error("a start needs a finite angle and velocity, got theta = " + format_double(start.theta) +
-                           ", omega = " + format_double(start.omega));
+    return from_state(written_number(start.theta), written_number(start.omega));
+}
+
+namespace {
+
+/// True for a state at rest (omega exactly 0) at an angle in (0, pi]: an amplitude.
+bool at_rest_within_pi(const written_number& theta, const written_number& omega) {
+    if (omega.value() != 0 || !(theta.value() > 0 && theta.value() < 4.0)) return false;
+    constexpr mpfr_prec_t bits = 1280;
+    return !(evaluate_written(theta, bits) > mp::pi(bits));
+}
+
+/// The start as a message names it.
+std::string state_text(const written_number& theta, const written_number& omega) {
+    const auto shown = [](const written_number& x) { return x.text().empty() ? format_double(x.value()) : x.text(); };
+    return "theta0 = " + shown(theta) + ", omega0 = " + shown(omega);
+}
+
+}  // namespace
+
+motion motion::from_state(const written_number& theta, const written_number& omega) {
+    if (!std::isfinite(theta.value()) || !std::isfinite(omega.value())) {
+        throw domain_error("a start needs a finite angle and velocity, got theta = " + format_double(theta.value()) +
+                           ", omega = " + format_double(omega.value()));
     }
-    // E = omega^2/2 + 2 sin^2(theta/2), 2 - E = 2 cos^2(theta/2) - omega^2/2: both exact here
-    // far below rounding, so a state within 1e-12 of the separatrix keeps its gap's digits.
-    const mp::real half_angle = mp::real(start.theta, energy_bits) / 2.0;
-    const mp::real kinetic = mp::real(start.omega, energy_bits) * mp::real(start.omega, energy_bits) / 2.0;
-    const mp::real s = mp::sin(half_angle);
-    const mp::real c = mp::cos(half_angle);
-    const mp::real energy = kinetic + 2.0 * s * s;
-    const mp::real gap = 2.0 * c * c - kinetic;
-    if (energy.is_zero()) {
+    if (theta.value() == 0 && omega.value() == 0) {
         throw domain_error("the pendulum at rest at the bottom does not move: give a start with theta or omega "
                            "not 0 (or an energy > 0)");
     }
+    if (at_rest_within_pi(theta, omega)) {
+        // Released at rest: the amplitude itself, with its distance from pi (pi is refused).
+        // A double is itself: the one nearest pi is pi - 1.2e-16 (the text "pi" is refused).
+        constexpr double pi_lo = 1.2246467991473532e-16;
+        const auto held = [&] {
+            return theta.value() == pi ? pendulum::amplitude::from_pi(pi_lo) : pendulum::amplitude(theta.value());
+        };
+        motion m = from_amplitude(theta.text().empty() ? held() : parse_amplitude(theta.text()));
+        m.first_ = theta;
+        m.second_ = omega;
+        return m;
+    }
+    const start_energy e = decide_start([&](mpfr_prec_t bits) { return state_energy_at(theta, omega, bits); },
+                                        state_text(theta, omega));
     motion m;
-    m.start_ = start;
-    m.prepare(energy.to_double(), gap.to_double(), 0.5 * std::fabs(start.omega));
+    m.start_ = {theta.value(), omega.value()};
+    m.first_ = theta;
+    m.second_ = omega;
+    m.prepare(numbers_of(e), 0.5 * std::fabs(omega.value()));
     return m;
 }
 
-motion motion::from_energy(double energy) {
-    if (!(energy > 0 && std::isfinite(energy))) {
+motion motion::from_energy(double energy) { return from_energy(written_number(energy)); }
+
+motion motion::from_energy(const written_number& energy) {
+    const double value = energy.value();
+    if (!(value > 0 && std::isfinite(value))) {
         throw domain_error("the energy must be > 0 (in units of m g L, from the bottom; 2 is the separatrix), got " +
-                           format_double(energy));
+                           (energy.text().empty() ? format_double(value) : energy.text()));
     }
+    const start_energy e = decide_start([&](mpfr_prec_t bits) { return written_energy_at(energy, bits); },
+                                        "energy = " + (energy.text().empty() ? format_double(value) : energy.text()));
+    const start_numbers n = numbers_of(e);
     motion m;
     m.origin_ = origin::energy;
-    m.start_ = {0.0, std::sqrt(2.0 * energy)};
-    // From the bottom, |omega|/2 = sqrt(E/2) = k for a libration, without the rounding of omega.
-    m.prepare(energy, 2.0 - energy, std::sqrt(0.5 * energy));
+    m.first_ = energy;
+    // From the bottom: omega = sqrt(2 E) and |omega|/2 = sqrt(E/2), each rounded once.
+    m.start_ = {0.0, n.speed};
+    m.prepare(n, n.half_speed);
     return m;
 }
 
@@ -131,47 +170,48 @@ motion motion::from_amplitude(const pendulum::amplitude& theta0) {
     m.origin_ = origin::amplitude;
     m.start_ = {theta0.radians(), 0.0};
     m.kind_ = regime::libration;
-    m.energy_ = 2.0 * k * k;
-    m.gap_ = 2.0 * kp * kp;
+    // E = 2 k^2 and 2 - E = 2 k'^2, each rounded once from extended precision.
+    m.energy_ = static_cast<double>(2.0L * theta0.k_extended() * theta0.k_extended());
+    m.gap_ = static_cast<double>(2.0L * theta0.kp_extended() * theta0.kp_extended());
     m.k_ = k;
     m.kp_ = kp;
     m.libration_.emplace(theta0);
     m.given_.emplace(theta0);
     m.quarter_ = m.libration_->quarter_period();
+    m.at_quarter_ = true;
     return m;
 }
 
-void motion::prepare(double energy, double gap, double half_speed) {
-    energy_ = energy;
-    gap_ = gap;
+void motion::prepare(const start_numbers& n, double half_speed) {
+    energy_ = n.energy;
+    gap_ = n.gap;
+    energy_unheld_ = n.energy_unheld;
+    cancelled_ = n.cancelled;
+    kind_ = n.kind;
+    k_ = n.k;
+    kp_ = n.kp;
     // The motion backwards is the mirror image of the motion forwards from the mirrored start.
     mirror_ = start_.omega < 0 ? -1.0 : 1.0;
     const auto [turns, angle] = reduce(mirror_ * start_.theta);
     turns_ = turns;
-    if (gap > 0) {
-        kind_ = regime::libration;
-        k_ = std::sqrt(0.5 * energy);
-        kp_ = std::sqrt(0.5 * gap);
-        // The amplitude from its moduli: theta0 = 2 atan2(k, k'), pi - theta0 = 2 atan2(k', k).
-        libration_.emplace(amplitude::from_parts(2.0 * std::atan2(k_, kp_), 2.0 * std::atan2(kp_, k_), k_, kp_));
+    if (kind_ == regime::libration) {
+        given_.emplace(amplitude::from_parts(n.theta0, n.d, k_, kp_));
+        libration_.emplace(*given_);
         quarter_ = libration_->quarter_period();
         // Time from the turning point +theta0 down to the start: psi = am(tau) with
         // sn : cn = |omega|/2 : k' sin(theta/2) (from theta = 2 atan2(k cn, k'),
-        // theta'/w0 = -2 k k' sn/dn). Moving forwards, the start is that time before it.
-        offset_ = -elliptic_f(half_speed, kp_ * std::sin(0.5 * angle), kp_);
+        // theta'/w0 = -2 k k' sn/dn). Moving forwards, the start is that time before it; from
+        // the bottom it is a quarter period exactly.
+        offset_ = angle == 0 ? -quarter_ : -elliptic_f(half_speed, kp_ * std::sin(0.5 * angle), kp_);
+        start_fraction_ = (offset_ + (mirror_ < 0 ? 2.0 * quarter_ : 0.0)) / (4.0 * quarter_);
+        at_quarter_ = angle == 0;
         return;
     }
-    if (gap == 0) {
-        kind_ = regime::separatrix;
-        k_ = 1.0;
-        kp_ = 0.0;
+    if (kind_ == regime::separatrix) {
         // theta = 2 atan(sinh tau): tau = asinh(tan(theta/2)).
         offset_ = std::asinh(std::tan(0.5 * angle));
         return;
     }
-    kind_ = regime::rotation;
-    k_ = std::sqrt(2.0 / energy);
-    kp_ = std::sqrt(-gap / energy);
     quarter_ = 0.5 * pi / agm(1.0, kp_);
     // theta = 2 am(tau / k): tau = k F(theta/2 | k), with theta/2 in (-pi/2, pi/2].
     const double half = 0.5 * angle;
@@ -188,7 +228,12 @@ double motion::period() const {
     throw domain_error("the separatrix (E = 2) has no period: the pendulum approaches the top in infinite time");
 }
 
-double motion::period_ratio() const { return period() / (2.0 * pi); }
+double motion::period_ratio() const {
+    // T/T0 = 1/agm(1, k') and T_rev/T0 = k/(2 agm(1, k')), each with one division.
+    if (kind_ == regime::libration) return libration_->period_ratio();
+    if (kind_ == regime::rotation) return k_ / (2.0 * agm(1.0, kp_));
+    return period();  // throws at the separatrix
+}
 
 amplitude motion::amplitude() const {
     if (kind_ != regime::libration) {
@@ -198,8 +243,7 @@ amplitude motion::amplitude() const {
     }
     // Released at rest from an amplitude: that amplitude, with whichever of theta0 and pi -
     // theta0 is exact; from a state or an energy: the moduli are all there is.
-    if (given_) return *given_;
-    return amplitude::from_parts(libration_->amplitude(), 2.0 * std::atan2(kp_, k_), k_, kp_);
+    return *given_;
 }
 
 const exact_solution& motion::libration() const {
@@ -216,6 +260,22 @@ double motion::libration_clock(double w0_t) const {
 double motion::libration_center() const {
     (void)libration();
     return mirror_ * turns_ * two_pi_hi + mirror_ * turns_ * two_pi_lo;
+}
+
+double motion::fraction_of_period(double s) const {
+    (void)libration();
+    if (!std::isfinite(s)) throw domain_error("time must be finite, got " + format_double(s));
+    return (s - std::nearbyint(s)) + start_fraction_;
+}
+
+double motion::theta_at_fraction(double s) const {
+    if (s == 0) return start_.theta;
+    return libration_center() + libration_->theta_at_fraction(fraction_of_period(s));
+}
+
+double motion::velocity_at_fraction(double s) const {
+    if (s == 0) return start_.omega;
+    return pendulum::velocity_at_fraction(*libration_, fraction_of_period(s));
 }
 
 double start_phase(const motion& m, const fourier_solution& solution) {
@@ -239,7 +299,7 @@ double motion::forward_theta(double tau) const {
 
 double motion::forward_velocity(double tau) const {
     switch (kind_) {
-    case regime::libration: return velocity_at_fraction(*libration_, tau / (4.0 * quarter_));
+    case regime::libration: return pendulum::velocity_at_fraction(*libration_, tau / (4.0 * quarter_));
     case regime::separatrix: return 2.0 / std::cosh(tau);
     case regime::rotation: {
         const double revolution = 2.0 * k_ * quarter_;

@@ -2,10 +2,12 @@
 #pragma once
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/angle.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace pendulum {
@@ -37,6 +39,21 @@ struct pendulum_state {
     double omega = 0;  ///< theta'/w0, any sign
 };
 
+/// The numbers of a start's motion, each rounded once from its exact energy E and gap 2 - E.
+struct start_numbers {
+    regime kind = regime::libration;  ///< decided from the exact gap
+    double energy = 0;                ///< E
+    double gap = 0;                   ///< 2 - E
+    double k = 0;                     ///< the modulus
+    double kp = 0;                    ///< the complementary modulus
+    double theta0 = 0;                ///< a libration's amplitude 2 atan2(k, k')
+    double d = 0;                     ///< pi less it, 2 atan2(k', k)
+    double half_speed = 0;            ///< sqrt(E/2): |omega|/2 at the bottom
+    double speed = 0;                 ///< sqrt(2 E): |omega| at the bottom
+    long cancelled = 0;               ///< bits the gap lost to cancellation of its terms
+    std::string energy_unheld;        ///< E in decimal where a double holds it to fewer digits, or not at all
+};
+
 /// The exact motion theta'' + sin(theta) = 0 from any start, in all three regimes.
 ///
 /// Time is w0 t. theta(t) is unwrapped: a rotation's angle keeps rising (or falling), and
@@ -49,9 +66,17 @@ public:
     /// The motion from a state (theta, omega); throws domain_error for a state that is not
     /// finite or for the pendulum at rest at the bottom (energy 0).
     static motion from_state(pendulum_state start);
+    /// The motion from a state as written: its energy and gap from the numbers as written
+    /// (MPFR), the regime decided from them (E = 2 the separatrix, as for 2pi/3 with 1; a start
+    /// whose numbers cannot decide it is a domain_error). A state at rest (omega exactly 0) at
+    /// an angle in (0, pi] is its amplitude, from_amplitude(parse_amplitude(theta)): pi - d
+    /// keeps d, and pi itself is refused.
+    static motion from_state(const written_number& theta, const written_number& omega);
     /// The motion launched from the bottom (theta = 0) with energy E > 0, moving forward:
     /// omega = sqrt(2 E). Throws domain_error naming the energy unless 0 < E < infinity.
     static motion from_energy(double energy);
+    /// The same for an energy as written ("2-1e-20" is a libration, "2" the separatrix).
+    static motion from_energy(const written_number& energy);
     /// The libration released at rest from amplitude theta0 (the paper's start).
     static motion from_amplitude(const pendulum::amplitude& theta0);
 
@@ -63,6 +88,15 @@ public:
     regime kind() const { return kind_; }
     /// The energy E per m g L (from the bottom), rounded once.
     double energy() const { return energy_; }
+    /// E in decimal where a double cannot hold it to every digit (below 2.2e-308, where it is
+    /// subnormal or 0, or above the largest double); empty where energy() holds it.
+    const std::string& energy_unheld() const { return energy_unheld_; }
+    /// The first number as written: a state's angle, or the energy.
+    const written_number& written_first() const { return first_; }
+    /// A state's velocity as written (0 for the other origins).
+    const written_number& written_second() const { return second_; }
+    /// The bits the energy gap lost to cancellation of its terms (a state next to the separatrix).
+    long cancelled_bits() const { return cancelled_; }
     /// The energy gap 2 - E, rounded once from its exact value (negative for a rotation).
     double energy_gap() const { return gap_; }
     /// The start (for from_energy: theta = 0, omega = sqrt(2 E) rounded).
@@ -91,6 +125,17 @@ public:
     double libration_clock(double w0_t) const;
     /// The multiple of 2 pi a libration swings about; throws as amplitude() does.
     double libration_center() const;
+    /// A libration's theta at the time s periods T after its start: the start's place in its
+    /// period is a fraction of it (-1/4 from the bottom moving forwards), so the turning points
+    /// and crossings at the quarter periods land exactly, as for an amplitude; throws as
+    /// amplitude() does.
+    double theta_at_fraction(double s) const;
+    /// theta'/w0 the same way.
+    double velocity_at_fraction(double s) const;
+    /// True where a libration's start is exactly at a quarter period (a turning point, or the
+    /// bottom), so that theta_at_fraction() keeps every digit; elsewhere the start's place is a
+    /// rounded fraction, and a time reduced in w0 t is the better clock.
+    bool starts_at_quarter() const { return at_quarter_; }
 
     /// theta at time w0 t, unwrapped (continuous in t).
     double theta(double w0_t) const;
@@ -99,8 +144,10 @@ public:
 
 private:
     motion() = default;
-    /// Sets the regime, moduli and time offset from the start, its energy and energy gap.
-    void prepare(double energy, double gap, double half_speed);
+    /// Sets the regime, moduli and time offset from the start and its numbers.
+    void prepare(const start_numbers& n, double half_speed);
+    /// The libration's clock at a fraction of its period since the start.
+    double fraction_of_period(double s) const;
     /// theta and theta'/w0 of the forward motion (omega >= 0 after mirroring) at w0 t.
     double forward_theta(double tau) const;
     double forward_velocity(double tau) const;
@@ -118,6 +165,12 @@ private:
     double offset_ = 0;   ///< the forward motion's time at the start
     std::optional<exact_solution> libration_;
     std::optional<pendulum::amplitude> given_;  ///< the amplitude itself, for from_amplitude()
+    written_number first_ = 0.0;                ///< a state's angle or the energy, as written
+    written_number second_ = 0.0;               ///< a state's velocity as written
+    long cancelled_ = 0;
+    double start_fraction_ = 0;                 ///< a libration's clock at the start in periods
+    bool at_quarter_ = false;                   ///< start_fraction_ is a multiple of 1/4 exactly
+    std::string energy_unheld_;
 };
 
 /// The phase (w/w0) w0 t, reduced modulo 2 pi, that a Fourier solution has at time 0 when it

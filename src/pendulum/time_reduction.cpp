@@ -2,6 +2,7 @@
 #include "pendulum/time_reduction.hpp"
 
 #include "pendulum/mp_real.hpp"
+#include "pendulum/start_energy.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -43,36 +44,11 @@ real libration_period(const amplitude& a, mpfr_prec_t bits) {
     return 2.0 * mp::pi(bits) / mp::agm(real(1.0, bits), complementary_modulus(a, bits));
 }
 
-/// The period of a motion in w0 t from its exact energy: a libration's 4 K(k) with
-/// k' = sqrt((2 - E)/2), a rotation's revolution 2 k K(k) with k = sqrt(2/E),
-/// k' = sqrt((E - 2)/E). The energy of a state is exact at any precision.
+/// The period of a motion in w0 t: an amplitude's, or from the numbers of a state or an
+/// energy as written (start_energy.hpp).
 real motion_period(const motion& m, mpfr_prec_t bits) {
     if (m.given_as() == motion::origin::amplitude) return libration_period(m.amplitude(), bits);
-    if (!m.has_period()) (void)m.period();  // throws, naming the separatrix
-    // The gap 2 - E of a state may be far below E (a state next to the separatrix): 320 more
-    // bits keep the gap of any two doubles to the precision asked for.
-    const mpfr_prec_t energy_bits = bits + 320;
-    real energy(energy_bits);
-    real gap(energy_bits);
-    if (m.given_as() == motion::origin::energy) {
-        energy = real(m.energy(), energy_bits);
-        gap = 2.0 - energy;
-    } else {
-        const pendulum_state start = m.start();
-        const real half_angle = real(start.theta, energy_bits) / 2.0;
-        const real kinetic = real(start.omega, energy_bits) * real(start.omega, energy_bits) / 2.0;
-        const real s = mp::sin(half_angle);
-        const real c = mp::cos(half_angle);
-        energy = kinetic + 2.0 * s * s;
-        gap = 2.0 * c * c - kinetic;
-    }
-    const real one(1.0, energy_bits);
-    const real exact = m.kind() == regime::libration
-                           ? 2.0 * mp::pi(energy_bits) / mp::agm(one, mp::sqrt(gap / 2.0))
-                           : mp::pi(energy_bits) * mp::sqrt(2.0 / energy) / mp::agm(one, mp::sqrt(-gap / energy));
-    real period(bits);
-    mpfr_set(period.get(), exact.get(), MPFR_RNDN);
-    return period;
+    return written_period(m, bits);
 }
 
 /// w0 t per unit of time, `period` being the motion's period in w0 t.

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The energy of a start from its numbers as written, in MPFR: for the core only, not installed.
+
+#include "pendulum/angle.hpp"
+#include "pendulum/motion.hpp"
+#include "pendulum/mp_real.hpp"
+
+#include <functional>
+#include <string>
+
+namespace pendulum {
+
+/// The energy E and the gap 2 - E of a start, each correct to the precision they carry, and
+/// the regime they decide.
+struct start_energy {
+    mp::real energy;  ///< E per m g L, from the bottom
+    mp::real gap;     ///< 2 - E, without cancellation beyond its own terms
+    regime kind;      ///< by the sign of the gap; the separatrix where it vanishes
+    long cancelled;   ///< bits the gap lost to cancellation (its terms' size over its own)
+};
+
+/// The energy of the state (theta, omega) as written, at `bits` (a guide: the gap keeps
+/// about `bits` bits of its own, whatever cancels). Not deciding the regime (kind is set from
+/// the sign, cancelled from the terms).
+start_energy state_energy_at(const written_number& theta, const written_number& omega, mpfr_prec_t bits);
+
+/// The energy E as written, at `bits`.
+start_energy written_energy_at(const written_number& energy, mpfr_prec_t bits);
+
+/// Decides the regime of a start: the gap at a precision and at twice it, first 192 bits, then
+/// 1280: decided where both round to the same double; the separatrix where both vanish to
+/// their precision (2 - E below 2^-1272 of its terms at 1280 bits and 2^-2552 at 2560 bits, as
+/// for 2pi/3 with 1); otherwise throws domain_error: the inputs cannot decide.
+start_energy decide_start(const std::function<start_energy(mpfr_prec_t)>& at, const std::string& what);
+
+/// The doubles of a decided start, each rounded once from the exact energy and gap.
+start_numbers numbers_of(const start_energy& e);
+
+/// The period in w0 t of a motion given as a state or an energy, from its numbers as written,
+/// with `bits` bits; throws domain_error at the separatrix.
+mp::real written_period(const motion& m, mpfr_prec_t bits);
+
+}  // namespace pendulum

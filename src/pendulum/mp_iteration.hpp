@@ -25,13 +25,18 @@ struct mp_solution {
 /// A method's solution at any precision, from the exact amplitude: what a fourier_solution
 /// carries so that its phase (w/w0) w0 t can be formed to the last bit at any time.
 struct exact_source {
-    /// The solution with `bits` (at least 64).
+    /// The solution with `bits` (at least 64): w/w0 within a few units of 2^-(bits - 16).
     std::function<mp_solution(mpfr_prec_t bits)> at;
+    /// w/w0 known without calling `at` (the iteration's extended-precision run, whose MPFR
+    /// run costs seconds at order 200), right to 2^-known_bits relative; 0 bits: none.
+    long double known_ratio = 0;
+    int known_bits = 0;  ///< see known_ratio
 };
 
 /// A shared source for a fourier_solution.
-inline std::shared_ptr<const exact_source> make_source(std::function<mp_solution(mpfr_prec_t bits)> at) {
-    return std::make_shared<const exact_source>(exact_source{std::move(at)});
+inline std::shared_ptr<const exact_source> make_source(std::function<mp_solution(mpfr_prec_t bits)> at,
+                                                       long double known_ratio = 0, int known_bits = 0) {
+    return std::make_shared<const exact_source>(exact_source{std::move(at), known_ratio, known_bits});
 }
 
 }  // namespace pendulum

@@ -89,6 +89,23 @@ long double extended(const real& x) { return mpfr_get_ld(x.get(), MPFR_RNDN); }
 
 }  // namespace
 
+namespace {
+
+/// w/w0 from the solution's source, with `bits`, right enough for phases up to 2^phase_exponent
+/// in size: within 2^-56 rad (an eighth of an ulp of pi). The source's known ratio where it
+/// is that right, its MPFR run otherwise (with 16 bits to spare for its own rounding).
+real exact_ratio(const exact_source& source, long phase_exponent, mpfr_prec_t bits) {
+    const long needed = std::max(0L, phase_exponent + 1) + 56;
+    if (source.known_bits >= needed) {
+        real r(bits);
+        mpfr_set_ld(r.get(), source.known_ratio, MPFR_RNDN);
+        return r;
+    }
+    return real(source.at(static_cast<mpfr_prec_t>(std::max(64L, needed + 16))).ratio, bits);
+}
+
+}  // namespace
+
 /// Sets up a reducer's state for a period given at any precision.
 struct reducer_setup {
     static std::unique_ptr<time_reducer::state> make(const std::function<real(mpfr_prec_t)>& period_at,
@@ -132,10 +149,10 @@ std::unique_ptr<time_reducer::state> reducer_setup::make(const std::function<rea
     const mpfr_prec_t bits = 128 + std::max(0L, cycles);
     real period = period_at(bits);
     real per_unit = unit_scale(scale, period);
-    // The solution's own w/w0 with these bits where it has one (a few ulps of them: far
-    // below what the phase needs), the double taken as exact otherwise.
+    // The solution's own w/w0 where it has one, the double taken as exact otherwise.
     const bool exact = source != nullptr && frequency_ratio > 0;
-    real ratio = exact ? real(source->at(bits).ratio, bits) : real(frequency_ratio, bits);
+    real ratio = exact ? exact_ratio(*source, time_exponent + mp::exponent(rough_scale) + std::ilogb(frequency_ratio), bits)
+                       : real(frequency_ratio, bits);
     auto s = std::make_unique<time_reducer::state>(time_reducer::state{
         per_unit, period, std::move(ratio), 2.0 * mp::pi(bits), extended(per_unit), extended(period),
         static_cast<long double>(frequency_ratio), real(bits + 64), real(bits), real(bits), real(0.0, bits), exact});

@@ -170,11 +170,15 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
         } else {
             // The phase as trajectory forms it (the core's time_reducer with the solution's exact
             // w/w0), so that a figure's data and trajectory give the same numbers.
+            // A level without a period has no value (NaN), refused by the checks downstream.
             auto solution = pendulum::method_solution(m.method, a.theta0());
-            auto reduce = std::make_shared<const pendulum::time_reducer>(
-                a.theta0(), pendulum::time_scale{}, std::max(std::fabs(lo), std::fabs(hi)), solution);
-            theta = [solution = std::move(solution), reduce = std::move(reduce), angle](double s) {
-                return angle * solution.theta_at_phase(reduce->phase(s));
+            std::shared_ptr<const pendulum::time_reducer> reduce;
+            if (solution.exists()) {
+                reduce = std::make_shared<const pendulum::time_reducer>(
+                    a.theta0(), pendulum::time_scale{}, std::max(std::fabs(lo), std::fabs(hi)), solution);
+            }
+            theta = [solution = std::move(solution), reduce = std::move(reduce), period, angle](double s) {
+                return angle * (reduce ? solution.theta_at_phase(reduce->phase(s)) : solution.theta(s * period));
             };
         }
         panel.data.push_back(make_series(st, grid(lo, hi, is_exact(m) ? circles : points), theta));

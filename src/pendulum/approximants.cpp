@@ -45,6 +45,11 @@ double besinc(double x) {
 
 namespace {
 
+/// theta0 in extended precision from whichever of theta0 and d is the nearer to the exact
+/// amplitude (as mp::exact_amplitude takes it): pi - d close to pi, the double theta0 itself
+/// elsewhere (an expression's d, e.g. 2pi/3 for pi/3, is rounded twice as coarsely).
+long double theta_extended(const amplitude& a) { return a.near_pi() ? a.radians_extended() : a.radians(); }
+
 /// J_n(x) in extended precision (the power series) and in MPFR.
 long double j_of(int n, long double x) { return bessel_j_series(n, x); }
 mp::real j_of(int n, const mp::real& x) { return mp::bessel_j(n, x); }
@@ -138,7 +143,7 @@ fourier_solution first_order(const amplitude& a) {
     // In extended precision from the amplitude's extended theta0 (exact near pi), rounded
     // once: the ratios J_n(theta0)/theta0 keep every digit down to the smallest subnormal
     // amplitude, and c3' = eta c1' its last bit (in doubles it was off by up to 9 ulps).
-    const long double theta0 = a.radians_extended();
+    const long double theta0 = theta_extended(a);
     const auto p = formulas::first_order_of(theta0);
     const long double c1 = theta0 / (1 + p.eta);
     return {static_cast<double>(p.frequency), {static_cast<double>(c1), static_cast<double>(p.eta * c1)},
@@ -153,7 +158,7 @@ fourier_solution second_order(const amplitude& amp) {
     // Every step in extended precision, each Bessel value by its series, and the results
     // rounded once: in doubles the chain of eight Bessel values (a few ulps each), eta and
     // the projection cost up to 10 ulps in the period.
-    const long double theta0 = amp.radians_extended();
+    const long double theta0 = theta_extended(amp);
     const auto p = second_order_of(theta0);
     fourier_solution s{static_cast<double>(std::sqrt(p.lambda)), {}, source_of(amp, detail::second_mp)};
     for (int k = 0; k < 3; ++k) {
@@ -185,7 +190,9 @@ std::array<Real, 4> polynomial_of(const formulas::amplitude_view<Real>& x) {
 fourier_solution polynomial(const amplitude& a) {
     // In extended precision from the extended theta0 (exact near pi), rounded once: c5 =
     // theta0^5/20480 in doubles was off by up to 5.6 ulps.
-    const auto p = polynomial_of(formulas::view_extended(a));
+    auto view = formulas::view_extended(a);
+    view.theta = theta_extended(a);
+    const auto p = polynomial_of(view);
     return {static_cast<double>(1 / p[3]),
             {static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])},
             make_source([a](mpfr_prec_t bits) {
@@ -342,7 +349,7 @@ std::vector<fourier_solution> iterated_sequence_extended(const amplitude& a, int
     // Every level in extended precision and rounded once: in doubles the levels' rounding
     // grows to about 100 ulps at d = 0.02 from pi (order 37), in extended precision it stays
     // 2^11 times smaller, below half an ulp of the doubles.
-    const long double theta0 = a.radians_extended();
+    const long double theta0 = theta_extended(a);
     std::vector<fourier_solution> levels;
     sine_projector<long double> project;
     // The coefficients in units of theta0, so that no amplitude underflows.

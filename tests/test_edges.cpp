@@ -339,11 +339,11 @@ TEST(Claims, EveryMeasuredNumberIsPinned) {
 }
 
 // The claims print 17 digits: their period errors are the correctly rounded ones (MPFR
-// throughout), to the one rounding of the factor 100, at the doubles the claims use
-// (tests/data/make_claims_errors.py).
+// throughout, 100 (T_m/T - 1) rounded once), at the exact amplitudes the claims name
+// (tests/data/make_claims_exact_errors.py).
 TEST(Claims, PeriodErrorsRightToTheLastDigit) {
     const auto rows = pendulum::paper_claims();
-    const auto ref = test_support::read_reference_text("claims_errors.csv");
+    const auto ref = test_support::read_reference_text("claims_exact_errors.csv");
     ASSERT_EQ(ref.size(), 6u);
     for (std::size_t i = 1; i < ref.size(); ++i) {
         const std::string quantity =

@@ -7,8 +7,10 @@
 #include "pendulum/formulas.hpp"
 #include "pendulum/gsl_support.hpp"
 #include "pendulum/mp_iteration.hpp"
+#include "pendulum/mp_real.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -41,14 +43,96 @@ double besinc(double x) {
     return 2.0 * bessel_j_over_x(1, x);
 }
 
+namespace {
+
+/// theta0 in extended precision from whichever of theta0 and d is the nearer to the exact
+/// amplitude (as mp::exact_amplitude takes it): pi - d close to pi, the double theta0 itself
+/// elsewhere (an expression's d, e.g. 2pi/3 for pi/3, is rounded twice as coarsely).
+long double theta_extended(const amplitude& a) { return a.near_pi() ? a.radians_extended() : a.radians(); }
+
+/// J_n(x) in extended precision (the power series) and in MPFR.
+long double j_of(int n, long double x) { return bessel_j_series(n, x); }
+mp::real j_of(int n, const mp::real& x) { return mp::bessel_j(n, x); }
+
+/// The second order's parts in units of theta0: lambda = (w/w0)^2 and C_{2k+1}/theta0.
+template <class Real>
+struct second_order_parts {
+    Real lambda;         ///< (w/w0)^2
+    std::vector<Real> C; ///< C_1, C_3, C_5 over theta0
+};
+
+/// The second order as in the paper's appendix, in one number type (extended precision for
+/// the doubles, MPFR for the exact tier): the projection of sin(theta) on the first order's
+/// motion, a = theta0/(1 + eta), b/theta0 = eta/(1 + eta), J_{-2} = J_2.
+template <class Real>
+second_order_parts<Real> second_order_of(const Real& theta0) {
+    using formulas::j_over_x;
+    using formulas::zero_like;
+    const auto p = formulas::first_order_of(theta0);
+    const Real a_ratio = 1.0 / (1.0 + p.eta);
+    const Real b_ratio = p.eta / (1.0 + p.eta);
+    const Real a = theta0 * a_ratio;
+    second_order_parts<Real> out{zero_like(theta0), {}};
+    for (int k = 0; k < 3; ++k) {
+        const Real inner = 2.0 * j_over_x(2 * k + 1, a) * a_ratio + b_ratio * (j_of(2 * k + 4, a) - j_of(std::abs(2 * k - 2), a));
+        out.C.push_back(k % 2 == 0 ? inner : -inner);
+        out.lambda = out.lambda + out.C.back() / static_cast<double>((2 * k + 1) * (2 * k + 1));
+    }
+    return out;
+}
+
+/// NaN with `bits`.
+mp::real mp_nan(mpfr_prec_t bits) {
+    mp::real r(bits);
+    mpfr_set_nan(r.get());
+    return r;
+}
+
+/// The solution in MPFR from lambda = (w/w0)^2 and the coefficients over theta0 (u_k), or
+/// from C_k = (2k+1)^2 lambda u_k where `projected` is set.
+mp_solution mp_from(const mp::real& theta0, const mp::real& lambda, const std::vector<mp::real>& u, bool projected) {
+    mp_solution s{lambda.sign() > 0 ? mp::sqrt(lambda) : mp_nan(theta0.precision()), {}};
+    for (std::size_t k = 0; k < u.size(); ++k) {
+        const double h2 = static_cast<double>((2 * k + 1) * (2 * k + 1));
+        s.coefficients.push_back(projected ? theta0 * (u[k] / (h2 * lambda)) : theta0 * u[k]);
+    }
+    return s;
+}
+
+}  // namespace
+
+mp_solution detail::lowest_mp(const mp::mp_amplitude& x) { return {formulas::lowest_frequency(x.theta), {x.theta}}; }
+
+mp_solution detail::first_mp(const mp::mp_amplitude& x) {
+    const auto q = formulas::first_order_of(x.theta);
+    const mp::real c1 = x.theta / (1.0 + q.eta);
+    return {q.frequency, {c1, q.eta * c1}};
+}
+
+mp_solution detail::second_mp(const mp::mp_amplitude& x) {
+    const auto q = second_order_of(x.theta);
+    return mp_from(x.theta, q.lambda, q.C, true);
+}
+
+namespace {
+
+/// A source from one of the MPFR solutions above at the exact amplitude a.
+std::shared_ptr<const exact_source> source_of(const amplitude& a, mp_solution (*f)(const mp::mp_amplitude&)) {
+    return make_source([a, f](mpfr_prec_t bits) { return f(mp::exact_amplitude(a, bits)); });
+}
+
+}  // namespace
+
 fourier_solution harmonic(const amplitude& a) {
     const double theta0 = a.radians();
-    return {1.0, {theta0}};
+    return {1.0, {theta0}, make_source([a](mpfr_prec_t bits) {
+                return mp_solution{mp::real(1.0, bits), {mp::exact_amplitude(a, bits).theta}};
+            })};
 }
 
 fourier_solution lowest_order(const amplitude& a) {
     const double theta0 = a.radians();
-    return {formulas::lowest_frequency(theta0), {theta0}};
+    return {formulas::lowest_frequency(theta0), {theta0}, source_of(a, detail::lowest_mp)};
 }
 
 long double lowest_period_extended(const amplitude& a) {
@@ -56,73 +140,65 @@ long double lowest_period_extended(const amplitude& a) {
 }
 
 fourier_solution first_order(const amplitude& a) {
-    const double theta0 = a.radians();
-    // Ratios J_n(theta0)/theta0 keep every digit down to the smallest subnormal amplitude.
+    // In extended precision from the amplitude's extended theta0 (exact near pi), rounded
+    // once: the ratios J_n(theta0)/theta0 keep every digit down to the smallest subnormal
+    // amplitude, and c3' = eta c1' its last bit (in doubles it was off by up to 9 ulps).
+    const long double theta0 = theta_extended(a);
     const auto p = formulas::first_order_of(theta0);
-    const double c1 = theta0 / (1.0 + p.eta);
-    return {p.frequency, {c1, p.eta * c1}};
+    const long double c1 = theta0 / (1 + p.eta);
+    return {static_cast<double>(p.frequency), {static_cast<double>(c1), static_cast<double>(p.eta * c1)},
+            source_of(a, detail::first_mp)};
 }
 
 long double first_period_extended(const amplitude& a) {
     return 1 / formulas::first_order_of(a.radians_extended()).frequency;
 }
 
-namespace {
-
-/// The second order in extended precision: lambda = (w/w0)^2 and C_{2k+1}/theta0.
-struct second_order_parts {
-    long double theta0;
-    long double lambda;
-    long double C[3];
-};
-
-second_order_parts second_order_extended(const amplitude& amp) {
+fourier_solution second_order(const amplitude& amp) {
     // Every step in extended precision, each Bessel value by its series, and the results
     // rounded once: in doubles the chain of eight Bessel values (a few ulps each), eta and
     // the projection cost up to 10 ulps in the period.
-    using real = long double;
-    second_order_parts p{};
-    const real theta0 = amp.radians_extended();
-    p.theta0 = theta0;
-    const real j1 = bessel_j_over_x_series(1, theta0);
-    const real eta = -bessel_j_over_x_series(3, theta0) / (9 * j1);
-    // The projection and lambda in units of theta0: a/theta0 and b/theta0 are of order one.
-    const real a_ratio = 1 / (1 + eta);
-    const real b_ratio = eta / (1 + eta);
-    const real a = theta0 * a_ratio;
-    real sum = 0;
+    const long double theta0 = theta_extended(amp);
+    const auto p = second_order_of(theta0);
+    fourier_solution s{static_cast<double>(std::sqrt(p.lambda)), {}, source_of(amp, detail::second_mp)};
     for (int k = 0; k < 3; ++k) {
-        // J_{2k-2} with J_{-2} = J_2 (integer-order reflection).
-        const real inner = 2 * bessel_j_over_x_series(2 * k + 1, a) * a_ratio +
-                           b_ratio * (bessel_j_series(2 * k + 4, a) - bessel_j_series(std::abs(2 * k - 2), a));
-        p.C[k] = (k % 2 == 0) ? inner : -inner;
-        sum += p.C[k] / ((2 * k + 1) * (2 * k + 1));
-    }
-    p.lambda = sum;
-    return p;
-}
-
-}  // namespace
-
-fourier_solution second_order(const amplitude& amp) {
-    const auto p = second_order_extended(amp);
-    fourier_solution s{static_cast<double>(std::sqrt(p.lambda)), {}};
-    for (int k = 0; k < 3; ++k) {
-        s.coefficients.push_back(static_cast<double>(p.theta0 * (p.C[k] / ((2 * k + 1) * (2 * k + 1) * p.lambda))));
+        s.coefficients.push_back(static_cast<double>(theta0 * (p.C[k] / ((2 * k + 1) * (2 * k + 1) * p.lambda))));
     }
     return s;
 }
 
-long double second_period_extended(const amplitude& amp) { return 1 / std::sqrt(second_order_extended(amp).lambda); }
+long double second_period_extended(const amplitude& amp) {
+    return 1 / std::sqrt(second_order_of(amp.radians_extended()).lambda);
+}
+
+mp::real detail::second_period_mp(const mp::mp_amplitude& x, int) { return 1.0 / mp::sqrt(second_order_of(x.theta).lambda); }
+
+namespace {
+
+/// The polynomial's c1, c3, c5 and T/T0 in one number type.
+template <class Real>
+std::array<Real, 4> polynomial_of(const formulas::amplitude_view<Real>& x) {
+    const Real t2 = x.theta * x.theta;
+    const Real t3 = t2 * x.theta;
+    const Real t5 = t3 * t2;
+    return {x.theta + t3 / 192.0 + 17.0 * t5 / 61440.0, -(t3 / 192.0 + t5 / 3072.0), t5 / 20480.0,
+            formulas::polynomial{}(x, 0)};
+}
+
+}  // namespace
 
 fourier_solution polynomial(const amplitude& a) {
-    const double theta0 = a.radians();
-    const double t2 = theta0 * theta0;
-    const double t3 = t2 * theta0;
-    const double t5 = t3 * t2;
-    const double period = formulas::polynomial{}(formulas::view_of(a), 0);
-    return {1.0 / period,
-            {theta0 + t3 / 192.0 + 17.0 * t5 / 61440.0, -(t3 / 192.0 + t5 / 3072.0), t5 / 20480.0}};
+    // In extended precision from the extended theta0 (exact near pi), rounded once: c5 =
+    // theta0^5/20480 in doubles was off by up to 5.6 ulps.
+    auto view = formulas::view_extended(a);
+    view.theta = theta_extended(a);
+    const auto p = polynomial_of(view);
+    return {static_cast<double>(1 / p[3]),
+            {static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])},
+            make_source([a](mpfr_prec_t bits) {
+                const auto q = polynomial_of(mp::exact_amplitude(a, bits));
+                return mp_solution{1.0 / q[3], {q[0], q[1], q[2]}};
+            })};
 }
 
 namespace {
@@ -233,33 +309,71 @@ fourier_solution iterated(const amplitude& theta0, int order) {
     return std::move(iterated_sequence(theta0, order).back());
 }
 
+namespace {
+
+/// Level n of the iteration in MPFR at the exact amplitude, for a level's exact_source.
+/// How many bits of w/w0 the extended iteration keeps: its rounding grows from level to
+/// level and towards pi, to 2^-57.1 relative measured at d = 0.0201 (2^-61 at d >= 1).
+constexpr int extended_ratio_bits = 56;
+
+std::shared_ptr<const exact_source> iteration_source(const amplitude& a, int n, long double known_ratio,
+                                                     int known_bits) {
+    return make_source([a, n](mpfr_prec_t bits) {
+        const auto x = mp::exact_amplitude(a, bits);
+        std::vector<std::vector<mp::real>> u;
+        const auto lambdas = detail::mp_lambdas(x, n, bits, {}, &u);
+        if (lambdas.size() <= static_cast<std::size_t>(n) || !lambdas[static_cast<std::size_t>(n)]) {
+            throw domain_error("the iteration's projection does not converge at order " + std::to_string(n) +
+                               " for theta0 = " + format_amplitude(a));
+        }
+        return mp_from(x.theta, *lambdas[static_cast<std::size_t>(n)], u[static_cast<std::size_t>(n)], false);
+    }, known_ratio, known_bits);
+}
+
+}  // namespace
+
 std::vector<fourier_solution> iterated_sequence(const amplitude& a, int order) {
     check_order(order);
-    // Close to pi the double iteration's rounding grows at every level: MPFR there.
-    if (a.from_pi() < detail::iteration_mp_below) return detail::iterated_sequence_mp(a, order);
-    const double theta0 = a.radians();
+    // Close to pi the iteration's rounding grows at every level: MPFR there.
+    if (a.from_pi() >= detail::iteration_mp_below) return iterated_sequence_extended(a, order);
+    auto levels = detail::iterated_sequence_mp(a, order);
+    // Their w/w0 agree with a run at half the bits to 1e-15, and are rounded to doubles.
+    for (std::size_t n = 0; n < levels.size(); ++n) {
+        levels[n].exact = iteration_source(a, static_cast<int>(n), levels[n].frequency_ratio, 49);
+    }
+    return levels;
+}
+
+std::vector<fourier_solution> iterated_sequence_extended(const amplitude& a, int order) {
+    check_order(order);
+    // Every level in extended precision and rounded once: in doubles the levels' rounding
+    // grows to about 100 ulps at d = 0.02 from pi (order 37), in extended precision it stays
+    // 2^11 times smaller, below half an ulp of the doubles.
+    const long double theta0 = theta_extended(a);
     std::vector<fourier_solution> levels;
-    sine_projector<double> project;
+    sine_projector<long double> project;
     // The coefficients in units of theta0, so that no amplitude underflows.
-    std::vector<double> u{1.0};
+    std::vector<long double> u{1.0L};
     for (int level = 0; level <= order; ++level) {
         const int count = level + 1;
-        std::vector<double> C;
+        std::vector<long double> C;
         if (level <= 1) {
             // Exact in closed form: sin(theta0 cos x) = 2 sum (-1)^k J_{2k+1}(theta0) cos((2k+1)x).
             for (int k = 0; k < count; ++k) {
-                const double j = 2.0 * bessel_j_over_x(2 * k + 1, theta0);
+                const long double j = 2 * bessel_j_over_x_series(2 * k + 1, theta0);
                 C.push_back(k % 2 == 0 ? j : -j);
             }
         } else {
             C = project(u, count, theta0);
         }
-        const double lambda = next_level(C, u);
+        const long double lambda = next_level(C, u);
         fourier_solution level_solution;
-        for (double v : u) level_solution.coefficients.push_back(theta0 * v);
+        for (long double v : u) level_solution.coefficients.push_back(static_cast<double>(theta0 * v));
         // lambda = (w/w0)^2; where it is not positive the level has no real frequency (the
         // scheme breaks down there, close to pi), and the iteration goes on from its c_k.
-        level_solution.frequency_ratio = lambda > 0 ? std::sqrt(lambda) : std::nan("");
+        const long double ratio = lambda > 0 ? std::sqrt(lambda) : std::numeric_limits<long double>::quiet_NaN();
+        level_solution.frequency_ratio = static_cast<double>(ratio);
+        level_solution.exact = iteration_source(a, level, ratio, extended_ratio_bits);
         levels.push_back(std::move(level_solution));
     }
     return levels;

@@ -3,14 +3,21 @@
 
 #include "pendulum/amplitude.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace pendulum {
+
+/// A method's w/w0 and coefficients at any precision (MPFR, mp_iteration.hpp): internal.
+struct exact_source;
 
 /// A truncated Fourier solution theta(t) = sum_k c_{2k+1} cos((2k+1) w t).
 struct fourier_solution {
     double frequency_ratio = 1.0;      ///< w/w0
     std::vector<double> coefficients;  ///< c1, c3, c5, ...
+    /// The same solution at any precision, from the exact amplitude (null for a solution made
+    /// of its doubles alone): time_reducer forms the phase at large times with it.
+    std::shared_ptr<const exact_source> exact{};
 
     /// The period ratio T/T0 = w0/w (NaN where the solution has no period).
     double period_ratio() const { return 1.0 / frequency_ratio; }
@@ -47,6 +54,10 @@ fourier_solution iterated(const amplitude& theta0, int order);
 
 /// Every level of the iteration, 0 to `order`: element n is iterated(theta0, n).
 std::vector<fourier_solution> iterated_sequence(const amplitude& theta0, int order);
+
+/// The levels as iterated_sequence() computes them at least detail::iteration_mp_below from
+/// pi (extended precision, rounded once), at any amplitude: for measuring where MPFR is needed.
+std::vector<fourier_solution> iterated_sequence_extended(const amplitude& theta0, int order);
 
 /// Throws domain_error naming the order unless 0 <= order <= max_order.
 void check_order(int order);

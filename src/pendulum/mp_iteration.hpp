@@ -10,8 +10,36 @@
 #include "pendulum/mp_real.hpp"
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
+
+namespace pendulum {
+
+/// A Fourier solution in MPFR: w/w0 and c1, c3, ... with one precision.
+struct mp_solution {
+    mp::real ratio;                     ///< w/w0 (NaN where the level has no period)
+    std::vector<mp::real> coefficients; ///< c1, c3, ...
+};
+
+/// A method's solution at any precision, from the exact amplitude: what a fourier_solution
+/// carries so that its phase (w/w0) w0 t can be formed to the last bit at any time.
+struct exact_source {
+    /// The solution with `bits` (at least 64): w/w0 within a few units of 2^-(bits - 16).
+    std::function<mp_solution(mpfr_prec_t bits)> at;
+    /// w/w0 known without calling `at` (the iteration's extended-precision run, whose MPFR
+    /// run costs seconds at order 200), right to 2^-known_bits relative; 0 bits: none.
+    long double known_ratio = 0;
+    int known_bits = 0;  ///< see known_ratio
+};
+
+/// A shared source for a fourier_solution.
+inline std::shared_ptr<const exact_source> make_source(std::function<mp_solution(mpfr_prec_t bits)> at,
+                                                       long double known_ratio = 0, int known_bits = 0) {
+    return std::make_shared<const exact_source>(exact_source{std::move(at), known_ratio, known_bits});
+}
+
+}  // namespace pendulum
 
 namespace pendulum::detail {
 
@@ -32,5 +60,16 @@ std::vector<fourier_solution> iterated_sequence_mp(const amplitude& theta0, int 
 std::vector<std::optional<mp::real>> mp_lambdas(const mp::mp_amplitude& x, int order, mpfr_prec_t bits,
                                                 const std::function<bool(const mp::real& lambda)>& stop = {},
                                                 std::vector<std::vector<mp::real>>* coefficients = nullptr);
+
+/// The paper's lowest order in MPFR at the exact amplitude x.
+mp_solution lowest_mp(const mp::mp_amplitude& x);
+/// The paper's first order in MPFR at the exact amplitude x.
+mp_solution first_mp(const mp::mp_amplitude& x);
+/// The paper's second order in MPFR at the exact amplitude x.
+mp_solution second_mp(const mp::mp_amplitude& x);
+
+/// T/T0 of the paper's second order in MPFR at the exact amplitude x (the same template as
+/// second_order()'s extended precision, approximants.cpp).
+mp::real second_period_mp(const mp::mp_amplitude& x, int);
 
 }  // namespace pendulum::detail

@@ -76,23 +76,6 @@ period_error mp_closed_form_error(const amplitude& a, int n, mp_period f) {
     return {period_error::kind::below_limit, 0};
 }
 
-real second_mp(const mp_amplitude& x, int) {
-    // As second_order(): C_{2k+1}/theta0 with a = theta0/(1 + eta), b/theta0 = eta/(1 + eta).
-    const auto p = formulas::first_order_of(x.theta);
-    const real a = x.theta / (1.0 + p.eta);
-    const real a_ratio = 1.0 / (1.0 + p.eta);
-    const real b_ratio = p.eta / (1.0 + p.eta);
-    const auto j = mp::bessel_j_upto(8, a);
-    real lambda(x.theta.precision());
-    for (int k = 0; k < 3; ++k) {
-        const auto at = [&](int m) -> const real& { return j[static_cast<std::size_t>(m)]; };
-        const real inner = 2.0 * at(2 * k + 1) / a * a_ratio + b_ratio * (at(2 * k + 4) - at(std::abs(2 * k - 2)));
-        const real term = inner / static_cast<double>((2 * k + 1) * (2 * k + 1));
-        lambda = k % 2 == 0 ? lambda + term : lambda - term;
-    }
-    return 1.0 / mp::sqrt(lambda);
-}
-
 real lowest_mp(const mp_amplitude& x, int) { return 1.0 / formulas::lowest_frequency(x.theta); }
 
 real first_mp(const mp_amplitude& x, int) { return 1.0 / formulas::first_order_of(x.theta).frequency; }
@@ -199,7 +182,7 @@ period_error first_period_error(const amplitude& a, int n, precision p) {
 }
 period_error second_period_error(const amplitude& a, int n, precision p) {
     return closed_form_error(
-        a, n, p, [](const amplitude& t, int) { return second_order(t).period_ratio(); }, second_mp,
+        a, n, p, [](const amplitude& t, int) { return second_order(t).period_ratio(); }, detail::second_period_mp,
         second_period_extended);
 }
 period_error polynomial_period_error(const amplitude& a, int n, precision p) {

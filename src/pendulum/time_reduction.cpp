@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pendulum/time_reduction.hpp"
 
+#include "pendulum/mp_iteration.hpp"
 #include "pendulum/mp_real.hpp"
 #include "pendulum/start_energy.hpp"
 
@@ -26,6 +27,7 @@ struct time_reducer::state {
     mutable real quotient;
     mutable real rest;
     mutable real turns;  // the whole periods the last reduction took off
+    bool exact_ratio = false;  // ratio is w/w0 to its precision, not a double taken as exact
 };
 
 namespace {
@@ -63,10 +65,28 @@ long double extended(const real& x) { return mpfr_get_ld(x.get(), MPFR_RNDN); }
 
 }  // namespace
 
+namespace {
+
+/// w/w0 from the solution's source, with `bits`, right enough for phases up to 2^phase_exponent
+/// in size: within 2^-56 rad (an eighth of an ulp of pi). The source's known ratio where it
+/// is that right, its MPFR run otherwise (with 16 bits to spare for its own rounding).
+real exact_ratio(const exact_source& source, long phase_exponent, mpfr_prec_t bits) {
+    const long needed = std::max(0L, phase_exponent + 1) + 56;
+    if (source.known_bits >= needed) {
+        real r(bits);
+        mpfr_set_ld(r.get(), source.known_ratio, MPFR_RNDN);
+        return r;
+    }
+    return real(source.at(static_cast<mpfr_prec_t>(std::max(64L, needed + 16))).ratio, bits);
+}
+
+}  // namespace
+
 /// Sets up a reducer's state for a period given at any precision.
 struct reducer_setup {
     static std::unique_ptr<time_reducer::state> make(const std::function<real(mpfr_prec_t)>& period_at,
-                                                     const time_scale& scale, double largest, double frequency_ratio);
+                                                     const time_scale& scale, double largest, double frequency_ratio,
+                                                     const exact_source* source = nullptr);
 };
 
 time_reducer::time_reducer(const amplitude& a, const time_scale& scale, double largest, double frequency_ratio)
@@ -77,9 +97,18 @@ time_reducer::time_reducer(const motion& m, const time_scale& scale, double larg
     : state_(reducer_setup::make([&m](mpfr_prec_t bits) { return motion_period(m, bits); }, scale, largest,
                         frequency_ratio)) {}
 
+time_reducer::time_reducer(const amplitude& a, const time_scale& scale, double largest,
+                           const fourier_solution& solution)
+    : state_(reducer_setup::make([&a](mpfr_prec_t bits) { return libration_period(a, bits); }, scale, largest,
+                                 solution.frequency_ratio, solution.exact.get())) {}
+
+time_reducer::time_reducer(const motion& m, const time_scale& scale, double largest, const fourier_solution& solution)
+    : state_(reducer_setup::make([&m](mpfr_prec_t bits) { return motion_period(m, bits); }, scale, largest,
+                                 solution.frequency_ratio, solution.exact.get())) {}
+
 std::unique_ptr<time_reducer::state> reducer_setup::make(const std::function<real(mpfr_prec_t)>& period_at,
                                                          const time_scale& scale, double largest,
-                                                         double frequency_ratio) {
+                                                         double frequency_ratio, const exact_source* source) {
     if (!(std::isfinite(largest) && largest >= 0)) {
         throw domain_error("the largest time must be finite, got " + format_double(largest));
     }
@@ -96,9 +125,13 @@ std::unique_ptr<time_reducer::state> reducer_setup::make(const std::function<rea
     const mpfr_prec_t bits = 128 + std::max(0L, cycles);
     real period = period_at(bits);
     real per_unit = unit_scale(scale, period);
+    // The solution's own w/w0 where it has one, the double taken as exact otherwise.
+    const bool exact = source != nullptr && frequency_ratio > 0;
+    real ratio = exact ? exact_ratio(*source, time_exponent + mp::exponent(rough_scale) + std::ilogb(frequency_ratio), bits)
+                       : real(frequency_ratio, bits);
     auto s = std::make_unique<time_reducer::state>(time_reducer::state{
-        per_unit, period, real(frequency_ratio, bits), 2.0 * mp::pi(bits), extended(per_unit), extended(period),
-        static_cast<long double>(frequency_ratio), real(bits + 64), real(bits), real(bits), real(0.0, bits)});
+        per_unit, period, std::move(ratio), 2.0 * mp::pi(bits), extended(per_unit), extended(period),
+        static_cast<long double>(frequency_ratio), real(bits + 64), real(bits), real(bits), real(0.0, bits), exact});
     return s;
 }
 
@@ -125,15 +158,21 @@ double time_reducer::operator()(double s) const {
 double time_reducer::phase(double s) const {
     if (!std::isfinite(s)) throw domain_error("time must be finite, got " + format_double(s));
     if (!(state_->ratio_extended > 0)) throw domain_error("a phase needs the Fourier solution's frequency ratio");
-    // Within one period of the phase: w0 t rounded once, times w/w0 rounded once (an ulp or
-    // two of x, the same as the formula at w0 t in doubles).
-    const double w = static_cast<double>(s * state_->scale_extended);
-    const double x = static_cast<double>(state_->ratio_extended) * w;
-    if (std::fabs(x) < 2 * std::numbers::pi) return x;
-    mpfr_mul_d(state_->product.get(), state_->scale.get(), s, MPFR_RNDN);
-    mpfr_mul(state_->product.get(), state_->product.get(), state_->ratio.get(), MPFR_RNDN);
-    mpfr_remainder(state_->rest.get(), state_->product.get(), state_->two_pi.get(), MPFR_RNDN);
-    return state_->rest.to_double();
+    // With a double ratio taken as exact, within one period of the phase: w0 t rounded
+    // once, times w/w0 rounded once (an ulp or two of x, the same as the formula at w0 t in
+    // doubles). With the solution's own ratio every phase is formed in MPFR and rounded once.
+    if (!state_->exact_ratio) {
+        const double w = static_cast<double>(s * state_->scale_extended);
+        const double x = static_cast<double>(state_->ratio_extended) * w;
+        if (std::fabs(x) < 2 * std::numbers::pi) return x;
+    }
+    // Locals, not the state's scratch numbers: phase() is safe to call from several threads.
+    real product(state_->product.precision());
+    real rest(state_->rest.precision());
+    mpfr_mul_d(product.get(), state_->scale.get(), s, MPFR_RNDN);
+    mpfr_mul(product.get(), product.get(), state_->ratio.get(), MPFR_RNDN);
+    mpfr_remainder(rest.get(), product.get(), state_->two_pi.get(), MPFR_RNDN);
+    return rest.to_double();
 }
 
 double time_reducer::plus_turns(double angle, int turns_per_period) const {

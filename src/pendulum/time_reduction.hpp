@@ -2,6 +2,7 @@
 #pragma once
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/approximants.hpp"
 #include "pendulum/motion.hpp"
 
 #include <memory>
@@ -32,6 +33,13 @@ public:
     /// The same for a motion with a period (a libration or a rotation); throws domain_error
     /// at the separatrix.
     time_reducer(const motion& m, const time_scale& scale, double largest, double frequency_ratio = 0);
+    /// For times up to `largest` of the libration of amplitude theta0 and the Fourier solution
+    /// `solution`: where it carries its exact_source, phase() forms (w/w0) w0 t with w/w0 to
+    /// the precision the time needs (not the double frequency_ratio), so that the phase is
+    /// the exact motion's to the last bit at any time.
+    time_reducer(const amplitude& theta0, const time_scale& scale, double largest, const fourier_solution& solution);
+    /// The same for a motion with a period.
+    time_reducer(const motion& m, const time_scale& scale, double largest, const fourier_solution& solution);
     ~time_reducer();
     time_reducer(const time_reducer&) = delete;
     time_reducer& operator=(const time_reducer&) = delete;
@@ -39,8 +47,9 @@ public:
     /// w0 t for the time s, reduced to (-P, P) with the sign of s (P the period in w0 t); the
     /// whole periods taken off are kept for plus_turns().
     double operator()(double s) const;
-    /// The phase (w/w0) w0 t of the Fourier solution at the time s, reduced to (-2 pi, 2 pi);
-    /// throws domain_error unless a frequency ratio was given.
+    /// The phase (w/w0) w0 t of the Fourier solution at the time s, reduced to (-2 pi, 2 pi)
+    /// (to [-pi, pi] and rounded once with the solution's exact source); throws domain_error
+    /// unless a frequency ratio was given. Safe to call from several threads at once.
     double phase(double s) const;
     /// angle + 2 pi n turns_per_period rounded once, n the whole periods (signed) the last
     /// operator() took off: a rotation's unwrapped angle to the last bit at any time.

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace pendulum::cli {
@@ -68,35 +69,42 @@ struct dependencies {
     std::vector<std::string> inputs;   ///< spec files, style files, the program
 };
 
+/// Adds `file` to `files` unless it is there.
+void add_once(std::vector<std::string>& files, const std::string& file) {
+    if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
+}
+
+/// The measured data files of the specs' panels ([[panel.data]]).
+void add_data_files(std::vector<std::string>& files,
+                    const std::vector<std::pair<std::string, std::vector<const figures::entry*>>>& groups) {
+    for (const auto& g : groups) {
+        for (const auto* e : g.second) {
+            for (const auto& panel : e->spec.panels) {
+                for (const auto& d : panel.data) {
+                    if (!d.file.empty()) add_once(files, d.file);
+                }
+            }
+        }
+    }
+}
+
 /// The --depfile rule's files: every output of the render (or --depfile-target) depends on the
 /// spec files, the style files used and the program.
 dependencies dependency_files(const render_options& o,
                               const std::vector<std::pair<std::string, std::vector<const figures::entry*>>>& groups,
                               const std::vector<std::filesystem::path>& outputs) {
     dependencies d;
-    const auto add = [&](const std::string& file) {
-        if (std::find(d.inputs.begin(), d.inputs.end(), file) == d.inputs.end()) d.inputs.push_back(file);
-    };
     // Spec files are the ids ending in .toml (as selected_figures reads them); built-in
     // figures are in the program.
     for (const auto& id : o.ids) {
-        if (id.ends_with(".toml")) add(id);
+        if (id.ends_with(".toml")) add_once(d.inputs, id);
     }
-    if (o.theme.ends_with(".toml")) add(o.theme);
+    if (o.theme.ends_with(".toml")) add_once(d.inputs, o.theme);
     for (const auto& g : groups) {
-        if (!g.first.empty()) add(g.first);
+        if (!g.first.empty()) add_once(d.inputs, g.first);
     }
-    // Measured data files of the specs' panels ([[panel.data]]).
-    for (const auto& g : groups) {
-        for (const auto* e : g.second) {
-            for (const auto& panel : e->spec.panels) {
-                for (const auto& d : panel.data) {
-                    if (!d.file.empty()) add(d.file);
-                }
-            }
-        }
-    }
-    add(program_file());
+    add_data_files(d.inputs, groups);
+    add_once(d.inputs, program_file());
     for (const auto& path : outputs) d.outputs.push_back(path.lexically_normal().string());
     d.targets = o.depfile_target.empty() ? d.outputs : std::vector<std::string>{o.depfile_target};
     return d;
@@ -128,11 +136,11 @@ std::string dependency_rule(const render_options& o, const dependencies& d) {
     }
 }
 
-}  // namespace
+/// The figures grouped by their style file (one group, the command line's, with --theme).
+using style_groups = std::vector<std::pair<std::string, std::vector<const figures::entry*>>>;
 
-int render_figures(const std::vector<const figures::entry*>& chosen, const render_options& o) {
-    // The environment is input too: a bad SOURCE_DATE_EPOCH stops the run before any work.
-    plot::pdf_creation_date();
+/// -f's formats, each once, refusing an overlay format with its drawing's (both write ID.pdf).
+std::vector<std::string> chosen_formats(const render_options& o) {
     std::vector<std::string> formats;
     for (const auto& f : split_list(o.formats)) {
         plot::check_format(f);
@@ -148,152 +156,217 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
                               " (" + overlay + "'s without its text); render them into different directories");
         }
     }
-    plot::output_options overlay;  // what the LaTeX overlays need; dpi is set per theme below
+    return formats;
+}
+
+/// What the LaTeX overlays need (--tex-sizes, --tex-font-size); dpi is set per theme.
+plot::output_options overlay_options(const render_options& o) {
+    plot::output_options overlay;
     try {
         overlay.tex_sizes = plot::find_tex_sizing(o.tex_sizes).value;
     } catch (const plot::bad_input& e) {
         throw usage_error(std::string("--tex-sizes: ") + e.what());
     }
-    if (o.tex_font_size) {
-        if (!(*o.tex_font_size >= 5 && *o.tex_font_size <= 30)) {
-            throw usage_error("--tex-font-size " + format_double(*o.tex_font_size) +
-                              ": the document's font size in points, 5 to 30");
-        }
-        if (overlay.tex_sizes == plot::tex_sizing::absolute) {
-            throw usage_error("--tex-font-size does nothing with --tex-sizes absolute: the text has the theme's "
-                              "sizes in points (--set tick_font_pt=... changes them)");
-        }
-        overlay.tex_font_pt = *o.tex_font_size;
+    if (!o.tex_font_size) return overlay;
+    if (!(*o.tex_font_size >= 5 && *o.tex_font_size <= 30)) {
+        throw usage_error("--tex-font-size " + format_double(*o.tex_font_size) +
+                          ": the document's font size in points, 5 to 30");
     }
-    // --size is the style key size_px, at the resolution of --dpi where one is given.
+    if (overlay.tex_sizes == plot::tex_sizing::absolute) {
+        throw usage_error("--tex-font-size does nothing with --tex-sizes absolute: the text has the theme's "
+                          "sizes in points (--set tick_font_pt=... changes them)");
+    }
+    overlay.tex_font_pt = *o.tex_font_size;
+    return overlay;
+}
+
+/// --set, with --size as the style key size_px at the resolution of --dpi where one is given.
+std::vector<std::string> style_sets(const render_options& o) {
     std::vector<std::string> sets = o.sets;
     if (!o.size.empty()) {
         if (o.dpi) sets.push_back("dpi=" + format_double(*o.dpi));
         sets.push_back("size_px=" + o.size);
     }
-    const unsigned workers = chosen_jobs(o.jobs);
-    // The themes of a style: --theme over the spec's style file over paper (slides for
-    // animations), with --set on top.
-    const auto style_of = [&](const std::string& style_file) {
-        const std::string still = !o.theme.empty() ? o.theme : !style_file.empty() ? style_file : "paper";
-        const plot::theme theme = chosen_theme(still, sets);
-        // Animations are for slides: theirs unless a theme or style file is asked for.
-        const plot::theme moving_theme = still == "paper" && o.theme.empty() ? chosen_theme("slides", sets) : theme;
-        const double dpi = o.dpi.value_or(theme.dpi);
-        const double moving_dpi = o.dpi.value_or(moving_theme.dpi);
-        for (const double d : {dpi, moving_dpi}) {
-            if (!(d >= plot::min_dpi && d <= plot::max_dpi)) {
-                throw usage_error("--dpi " + format_double(d) + ": must be between " + format_double(plot::min_dpi) +
-                                  " and " + format_double(plot::max_dpi));
-            }
+    return sets;
+}
+
+/// What the themes of every style share: --set, the overlays' options, the workers.
+struct style_inputs {
+    std::vector<std::string> sets;  ///< --set and --size
+    plot::output_options overlay;   ///< the LaTeX overlays' options
+    unsigned workers;               ///< worker threads
+};
+
+/// The themes of a style: --theme over the spec's style file over paper (slides for
+/// animations), with --set on top.
+figures::render_style style_for(const render_options& o, const style_inputs& in, const std::string& style_file) {
+    const std::string still = !o.theme.empty() ? o.theme : !style_file.empty() ? style_file : "paper";
+    const plot::theme theme = chosen_theme(still, in.sets);
+    // Animations are for slides: theirs unless a theme or style file is asked for.
+    const plot::theme moving_theme = still == "paper" && o.theme.empty() ? chosen_theme("slides", in.sets) : theme;
+    const double dpi = o.dpi.value_or(theme.dpi);
+    const double moving_dpi = o.dpi.value_or(moving_theme.dpi);
+    for (const double d : {dpi, moving_dpi}) {
+        if (!(d >= plot::min_dpi && d <= plot::max_dpi)) {
+            throw usage_error("--dpi " + format_double(d) + ": must be between " + format_double(plot::min_dpi) +
+                              " and " + format_double(plot::max_dpi));
         }
-        return figures::render_style{
-            theme, plot::output_options{dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes, workers}, moving_theme,
-            plot::output_options{moving_dpi, o.force, overlay.tex_font_pt, overlay.tex_sizes, workers}};
-    };
-    // The figures grouped by their style file (one group, the command line's, with --theme).
-    std::vector<std::pair<std::string, std::vector<const figures::entry*>>> groups;
+    }
+    const plot::output_options& ov = in.overlay;
+    return figures::render_style{theme, plot::output_options{dpi, o.force, ov.tex_font_pt, ov.tex_sizes, in.workers},
+                                 moving_theme,
+                                 plot::output_options{moving_dpi, o.force, ov.tex_font_pt, ov.tex_sizes, in.workers}};
+}
+
+/// The figures grouped by their style file (one group, the command line's, with --theme).
+style_groups grouped_by_style(const std::vector<const figures::entry*>& chosen, const render_options& o) {
+    style_groups groups;
     for (const auto* e : chosen) {
         const std::string style_file = o.theme.empty() ? e->spec.style : std::string();
         auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == style_file; });
         if (it == groups.end()) it = groups.insert(groups.end(), {style_file, {}});
         it->second.push_back(e);
     }
+    return groups;
+}
+
+/// Each group's style; a style file that cannot be read or has problems is the spec's to correct.
+std::vector<figures::render_style> styles_of(const style_groups& groups, const render_options& o,
+                                             const style_inputs& in) {
     std::vector<figures::render_style> styles;
     for (const auto& g : groups) {
         try {
-            styles.push_back(style_of(g.first));
+            styles.push_back(style_for(o, in, g.first));
         } catch (const std::invalid_argument& e) {
-            // A style file that cannot be read or has problems is the spec's to correct.
             if (g.first.empty()) throw;
             throw usage_error("figure '" + g.second.front()->id + "' ([figure] style = " + g.first + "): " + e.what());
         }
     }
+    return styles;
+}
+
+/// --theta0, for figures that take amplitudes.
+figures::build_options build_options_of(const std::vector<const figures::entry*>& chosen, const render_options& o) {
     figures::build_options build;
-    if (!o.theta0.empty()) {
-        if (std::none_of(chosen.begin(), chosen.end(), [](const auto* e) { return e->takes_amplitudes(); })) {
-            throw usage_error("--theta0 applies to figures with " + figures::plot_names(true, "or") + " panels, "
-                              "and none was chosen");
-        }
-        build.amplitudes = parse_amplitudes(o.theta0, figures::max_amplitudes_per_panel);
+    if (o.theta0.empty()) return build;
+    if (std::none_of(chosen.begin(), chosen.end(), [](const auto* e) { return e->takes_amplitudes(); })) {
+        throw usage_error("--theta0 applies to figures with " + figures::plot_names(true, "or") + " panels, "
+                          "and none was chosen");
     }
-    if (o.dir == "-") {
-        // One still figure in one format, to standard output.
-        if (chosen.size() != 1 || formats.size() != 1 || o.paper_files || chosen.front()->spec.animation) {
-            throw usage_error("-o - writes one still figure in one format to standard output");
-        }
-        if (!o.depfile.empty()) throw usage_error("--depfile names the files a render writes, and -o - writes none");
-        const figures::render_style& style = styles.front();
-        return write_stdout(figures::render_one(*chosen.front(), build, style.still_theme, formats.front(),
-                                                plot::output_options{style.still.dpi}));
-    }
-    check_output_dir(o.dir);
+    build.amplitudes = parse_amplitudes(o.theta0, figures::max_amplitudes_per_panel);
+    return build;
+}
+
+/// --at: one frame at time t/T, or nothing; --frames and --at for animations only, not both.
+std::optional<double> frame_time(const std::vector<const figures::entry*>& chosen, const render_options& o) {
     if ((!o.frames.empty() || !o.at.empty()) &&
         std::none_of(chosen.begin(), chosen.end(), [](const auto* e) { return e->spec.animation.has_value(); })) {
         throw usage_error("--frames and --at apply to animations, and none was chosen (see 'list')");
     }
     if (!o.frames.empty() && !o.at.empty()) throw usage_error("give --frames or --at, not both");
-    std::optional<double> at;
-    if (!o.at.empty()) {
-        try {
-            at = parse_expression(o.at);
-        } catch (const std::invalid_argument& e) {
-            throw usage_error(std::string("--at: ") + e.what());
-        }
-        // t/T is multiplied by the period: a huge one would be no time at all.
-        if (!(std::fabs(*at) <= 1e6)) {
-            throw usage_error("--at " + o.at + ": a time t/T must be finite and at most 1e6 in size");
+    if (o.at.empty()) return std::nullopt;
+    double at = 0;
+    try {
+        at = parse_expression(o.at);
+    } catch (const std::invalid_argument& e) {
+        throw usage_error(std::string("--at: ") + e.what());
+    }
+    // t/T is multiplied by the period: a huge one would be no time at all.
+    if (!(std::fabs(at) <= 1e6)) {
+        throw usage_error("--at " + o.at + ": a time t/T must be finite and at most 1e6 in size");
+    }
+    return at;
+}
+
+/// The files of every group, checked together before any work.
+struct render_jobs {
+    std::vector<std::vector<figures::figure_file>> stills;     ///< each group's still files
+    std::vector<std::vector<figures::animation_job>> moving;   ///< each group's animations
+    std::vector<figures::figure_file> all_stills;              ///< every group's still files
+    std::vector<figures::animation_job> all_moving;            ///< every group's animations
+};
+
+/// --paper-files writes each still panel to a file sized as in the paper: no animations, no
+/// whole-figure sizes.
+void check_paper_files(const render_options& o, const plot::theme& theme, bool animations) {
+    if (!o.paper_files) return;
+    if (animations) throw usage_error("--paper-files applies to still figures, not to animations");
+    for (const char* key : {"figure_width_cm", "figure_height_cm", "size_px"}) {
+        if (theme.given.contains(key)) {
+            throw usage_error(std::string(key) + " sizes a whole figure, and --paper-files writes each panel to a "
+                              "file of its own, sized as in the paper's source: set panel_width_cm instead");
         }
     }
+}
+
+/// Plans one group's files: its animations' frames, its still files, its rasters' sizes.
+void plan_group(render_jobs& jobs, std::size_t g, const style_groups& groups, const std::vector<std::string>& formats,
+                const render_options& o, const figures::build_options& build,
+                const std::vector<figures::render_style>& styles) {
+    std::vector<const figures::entry*> stills;
+    for (const auto* e : groups[g].second) {
+        if (!e->spec.animation) {
+            stills.push_back(e);
+            continue;
+        }
+        const auto plan = figures::plan_animation(*e, build);
+        const auto [first, last] = o.frames.empty() ? std::pair{0, plan.frames - 1} : parse_frames(o.frames, plan.frames);
+        jobs.moving[g].push_back({e, plan, first, last});
+    }
+    check_paper_files(o, styles[g].still_theme, !jobs.moving[g].empty());
+    jobs.stills[g] = figures::files_for(stills, formats, o.dir, o.paper_files, build);
+    // Rasters too large for Cairo or for memory are refused before any work.
+    figures::check_raster_sizes(groups[g].second, formats, build, styles[g]);
+    jobs.all_stills.insert(jobs.all_stills.end(), jobs.stills[g].begin(), jobs.stills[g].end());
+    jobs.all_moving.insert(jobs.all_moving.end(), jobs.moving[g].begin(), jobs.moving[g].end());
+}
+
+/// One still figure in one format, to standard output (-o -).
+int render_to_stdout(const std::vector<const figures::entry*>& chosen, const std::vector<std::string>& formats,
+                     const render_options& o, const figures::build_options& build,
+                     const figures::render_style& style) {
+    if (chosen.size() != 1 || formats.size() != 1 || o.paper_files || chosen.front()->spec.animation) {
+        throw usage_error("-o - writes one still figure in one format to standard output");
+    }
+    if (!o.depfile.empty()) throw usage_error("--depfile names the files a render writes, and -o - writes none");
+    return write_stdout(figures::render_one(*chosen.front(), build, style.still_theme, formats.front(),
+                                            plot::output_options{style.still.dpi}));
+}
+
+}  // namespace
+
+int render_figures(const std::vector<const figures::entry*>& chosen, const render_options& o) {
+    // The environment is input too: a bad SOURCE_DATE_EPOCH stops the run before any work.
+    plot::pdf_creation_date();
+    const std::vector<std::string> formats = chosen_formats(o);
+    const plot::output_options overlay = overlay_options(o);
+    const style_inputs in{style_sets(o), overlay, chosen_jobs(o.jobs)};
+    const style_groups groups = grouped_by_style(chosen, o);
+    const std::vector<figures::render_style> styles = styles_of(groups, o, in);
+    const figures::build_options build = build_options_of(chosen, o);
+    if (o.dir == "-") return render_to_stdout(chosen, formats, o, build, styles.front());
+    check_output_dir(o.dir);
+    const std::optional<double> at = frame_time(chosen, o);
 
     // Every group's files, checked together before any work.
-    std::vector<std::vector<figures::figure_file>> jobs(groups.size());
-    std::vector<std::vector<figures::animation_job>> moving(groups.size());
-    std::vector<figures::figure_file> all_jobs;
-    std::vector<figures::animation_job> all_moving;
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-        const plot::theme& theme = styles[g].still_theme;
-        std::vector<const figures::entry*> stills;
-        for (const auto* e : groups[g].second) {
-            if (e->spec.animation) {
-                const auto plan = figures::plan_animation(*e, build);
-                const auto [first, last] =
-                    o.frames.empty() ? std::pair{0, plan.frames - 1} : parse_frames(o.frames, plan.frames);
-                moving[g].push_back({e, plan, first, last});
-            } else {
-                stills.push_back(e);
-            }
-        }
-        if (o.paper_files && !moving[g].empty()) {
-            throw usage_error("--paper-files applies to still figures, not to animations");
-        }
-        for (const char* key : {"figure_width_cm", "figure_height_cm", "size_px"}) {
-            if (o.paper_files && theme.given.contains(key)) {
-                throw usage_error(std::string(key) + " sizes a whole figure, and --paper-files writes each panel to a "
-                                  "file of its own, sized as in the paper's source: set panel_width_cm instead");
-            }
-        }
-        jobs[g] = figures::files_for(stills, formats, o.dir, o.paper_files, build);
-        // Rasters too large for Cairo or for memory are refused before any work.
-        figures::check_raster_sizes(groups[g].second, formats, build, styles[g]);
-        all_jobs.insert(all_jobs.end(), jobs[g].begin(), jobs[g].end());
-        all_moving.insert(all_moving.end(), moving[g].begin(), moving[g].end());
-    }
-    if (all_jobs.empty() && all_moving.empty()) {
+    render_jobs jobs{std::vector<std::vector<figures::figure_file>>(groups.size()),
+                     std::vector<std::vector<figures::animation_job>>(groups.size()), {}, {}};
+    for (std::size_t g = 0; g < groups.size(); ++g) plan_group(jobs, g, groups, formats, o, build, styles);
+    if (jobs.all_stills.empty() && jobs.all_moving.empty()) {
         throw usage_error("the chosen figures have no panels in the paper; drop --paper-files");
     }
-    figures::check_distinct_outputs(all_jobs, all_moving, formats, o.dir, at.has_value());
+    figures::check_distinct_outputs(jobs.all_stills, jobs.all_moving, formats, o.dir, at.has_value());
     // Every output, the depfile too, is a new file or replaces a regular one: checked before any work.
     std::vector<std::filesystem::path> outputs;
-    for (const auto& output : figures::render_outputs(all_jobs, all_moving, formats, o.dir, at.has_value())) {
+    for (const auto& output : figures::render_outputs(jobs.all_stills, jobs.all_moving, formats, o.dir, at.has_value())) {
         outputs.push_back(output.first);
     }
     plot::check_output_files(outputs);
     if (!o.depfile.empty()) plot::check_output_file(o.depfile);
-    figures::check_render_cost(jobs, moving, formats, build, styles, at.has_value());
+    figures::check_render_cost(jobs.stills, jobs.moving, formats, build, styles, at.has_value());
     const std::string depfile = o.depfile.empty() ? std::string() : dependency_rule(o, dependency_files(o, groups, outputs));
     for (std::size_t g = 0; g < groups.size(); ++g) {
-        figures::write_render(jobs[g], moving[g], formats, o.dir, build, styles[g], at);
+        figures::write_render(jobs.stills[g], jobs.moving[g], formats, o.dir, build, styles[g], at);
     }
     // Written last and always: its time is the time of the run, so make can use it as a stamp.
     if (!o.depfile.empty()) plot::write_atomically(o.depfile, depfile);

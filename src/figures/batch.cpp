@@ -89,69 +89,108 @@ struct task {
     std::size_t file;    // index into the files, or npos to build
 };
 
-}  // namespace
-
-void write_figures(const std::vector<figure_file>& files, const build_options& options, const plot::theme& theme,
-                   const plot::output_options& output) {
-    constexpr std::size_t build_it = static_cast<std::size_t>(-1);
+/// The files' figures, each once, in the order of the files.
+std::vector<const entry*> distinct_figures(const std::vector<figure_file>& files) {
     std::vector<const entry*> distinct;
     for (const auto& f : files) {
         if (std::find(distinct.begin(), distinct.end(), f.figure) == distinct.end()) distinct.push_back(f.figure);
     }
-    // Building comes first, costliest first (the catalog ends with the iteration to order
-    // 40 and the period sweep); a built figure's files go to the front of the queue, so
-    // any free core draws them and no core waits at a barrier.
-    std::deque<task> queue;
-    for (std::size_t i = distinct.size(); i-- > 0;) queue.push_back({i, build_it});
-    std::vector<std::shared_ptr<const plot::figure>> built(distinct.size());
-    std::mutex mutex;
-    std::condition_variable changed;
-    std::size_t busy = 0;
-    std::exception_ptr first_error;
+    return distinct;
+}
 
-    auto worker = [&] {
-        std::unique_lock lock(mutex);
+/// The pool's queue of tasks and what the tasks share. Building comes first, costliest first
+/// (the catalog ends with the iteration to order 40 and the period sweep); a built figure's
+/// files go to the front of the queue, so any free core draws them and no core waits at a
+/// barrier.
+class figure_queue {
+public:
+    figure_queue(const std::vector<figure_file>& files, const build_options& options, const plot::theme& theme,
+                 const plot::output_options& output)
+        : files_(files), options_(options), theme_(theme), output_(output), distinct_(distinct_figures(files)),
+          built_(distinct_.size()) {
+        for (std::size_t i = distinct_.size(); i-- > 0;) queue_.push_back({i, build_it});
+    }
+
+    /// Takes tasks until none is left and no other worker can add one.
+    void work() {
+        std::unique_lock lock(mutex_);
         for (;;) {
-            changed.wait(lock, [&] { return !queue.empty() || busy == 0; });
-            if (queue.empty()) return;
-            const task t = queue.front();
-            queue.pop_front();
-            ++busy;
+            changed_.wait(lock, [&] { return !queue_.empty() || busy_ == 0; });
+            if (queue_.empty()) return;
+            const task t = queue_.front();
+            queue_.pop_front();
+            ++busy_;
             lock.unlock();
             std::shared_ptr<const plot::figure> figure;
             std::exception_ptr error;
             try {
-                if (t.file == build_it) {
-                    figure = std::make_shared<const plot::figure>(build(*distinct[t.figure], sized_by(options, theme)));
-                } else {
-                    const figure_file& f = files[t.file];
-                    const plot::figure& whole = *built[t.figure];
-                    plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, whole.panel_width_cm), theme,
-                               f.path, output);
-                }
+                figure = run(t);
             } catch (...) {
                 error = std::current_exception();
             }
             lock.lock();
-            --busy;
-            if (error && !first_error) first_error = error;
-            if (figure) {
-                built[t.figure] = figure;
-                for (std::size_t k = files.size(); k-- > 0;) {
-                    if (files[k].figure == distinct[t.figure]) queue.push_front({t.figure, k});
-                }
-            }
-            changed.notify_all();
+            done(t, figure, error);
         }
-    };
+    }
+
+    /// Rethrows the first error of any task.
+    void rethrow() const {
+        if (first_error_) std::rethrow_exception(first_error_);
+    }
+
+private:
+    static constexpr std::size_t build_it = static_cast<std::size_t>(-1);
+
+    /// Builds the task's figure (returned), or writes its file (null returned).
+    std::shared_ptr<const plot::figure> run(const task& t) const {
+        if (t.file == build_it) {
+            return std::make_shared<const plot::figure>(build(*distinct_[t.figure], sized_by(options_, theme_)));
+        }
+        const figure_file& f = files_[t.file];
+        const plot::figure& whole = *built_[t.figure];
+        plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, whole.panel_width_cm), theme_, f.path, output_);
+        return nullptr;
+    }
+
+    /// A task is done (under the lock): its error kept if the first, its figure's files queued.
+    void done(const task& t, const std::shared_ptr<const plot::figure>& figure, const std::exception_ptr& error) {
+        --busy_;
+        if (error && !first_error_) first_error_ = error;
+        if (figure) {
+            built_[t.figure] = figure;
+            for (std::size_t k = files_.size(); k-- > 0;) {
+                if (files_[k].figure == distinct_[t.figure]) queue_.push_front({t.figure, k});
+            }
+        }
+        changed_.notify_all();
+    }
+
+    const std::vector<figure_file>& files_;
+    const build_options& options_;
+    const plot::theme& theme_;
+    const plot::output_options& output_;
+    std::vector<const entry*> distinct_;
+    std::deque<task> queue_;
+    std::vector<std::shared_ptr<const plot::figure>> built_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::size_t busy_ = 0;
+    std::exception_ptr first_error_;
+};
+
+}  // namespace
+
+void write_figures(const std::vector<figure_file>& files, const build_options& options, const plot::theme& theme,
+                   const plot::output_options& output) {
+    figure_queue queue(files, options, theme, output);
     // As many workers as there are files, or CPUs, or rasters that fit the memory budget.
     const unsigned workers = plot::workers_within_budget(plot::worker_count(output.jobs, files.size()),
                                                          largest_raster_bytes(files, options, theme, output));
     std::vector<std::thread> threads;
-    for (unsigned i = 1; i < workers; ++i) threads.emplace_back(worker);
-    worker();
+    for (unsigned i = 1; i < workers; ++i) threads.emplace_back([&queue] { queue.work(); });
+    queue.work();
     for (auto& t : threads) t.join();
-    if (first_error) std::rethrow_exception(first_error);
+    queue.rethrow();
 }
 
 }  // namespace figures

@@ -363,29 +363,40 @@ std::optional<std::vector<double>> inline_values(reader& r, const toml::node& n,
 }
 
 /// A series given inline: x, y and errors as lists of one length.
-void read_inline_series(reader& r, const toml::table& t, data_series& d) {
+/// x = [...] and y = [...] of an inline series; false (reported) if one is missing or bad.
+bool read_inline_xy(reader& r, const toml::table& t, data_series& d) {
     const source_position where{r.file(), d.where[0], d.where[1]};
     for (const auto& [key, out] : {std::pair{"x", &d.x}, std::pair{"y", &d.y}}) {
         const toml::node* n = t.get(key);
         if (!n) {
             r.problem(where, "a [[panel.data]] needs 'file' with columns, or lists x = [...] and y = [...]");
-            return;
+            return false;
         }
         auto v = inline_values(r, *n, key, false);
-        if (!v) return;
+        if (!v) return false;
         *out = std::move(*v);
     }
+    return true;
+}
+
+/// The error bars of an inline series; false (reported) at the first bad one.
+bool read_inline_errors(reader& r, const toml::table& t, data_series& d) {
     for (const auto& target : error_targets) {
         const toml::node* n = t.get(target.key);
         if (!n) continue;
         const auto parts = error_parts(r, *n, target.key, true);
         for (std::size_t i = 0; i < parts.size(); ++i) {
             auto v = inline_values(r, *parts[i], target.key, true);
-            if (!v) return;
+            if (!v) return false;
             d.errors.*(i == 0 ? target.lower : target.upper) = std::move(*v);
         }
         if (parts.size() == 1) d.errors.*target.upper = d.errors.*target.lower;
     }
+    return true;
+}
+
+/// Every list of an inline series is as long as x.
+void check_inline_lengths(reader& r, const toml::table& t, const data_series& d) {
     const auto length_problem = [&](const std::vector<double>& v, std::string_view key) {
         if (v.empty() || v.size() == d.x.size()) return;
         r.problem(*t.get(key), "'" + std::string(key) + "' has " + std::to_string(v.size()) + " values and x " +
@@ -399,6 +410,11 @@ void read_inline_series(reader& r, const toml::table& t, data_series& d) {
             length_problem(d.errors.*target.upper, target.key);
         }
     }
+}
+
+void read_inline_series(reader& r, const toml::table& t, data_series& d) {
+    if (!read_inline_xy(r, t, d) || !read_inline_errors(r, t, d)) return;
+    check_inline_lengths(r, t, d);
 }
 
 /// The unit of one axis' data: given, or the quantity's only unit; checked against the axis.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/describe.hpp"
 
+#include "figures/describe_support.hpp"
+
 #include "figures/panel_support.hpp"
 #include "figures/spec_build.hpp"
 #include "figures/themes.hpp"
@@ -13,67 +15,76 @@
 #include <cstdio>
 #include <numbers>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 namespace figures {
 
-namespace {
-
 using std::numbers::pi;
 
-/// A number as a reader says it: three significant digits, an angle axis' in fractions of pi.
-std::string spoken(double v, plot::tick_kind kind) {
-    char buf[32];
-    if (kind == plot::tick_kind::multiples_of_pi) {
-        const double q = v / pi;
-        // pi/6, pi/4, pi/3, pi/2 ... as fractions; others (0.99 pi) in decimals.
-        for (int den : {1, 2, 3, 4, 6, 10, 12}) {
-            const double num = std::round(q * den);
-            if (std::fabs(q * den - num) > 1e-9) continue;
-            if (num == 0) return "0";
-            const long n = std::lround(num);
-            std::string out = (n == 1 ? "" : n == -1 ? "-" : std::to_string(n)) + "pi";
-            return den == 1 ? out : out + "/" + std::to_string(den);
-        }
-        std::snprintf(buf, sizeof buf, "%.3g", q);
-        const std::string digits = buf;
-        // Near a whole pi, said as pi ("1pi" reads badly).
-        if (digits == "1" || digits == "-1") return (digits == "1" ? "" : "-") + std::string("pi");
-        return digits + "pi";
+namespace {
+
+/// A multiple of pi as a reader says it: pi/6, pi/4, pi/3, pi/2 ... as fractions; others
+/// (0.99 pi) in decimals.
+std::string spoken_pi(double v) {
+    const double q = v / pi;
+    for (int den : {1, 2, 3, 4, 6, 10, 12}) {
+        const double num = std::round(q * den);
+        if (std::fabs(q * den - num) > 1e-9) continue;
+        if (num == 0) return "0";
+        const long n = std::lround(num);
+        std::string out = (n == 1 ? "" : n == -1 ? "-" : std::to_string(n)) + "pi";
+        return den == 1 ? out : out + "/" + std::to_string(den);
     }
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    std::string out = buf;
-    if (kind == plot::tick_kind::degrees) out += " degrees";
-    return out;
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", q);
+    const std::string digits = buf;
+    // Near a whole pi, said as pi ("1pi" reads badly).
+    if (digits == "1" || digits == "-1") return (digits == "1" ? "" : "-") + std::string("pi");
+    return digits + "pi";
 }
 
-/// A label as a screen reader should meet it: subscripts after the base (T0, T_N, c_(2k+1)),
-/// Greek letters and primes spelt out, no markup.
-std::string spoken_label(const std::string& markup) {
+/// A <sub> or <sup> element's text as a reader meets it after its base: digits and primes
+/// as they are, others after _ or ^ (in parentheses when longer than one character).
+std::string spoken_script(const std::string& inner, bool sub) {
+    const bool digits = inner.find_first_not_of("0123456789") == std::string::npos;
+    const bool primes = inner.find_first_not_of("\u02b9\u2032'") == std::string::npos;
+    if ((sub && digits) || primes) return inner;
+    return std::string(sub ? "_" : "^") + (inner.size() > 1 ? "(" + inner + ")" : inner);
+}
+
+/// The markup with its subscripts and superscripts written after their base.
+std::string flat_scripts(const std::string& markup) {
     std::string flat;
     for (std::size_t pos = 0; pos < markup.size();) {
         const bool sub = markup.compare(pos, 5, "<sub>") == 0;
         if (sub || markup.compare(pos, 5, "<sup>") == 0) {
             const std::size_t end = markup.find(sub ? "</sub>" : "</sup>", pos);
             if (end != std::string::npos) {
-                const std::string inner = plain_text(markup.substr(pos + 5, end - pos - 5));
-                const bool digits = inner.find_first_not_of("0123456789") == std::string::npos;
-                const bool primes = inner.find_first_not_of("\u02b9\u2032'") == std::string::npos;
-                if (sub && digits) {
-                    flat += inner;
-                } else if (primes) {
-                    flat += inner;
-                } else {
-                    flat += std::string(sub ? "_" : "^") + (inner.size() > 1 ? "(" + inner + ")" : inner);
-                }
+                flat += spoken_script(plain_text(markup.substr(pos + 5, end - pos - 5)), sub);
                 pos = end + 6;
                 continue;
             }
         }
         flat += markup[pos++];
     }
-    std::string out = plain_text(flat);
+    return flat;
+}
+
+}  // namespace
+
+std::string spoken(double v, plot::tick_kind kind) {
+    if (kind == plot::tick_kind::multiples_of_pi) return spoken_pi(v);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    std::string out = buf;
+    if (kind == plot::tick_kind::degrees) out += " degrees";
+    return out;
+}
+
+std::string spoken_label(const std::string& markup) {
+    std::string out = plain_text(flat_scripts(markup));
     const std::pair<const char*, const char*> words[] = {
         {"\u03d1", "theta"}, {"\u03b8", "theta"}, {"\u03c0", "pi"}, {"\u03c9", "omega"}, {"\u02b9", "'"},
         {"\u2032", "'"},     {"\u2212", "-"},     {"\u00b0", " degrees"}};
@@ -99,6 +110,8 @@ std::vector<std::pair<double, double>> dense(const plot::series& s) {
     std::erase_if(out, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
     return out;
 }
+
+namespace {
 
 /// y of a series at x, by linear interpolation between its points sorted by x; none outside them.
 std::optional<double> value_at(const std::vector<std::pair<double, double>>& sorted, double x) {
@@ -139,6 +152,8 @@ std::string how_drawn(const plot::series& s) {
     return lines[static_cast<int>(s.line)];
 }
 
+}  // namespace
+
 std::string join(const std::vector<std::string>& items) {
     std::string out;
     for (std::size_t i = 0; i < items.size(); ++i) {
@@ -148,10 +163,14 @@ std::string join(const std::vector<std::string>& items) {
     return out;
 }
 
+namespace {
+
 std::string axis_name(const plot::axis& a, const char* fallback) {
     const std::string name = spoken_label(a.label.markup);
     return name.empty() ? fallback : name;
 }
+
+}  // namespace
 
 /// An amplitude as its spec gives it: in degrees if it was given in degrees, else in pi.
 std::string spoken_amplitude(const amplitude& a) {
@@ -176,102 +195,25 @@ std::string start_motions(const panel_spec& spec) {
     return motions.empty() ? "" : " Started together: " + join(motions) + ".";
 }
 
-/// The pendulum drawing: what is drawn, each pendulum's rod and bob, where they start.
-std::string pendulum_drawing(const panel_spec& spec, bool animated) {
-    static const char* const lines[] = {"solid", "solid", "dashed", "dotted", "dash-dot", "dash-dot-dot"};
-    std::vector<std::string> who;
-    for (std::size_t i = 0; i < spec.methods.size(); ++i) {
-        const method_spec& m = spec.methods[i];
-        const plot::line_style line = m.style.value_or(plot::line_style::solid);
-        const plot::marker_style bob =
-            m.marker.value_or(is_exact(m) ? plot::marker_style::filled_circle : plot::marker_style::open_circle);
-        who.push_back(spoken_label(style_of(m, static_cast<int>(i)).label.markup) + " (" +
-                      lines[static_cast<int>(line)] + " rod, " +
-                      (bob == plot::marker_style::filled_circle ? "filled" : "open") + " bob)");
-    }
-    const std::size_t n = spec.methods.size() * std::max<std::size_t>(1, spec.starts.size());
-    std::string out = " is a drawing, seen from the side, of " +
-                      (n == 1 ? std::string("a pendulum") : std::to_string(n) + " pendulums of one length") +
-                      " hanging from one pivot: " + join(who) + ".";
-    if (!spec.theta0.empty()) {
-        out += std::string(n == 1 ? " It is" : " They are") + " released from rest at theta0 = " +
-               spoken_amplitude(spec.theta0.front()) +
-               " from the vertical; dotted lines mark that angle on either side, and a faint circle the path of "
-               "the bobs.";
-    }
-    if (spec.trail > 0) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%g", spec.trail);
-        out += " Each bob leaves a fading trail of its last " + std::string(buf) + " periods.";
-    }
-    out += start_motions(spec);
-    if (animated && spec.methods.size() > 1) {
-        out += " They swing side by side, the approximations drifting from the exact pendulum.";
-    }
-    return out;
-}
-
 /// "+-A" for a range symmetric about zero, "from A to B" otherwise.
 std::string extent(double lo, double hi, plot::tick_kind kind) {
     if (std::fabs(lo + hi) <= 1e-3 * (hi - lo)) return "+-" + spoken(hi, kind);
     return "from " + spoken(lo, kind) + " to " + spoken(hi, kind);
 }
 
-/// Each orbit of a phase plot: its shape and how far it reaches on both axes.
-std::string phase_orbits(const plot::panel& p, const std::vector<const plot::series*>& shown, const std::string& x,
-                         const std::string& y) {
-    std::vector<std::string> closed, touching, open;
-    for (const auto* s : shown) {
-        auto points = dense(*s);
-        if (points.empty()) continue;
-        std::sort(points.begin(), points.end());
-        double y0 = INFINITY, y1 = -INFINITY, peak_x = 0;
-        for (const auto& [px, py] : points) {
-            y0 = std::min(y0, py);
-            if (py > y1) peak_x = px;
-            y1 = std::max(y1, py);
-        }
-        const double x0 = points.front().first, x1 = points.back().first;
-        const std::string name = spoken_label(s->label.markup);
-        const double near = 1e-3 * std::max(std::fabs(y0), std::fabs(y1));
-        if (y0 < -near && y1 > near) {
-            closed.push_back(name + ": " + x + " " + extent(x0, x1, p.x.ticks) + ", " + y + " " +
-                             extent(y0, y1, p.y.ticks));
-        } else if (std::min(std::fabs(y0), std::fabs(y1)) <= near) {
-            const bool above = y1 > near;
-            touching.push_back(name + " meets " + y + " = 0 at " + x + " = " + spoken(x0, p.x.ticks) + " and " +
-                               spoken(x1, p.x.ticks) + " and reaches " + spoken(above ? y1 : y0, p.y.ticks) + " at " +
-                               x + " = " + spoken(above ? peak_x : x0, p.x.ticks) +
-                               (name == "separatrix" ? ", with its mirror image below: the boundary between "
-                                                       "swinging and going over the top"
-                                                     : ""));
-        } else {
-            open.push_back(name + ": " + y + " " + extent(y0, y1, p.y.ticks) + ", " + (y0 > 0 ? "above" : "below") +
-                           " the axis");
-        }
-    }
-    std::string out;
-    if (!closed.empty()) {
-        out += std::string(closed.size() == 1 ? " A closed curve" : " Closed curves") + " around the origin (" +
-               y + " is largest at " + x + " = 0 and zero at the turning points)" +
-               (closed.size() == 1 ? ": " : ", nested by size: ") + join(closed) + ".";
-    }
-    if (!touching.empty()) {
-        std::string who = join(touching);
-        who[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(who[0])));
-        out += " " + who + ".";
-    }
-    if (!open.empty()) {
-        out += std::string(open.size() == 1 ? " A curve" : " Curves") + " across the whole width, never reaching " +
-               y + " = 0 (rotations): " + join(open) + ".";
-    }
-    return out;
-}
+namespace {
 
-/// The panel's paragraph.
-std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::size_t index, std::size_t count,
-                           const plot::panel_frame* frame, bool animated) {
-    // "Panel (a), theta0 = pi/3," or "Panel 2 (title)" or "The plot".
+/// A panel being described: its data, spec, curves, axis names and the ranges shown.
+struct panel_words {
+    const plot::panel& p;                       ///< the built panel
+    const panel_spec& spec;                     ///< its spec
+    std::vector<const plot::series*> shown;     ///< its curves with a legend label
+    std::string x, y;                           ///< the axes' names as spoken
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;      ///< the data's ranges as the axes show them
+};
+
+/// "Panel (a), theta0 = pi/3," or "Panel 2 (title)" or "The plot".
+std::string panel_opening(const plot::panel& p, std::size_t index, std::size_t count) {
     const std::string title = spoken_label(p.label.markup);
     std::string out = count > 1 ? "Panel " + std::to_string(index + 1) : "The plot";
     if (title.starts_with("(")) {
@@ -282,149 +224,194 @@ std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::si
     } else if (!title.empty()) {
         out += " (" + title + ")";
     }
-    std::vector<const plot::series*> shown;
-    for (const auto& s : p.data) {
-        if (s.autoscale && !s.overlay && !s.label.empty()) shown.push_back(&s);
+    return out;
+}
+
+/// A drawing's description: the kind's own, or what it shows and its starts.
+std::string drawing_words(const panel_words& w, bool animated) {
+    if (w.spec.plot->describe_drawing) return w.spec.plot->describe_drawing(w.spec, animated);
+    std::vector<std::string> names;
+    for (const auto* s : w.shown) names.push_back(spoken_label(s->label.markup));
+    return " is a drawing" + (names.empty() ? "" : ", with " + join(names)) + "." + start_motions(w.spec);
+}
+
+/// Cuts the data's range [lo, hi] to the axis' limits, noting the axis' limits in `axis`
+/// where they reach well past the data.
+void clip_to_axis(double& lo, double& hi, double axis_lo, double axis_hi, plot::tick_kind kind, std::string& axis) {
+    if (!(axis_hi > axis_lo)) return;
+    if (!(lo >= axis_lo)) lo = axis_lo;
+    if (!(hi <= axis_hi)) hi = axis_hi;
+    const double room = 0.15 * (axis_hi - axis_lo);
+    if (lo - axis_lo > room || axis_hi - hi > room) {
+        axis = " (its axis from " + spoken(axis_lo, kind) + " to " + spoken(axis_hi, kind) + ")";
     }
-    if (p.frameless && spec.plot->name == "pendulum") return out + pendulum_drawing(spec, animated);
-    if (p.frameless) {
-        std::vector<std::string> names;
-        for (const auto* s : shown) names.push_back(spoken_label(s->label.markup));
-        out += " is a drawing" + (names.empty() ? "" : ", with " + join(names)) + ".";
-        return out + start_motions(spec);
-    }
-    const std::string x = axis_name(p.x, "x"), y = axis_name(p.y, "y");
-    // The data as far as the axes show it (a curve that leaves them is cut at their
-    // limits), and the axes' own limits where they reach well past the data.
-    auto [x0, x1] = data_range(p, true);
-    auto [y0, y1] = data_range(p, false);
+}
+
+/// The axes' sentence: "shows y against x, x from A to B, y from C to D.", setting the ranges
+/// of `w` as the axes show the data (a curve that leaves them is cut at their limits).
+std::string axes_words(panel_words& w, const plot::panel_frame* frame) {
+    const plot::panel& p = w.p;
+    std::tie(w.x0, w.x1) = data_range(p, true);
+    std::tie(w.y0, w.y1) = data_range(p, false);
     std::string x_axis, y_axis;
-    if (frame) {
-        const auto visible = [](double& lo, double& hi, double axis_lo, double axis_hi, plot::tick_kind kind,
-                                std::string& axis) {
-            if (!(axis_hi > axis_lo)) return;
-            if (!(lo >= axis_lo)) lo = axis_lo;
-            if (!(hi <= axis_hi)) hi = axis_hi;
-            const double room = 0.15 * (axis_hi - axis_lo);
-            if (lo - axis_lo > room || axis_hi - hi > room) {
-                axis = " (its axis from " + spoken(axis_lo, kind) + " to " + spoken(axis_hi, kind) + ")";
-            }
-        };
-        if (p.x.kind == plot::scale::linear) visible(x0, x1, frame->x_lo, frame->x_hi, p.x.ticks, x_axis);
-        if (p.y.kind == plot::scale::linear) visible(y0, y1, frame->y_lo, frame->y_hi, p.y.ticks, y_axis);
-    }
+    if (frame && p.x.kind == plot::scale::linear) clip_to_axis(w.x0, w.x1, frame->x_lo, frame->x_hi, p.x.ticks, x_axis);
+    if (frame && p.y.kind == plot::scale::linear) clip_to_axis(w.y0, w.y1, frame->y_lo, frame->y_hi, p.y.ticks, y_axis);
     // A limit a millionth of the range from zero is zero (a coefficient that vanishes at 0).
     if (p.y.kind == plot::scale::linear) {
-        if (std::fabs(y0) < 1e-6 * (y1 - y0)) y0 = 0;
-        if (std::fabs(y1) < 1e-6 * (y1 - y0)) y1 = 0;
+        if (std::fabs(w.y0) < 1e-6 * (w.y1 - w.y0)) w.y0 = 0;
+        if (std::fabs(w.y1) < 1e-6 * (w.y1 - w.y0)) w.y1 = 0;
     }
-    out += " shows " + y + " against " + x + ", " + x + " from " + spoken(x0, p.x.ticks) + " to " +
-           spoken(x1, p.x.ticks) + (p.x.kind == plot::scale::log ? " on a logarithmic scale" : "") + x_axis + ", " +
-           y + " from " + spoken(y0, p.y.ticks) + " to " + spoken(y1, p.y.ticks) +
+    const std::string& x = w.x;
+    const std::string& y = w.y;
+    return " shows " + y + " against " + x + ", " + x + " from " + spoken(w.x0, p.x.ticks) + " to " +
+           spoken(w.x1, p.x.ticks) + (p.x.kind == plot::scale::log ? " on a logarithmic scale" : "") + x_axis + ", " +
+           y + " from " + spoken(w.y0, p.y.ticks) + " to " + spoken(w.y1, p.y.ticks) +
            (p.y.kind == plot::scale::log ? " on a logarithmic scale" : "") + y_axis + ".";
-    if (!shown.empty()) {
-        std::vector<std::string> items;
-        for (const auto* s : shown) items.push_back(spoken_label(s->label.markup) + " (" + how_drawn(*s) + ")");
-        out += std::string(shown.size() == 1 ? " One curve: " : " Curves: ") + join(items) + ".";
+}
+
+/// "Curves: exact (solid line), ...".
+std::string curves_words(const panel_words& w) {
+    if (w.shown.empty()) return {};
+    std::vector<std::string> items;
+    for (const auto* s : w.shown) items.push_back(spoken_label(s->label.markup) + " (" + how_drawn(*s) + ")");
+    return std::string(w.shown.size() == 1 ? " One curve: " : " Curves: ") + join(items) + ".";
+}
+
+/// Where a series first leaves the sorted reference by more than `visible`: its x, or
+/// nothing; `covered` tells whether they share any x at all.
+std::optional<double> departure(const std::vector<std::pair<double, double>>& reference, const plot::series& s,
+                                double visible, bool& covered) {
+    auto points = dense(s);
+    std::sort(points.begin(), points.end());
+    covered = false;
+    for (const auto& [px, py] : points) {
+        const auto e = value_at(reference, px);
+        if (!e) continue;
+        covered = true;
+        if (std::fabs(py - *e) > visible) return px;
     }
-    if (spec.plot->name == "phase") out += phase_orbits(p, shown, x, y);
-    // Where each approximation leaves the exact curve by a visible amount.
+    return std::nullopt;
+}
+
+/// The sentences of the curves leaving the reference, and of those staying on it.
+std::string departures_words(const panel_words& w, const plot::series& exact, const std::string& reference_name) {
+    auto reference = dense(exact);
+    std::sort(reference.begin(), reference.end());
+    const double visible = visible_fraction * (w.y1 - w.y0);
+    std::vector<std::string> leaves, stays;
+    for (const auto* s : w.shown) {
+        if (s == &exact) continue;
+        bool covered = false;
+        const auto at = departure(reference, *s, visible, covered);
+        const std::string name = spoken_label(s->label.markup);
+        if (at) {
+            leaves.push_back(name + " at " + w.x + " = " + spoken(*at, w.p.x.ticks));
+        } else if (covered) {
+            stays.push_back(name);
+        }
+    }
+    std::string out;
+    char pct[16];
+    std::snprintf(pct, sizeof pct, "%g", visible_fraction * 100);
+    if (!leaves.empty()) {
+        out += " Leaving " + reference_name + " by more than " + std::string(pct) + " % of the " + w.y +
+               " axis: " + join(leaves) + ".";
+    }
+    if (!stays.empty()) {
+        std::string who = join(stays);
+        if (std::islower(static_cast<unsigned char>(who[0]))) who[0] = static_cast<char>(std::toupper(who[0]));
+        out += " " + who + (stays.size() == 1 ? " stays" : " stay") + " on " + reference_name + " over " +
+               (leaves.empty() ? "the whole" : "its whole") + " range.";
+    }
+    return out;
+}
+
+/// Where each approximation leaves the exact curve by a visible amount (on an error axis in
+/// per cent, the exact curve is zero).
+std::string exact_words(const panel_words& w) {
     const plot::series* exact = nullptr;
-    for (const auto* s : shown) {
+    for (const auto* s : w.shown) {
         if (spoken_label(s->label.markup).starts_with("exact")) exact = s;
     }
-    // An error axis in per cent has its exact curve at zero.
     std::optional<plot::series> zero;
     std::string reference_name = "the exact curve";
-    if (!exact && spec.y == period_axis::error_percent) {
+    if (!exact && w.spec.y == period_axis::error_percent) {
         zero.emplace();
-        zero->x = {x0, x1};
+        zero->x = {w.x0, w.x1};
         zero->y = {0, 0};
         exact = &*zero;
         reference_name = "zero";
     }
-    if (exact && p.y.kind == plot::scale::linear && y1 > y0) {
-        auto reference = dense(*exact);
-        std::sort(reference.begin(), reference.end());
-        const double visible = visible_fraction * (y1 - y0);
-        std::vector<std::string> leaves, stays;
-        for (const auto* s : shown) {
-            if (s == exact) continue;
-            std::optional<double> at;
-            double covered_to = -INFINITY;
-            auto points = dense(*s);
-            std::sort(points.begin(), points.end());
-            for (const auto& [px, py] : points) {
-                const auto e = value_at(reference, px);
-                if (!e) continue;
-                covered_to = px;
-                if (std::fabs(py - *e) > visible) {
-                    at = px;
-                    break;
-                }
+    if (!exact || w.p.y.kind != plot::scale::linear || !(w.y1 > w.y0)) return {};
+    return departures_words(w, *exact, reference_name);
+}
+
+/// On a logarithmic axis, the values in the middle of the x range tell the curves apart.
+std::string middle_words(const panel_words& w) {
+    const plot::panel& p = w.p;
+    if (p.y.kind != plot::scale::log || w.shown.empty()) return {};
+    const double mid = p.x.kind == plot::scale::log ? std::sqrt(w.x0 * w.x1) : (w.x0 + w.x1) / 2;
+    std::vector<std::string> values;
+    for (const auto* s : w.shown) {
+        auto points = dense(*s);
+        std::sort(points.begin(), points.end());
+        if (const auto v = value_at(points, mid)) values.push_back(spoken_label(s->label.markup) + " " + spoken(*v, p.y.ticks));
+    }
+    if (values.empty()) return {};
+    return " At " + w.x + " = " + spoken(mid, p.x.ticks) + ": " + join(values) + ".";
+}
+
+/// Where the curves first cross a horizontal line at y.
+std::string crossings_words(const panel_words& w, double y) {
+    std::vector<std::string> crossings;
+    for (const auto* s : w.shown) {
+        auto points = dense(*s);
+        std::sort(points.begin(), points.end());
+        for (std::size_t i = 1; i < points.size(); ++i) {
+            const double a = points[i - 1].second - y, b = points[i].second - y;
+            if ((a < 0) != (b < 0)) {
+                crossings.push_back(spoken_label(s->label.markup) + " at " + w.x + " = " +
+                                    spoken(points[i].first, w.p.x.ticks));
+                break;
             }
-            const std::string name = spoken_label(s->label.markup);
-            if (at) {
-                leaves.push_back(name + " at " + x + " = " + spoken(*at, p.x.ticks));
-            } else if (std::isfinite(covered_to)) {
-                stays.push_back(name);
-            }
-        }
-        char pct[16];
-        std::snprintf(pct, sizeof pct, "%g", visible_fraction * 100);
-        if (!leaves.empty()) {
-            out += " Leaving " + reference_name + " by more than " + std::string(pct) + " % of the " + y +
-                   " axis: " + join(leaves) + ".";
-        }
-        if (!stays.empty()) {
-            std::string who = join(stays);
-            if (std::islower(static_cast<unsigned char>(who[0]))) who[0] = static_cast<char>(std::toupper(who[0]));
-            out += " " + who + (stays.size() == 1 ? " stays" : " stay") + " on " + reference_name + " over " +
-                   (leaves.empty() ? "the whole" : "its whole") + " range.";
         }
     }
-    // On a logarithmic axis, the values in the middle of the x range tell the curves apart.
-    if (p.y.kind == plot::scale::log && !shown.empty()) {
-        const double mid = p.x.kind == plot::scale::log ? std::sqrt(x0 * x1) : (x0 + x1) / 2;
-        std::vector<std::string> values;
-        for (const auto* s : shown) {
-            auto points = dense(*s);
-            std::sort(points.begin(), points.end());
-            if (const auto v = value_at(points, mid)) values.push_back(spoken_label(s->label.markup) + " " + spoken(*v, p.y.ticks));
-        }
-        if (!values.empty()) out += " At " + x + " = " + spoken(mid, p.x.ticks) + ": " + join(values) + ".";
+    return crossings.empty() ? "; no curve crosses it." : "; first crossed by " + join(crossings) + ".";
+}
+
+/// A reference line, and where the curves cross it.
+std::string line_words(const panel_words& w, const reference_line& line) {
+    const plot::panel& p = w.p;
+    const std::string label = line.label.empty() ? "" : " (" + plot::tex_to_plain(line.label) + ")";
+    if (line.x && !line.y) return " A vertical line marks " + w.x + " = " + spoken(*line.x, p.x.ticks) + label + ".";
+    if (!line.y) return {};
+    std::string out = " A horizontal line at " + w.y + " = " + spoken(*line.y, p.y.ticks) + label;
+    if (line.span) {
+        out += " runs from " + w.x + " = " + spoken(to_axis_angle(w.spec, (*line.span)[0]), p.x.ticks) + " to " +
+               spoken(to_axis_angle(w.spec, (*line.span)[1]), p.x.ticks);
     }
-    if (spec.energy_axis && x0 < 2 && 2 < x1) {
+    return out + crossings_words(w, *line.y);
+}
+
+/// The panel's paragraph.
+std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::size_t index, std::size_t count,
+                           const plot::panel_frame* frame, bool animated) {
+    panel_words w{p, spec, {}, axis_name(p.x, "x"), axis_name(p.y, "y")};
+    for (const auto& s : p.data) {
+        if (s.autoscale && !s.overlay && !s.label.empty()) w.shown.push_back(&s);
+    }
+    std::string out = panel_opening(p, index, count);
+    if (p.frameless) return out + drawing_words(w, animated);
+    out += axes_words(w, frame);
+    out += curves_words(w);
+    if (spec.plot->describe_curves) out += spec.plot->describe_curves({p, w.shown, w.x, w.y});
+    out += exact_words(w);
+    out += middle_words(w);
+    if (spec.energy_axis && w.x0 < 2 && 2 < w.x1) {
         out += " A dotted vertical line marks the separatrix at E = 2, where the period diverges from both "
                "sides: the libration's period below it, the time of one revolution above it.";
     }
-    // Reference lines, and where the curves cross them.
-    for (const auto& line : spec.lines) {
-        const std::string label = line.label.empty() ? "" : " (" + plot::tex_to_plain(line.label) + ")";
-        if (line.y) {
-            out += " A horizontal line at " + y + " = " + spoken(*line.y, p.y.ticks) + label;
-            if (line.span) {
-                out += " runs from " + x + " = " + spoken(to_axis_angle(spec, (*line.span)[0]), p.x.ticks) + " to " +
-                       spoken(to_axis_angle(spec, (*line.span)[1]), p.x.ticks);
-            }
-            std::vector<std::string> crossings;
-            for (const auto* s : shown) {
-                auto points = dense(*s);
-                std::sort(points.begin(), points.end());
-                for (std::size_t i = 1; i < points.size(); ++i) {
-                    const double a = points[i - 1].second - *line.y, b = points[i].second - *line.y;
-                    if ((a < 0) != (b < 0)) {
-                        crossings.push_back(spoken_label(s->label.markup) + " at " + x + " = " +
-                                            spoken(points[i].first, p.x.ticks));
-                        break;
-                    }
-                }
-            }
-            out += crossings.empty() ? "; no curve crosses it." : "; first crossed by " + join(crossings) + ".";
-        } else if (line.x) {
-            out += " A vertical line marks " + x + " = " + spoken(*line.x, p.x.ticks) + label + ".";
-        }
-    }
+    for (const auto& line : spec.lines) out += line_words(w, line);
     return out;
 }
 

@@ -11,6 +11,28 @@
 
 namespace figures {
 
+/// The keys of each kind (kind_keys.cpp): those its row lists in `keys`, read in an order
+/// that lets one key's reading use another's.
+void trajectory_keys(key_reading& k);
+/// The keys of a phase panel.
+void phase_keys(key_reading& k);
+/// The keys of a period panel.
+void period_keys(key_reading& k);
+/// The keys of a coefficient panel.
+void coefficient_keys(key_reading& k);
+/// The keys of a convergence panel.
+void convergence_keys(key_reading& k);
+/// The keys of a spectrum panel.
+void spectrum_keys(key_reading& k);
+/// The keys of a pendulum panel.
+void pendulum_keys(key_reading& k);
+
+/// The pendulum drawing's description (kind_descriptions.cpp): what is drawn, each
+/// pendulum's rod and bob, where they start.
+std::string describe_pendulum_drawing(const panel_spec& spec, bool animated);
+/// Each orbit of a phase plot: its shape and how far it reaches on both axes.
+std::string describe_phase_orbits(const described_curves& d);
+
 /// theta(t) of each method at the panel's amplitude.
 plot::panel trajectory_panel(const panel_context& c, const panel_spec& p);
 /// The time cursor and a dot per method at time w0 t.

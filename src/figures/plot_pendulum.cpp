@@ -115,6 +115,88 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
     return panel;
 }
 
+namespace {
+
+/// The bob's recent path over `span` before w0 t, fading into the past in eight steps.
+template <class Theta>
+void add_trail(plot::panel& panel, const series_style& st, const Theta& theta, double w0_t, double span) {
+    for (int k = 0; k < 8 && span > 0; ++k) {
+        plot::series trail = series_of(st);
+        trail.label.clear();
+        trail.line = line_style::solid;
+        trail.marker = marker_style::none;
+        trail.alpha = 0.08 + 0.06 * k;
+        trail.id = "trail:" + st.id;
+        const double t0 = w0_t - span * (8 - k) / 8;
+        const double t1 = w0_t - span * (7 - k) / 8;
+        // Drawn after this function returns: holds its own copy of the motion.
+        const auto bob_at = [theta](double t) { return bob_place(theta(t)); };
+        for (double t : {t0, t1}) {
+            trail.x.push_back(bob_at(t).first);
+            trail.y.push_back(bob_at(t).second);
+        }
+        trail.curve = plot::parametric_curve(t0, t1, bob_at, 1);
+        panel.data.push_back(std::move(trail));
+    }
+}
+
+/// The way the bob came since the previous frame, as a streak of faint bobs (motion_streak).
+template <class Theta>
+void add_streak(plot::panel& panel, const series_style& st, const Theta& theta, double w0_t, double frame_step,
+                marker_style bob_marker) {
+    for (const auto& ghost : motion_streak(theta, w0_t, frame_step)) {
+        plot::series s = series_of(st);
+        s.label.clear();
+        s.line = line_style::none;
+        // A blur, also behind an outlined bob: filled, fainter for an outline.
+        s.marker = marker_style::filled_circle;
+        s.marker_scale = bob_marker_scale;
+        s.width_scale = 1.5;
+        s.id = "streak:" + st.id;
+        s.alpha = bob_marker == marker_style::filled_circle ? ghost.alpha : 0.5 * ghost.alpha;
+        s.x = {bob_place(ghost.angle).first};
+        s.y = {bob_place(ghost.angle).second};
+        panel.data.push_back(std::move(s));
+    }
+}
+
+/// The rod and the bob at angle a.
+void add_rod_and_bob(plot::panel& panel, const series_style& st, line_style line, marker_style bob_marker, double a) {
+    plot::series rod = series_of(st);
+    rod.line = line == line_style::none ? line_style::solid : line;
+    rod.marker = marker_style::none;
+    rod.width_scale = 1.2;
+    rod.id = "rod:" + st.id;
+    rod.x = {0, std::sin(a)};
+    rod.y = {0, -std::cos(a)};
+    plot::series bob = series_of(st);
+    bob.label.clear();
+    bob.line = line_style::none;
+    // The exact pendulum's bob is solid; the approximations' are outlines.
+    bob.marker = bob_marker;
+    bob.marker_scale = bob_marker_scale;
+    bob.width_scale = 1.5;
+    bob.id = "bob:" + st.id;
+    bob.x = {std::sin(a)};
+    bob.y = {-std::cos(a)};
+    panel.data.push_back(std::move(rod));
+    panel.data.push_back(std::move(bob));
+}
+
+/// The pivot, a dot at the origin.
+void add_pivot(plot::panel& panel) {
+    plot::series pivot;
+    pivot.id = "pivot";
+    pivot.line = line_style::none;
+    pivot.marker = marker_style::filled_circle;
+    pivot.marker_scale = 1.2;
+    pivot.x = {0};
+    pivot.y = {0};
+    panel.data.push_back(std::move(pivot));
+}
+
+}  // namespace
+
 void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, double frame_step) {
     const auto starts = starts_of(p);
     for (std::size_t i = 0; i < starts.size(); ++i) {
@@ -125,76 +207,15 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
             const auto& m = p.methods[j];
             const auto theta = angle_of(m, motion);
             const series_style st = bob_style(p, starts, i, j);
-            if (p.trail > 0) {
-                // The bob's recent path, fading into the past in eight steps.
-                const double span = std::min(p.trail * period, w0_t);
-                for (int k = 0; k < 8 && span > 0; ++k) {
-                    plot::series trail = series_of(st);
-                    trail.label.clear();
-                    trail.line = line_style::solid;
-                    trail.marker = marker_style::none;
-                    trail.alpha = 0.08 + 0.06 * k;
-                    trail.id = "trail:" + st.id;
-                    const double t0 = w0_t - span * (8 - k) / 8;
-                    const double t1 = w0_t - span * (7 - k) / 8;
-                    // Drawn after this function returns: holds its own copy of the motion.
-                    const auto bob_at = [theta](double t) { return bob_place(theta(t)); };
-                    for (double t : {t0, t1}) {
-                        trail.x.push_back(bob_at(t).first);
-                        trail.y.push_back(bob_at(t).second);
-                    }
-                    trail.curve = plot::parametric_curve(t0, t1, bob_at, 1);
-                    panel.data.push_back(std::move(trail));
-                }
-            }
-            const double a = theta(w0_t);
-            // The bob now, and the way it came since the previous frame as a streak (bobs_in_streak).
+            if (p.trail > 0) add_trail(panel, st, theta, w0_t, std::min(p.trail * period, w0_t));
             const marker_style bob_marker =
                 m.marker.value_or(is_exact(m) ? marker_style::filled_circle : marker_style::open_circle);
-            for (const auto& ghost : motion_streak(theta, w0_t, frame_step)) {
-                plot::series s = series_of(st);
-                s.label.clear();
-                s.line = line_style::none;
-                // A blur, also behind an outlined bob: filled, fainter for an outline.
-                s.marker = marker_style::filled_circle;
-                s.marker_scale = bob_marker_scale;
-                s.width_scale = 1.5;
-                s.id = "streak:" + st.id;
-                s.alpha = bob_marker == marker_style::filled_circle ? ghost.alpha : 0.5 * ghost.alpha;
-                s.x = {bob_place(ghost.angle).first};
-                s.y = {bob_place(ghost.angle).second};
-                panel.data.push_back(std::move(s));
-            }
-            plot::series rod = series_of(st);
-            rod.line = m.style.value_or(starts.size() > 1 ? st.line : line_style::solid);
-            if (rod.line == line_style::none) rod.line = line_style::solid;
-            rod.marker = marker_style::none;
-            rod.width_scale = 1.2;
-            rod.id = "rod:" + st.id;
-            rod.x = {0, std::sin(a)};
-            rod.y = {0, -std::cos(a)};
-            plot::series bob = series_of(st);
-            bob.label.clear();
-            bob.line = line_style::none;
-            // The exact pendulum's bob is solid; the approximations' are outlines.
-            bob.marker = bob_marker;
-            bob.marker_scale = bob_marker_scale;
-            bob.width_scale = 1.5;
-            bob.id = "bob:" + st.id;
-            bob.x = {std::sin(a)};
-            bob.y = {-std::cos(a)};
-            panel.data.push_back(std::move(rod));
-            panel.data.push_back(std::move(bob));
+            add_streak(panel, st, theta, w0_t, frame_step, bob_marker);
+            add_rod_and_bob(panel, st, m.style.value_or(starts.size() > 1 ? st.line : line_style::solid), bob_marker,
+                            theta(w0_t));
         }
     }
-    plot::series pivot;
-    pivot.id = "pivot";
-    pivot.line = line_style::none;
-    pivot.marker = marker_style::filled_circle;
-    pivot.marker_scale = 1.2;
-    pivot.x = {0};
-    pivot.y = {0};
-    panel.data.push_back(std::move(pivot));
+    add_pivot(panel);
 }
 
 std::vector<streak_bob> motion_streak(const std::function<double(double)>& theta, double w0_t, double frame_step) {

@@ -26,6 +26,41 @@ namespace {
 /// The exact period against the energy E (per m g L) launched from the bottom: T/T0 of the
 /// libration below the separatrix, the revolution's T/T0 above it, each curve stopping short
 /// of E = 2, where both diverge, and a vertical line marking the separatrix.
+/// One side of the separatrix against the energy, from `from` to `to`, its own curve (the
+/// i-th: libration solid, rotation dashed), sampled up to `top`.
+plot::series energy_piece(const series_style& st, std::size_t i, double from, double to, const char* label,
+                          const std::function<double(double)>& period, double top) {
+    plot::series s = series_of(st);
+    s.label = plot::label(label);
+    s.line = i == 0 ? line_style::solid : line_style::dashed;
+    s.marker = marker_style::none;
+    s.style_key.clear();
+    s.color = static_cast<int>(i);
+    // Just short of E = 2: the curve leaves the axis long before (T = 4 T0 at 2 - 4.5e-4).
+    const double a = from == 2.0 ? std::nextafter(2.0, 3.0) : from;
+    const double b = to == 2.0 ? std::nextafter(2.0, 1.0) : to;
+    for (double e : grid(a, b, 200)) {
+        const double v = period(e);
+        if (!(v <= top)) continue;
+        s.x.push_back(e);
+        s.y.push_back(v);
+    }
+    s.curve = plot::function_curve(a, b, period);
+    return s;
+}
+
+/// The dotted vertical line of the separatrix at E = 2.
+plot::series energy_separatrix(const panel_spec& p, double top) {
+    plot::series line;
+    line.label = "separatrix, <i>E</i> = 2";
+    line.line = line_style::dotted;
+    line.rgb_color = plot::rgb{0.5, 0.5, 0.5};
+    line.autoscale = false;
+    line.x = {2, 2};
+    line.y = {p.y_range ? (*p.y_range)[0] : 0.0, top};
+    return line;
+}
+
 plot::panel energy_period_panel(const panel_context& c, const panel_spec& p) {
     const double lo = p.range ? (*p.range)[0] : 0.0;
     const double hi = p.range ? (*p.range)[1] : 4.0;
@@ -55,35 +90,9 @@ plot::panel energy_period_panel(const panel_context& c, const panel_spec& p) {
     const series_style st = style_of(p.methods.front(), 0);
     for (std::size_t i = 0; i < 2; ++i) {
         const auto& [from, to, label] = pieces[i];
-        if (!(from < to)) continue;
-        plot::series s = series_of(st);
-        s.label = plot::label(label);
-        s.line = i == 0 ? line_style::solid : line_style::dashed;
-        s.marker = marker_style::none;
-        s.style_key.clear();
-        s.color = static_cast<int>(i);
-        // Just short of E = 2: the curve leaves the axis long before (T = 4 T0 at 2 - 4.5e-4).
-        const double a = from == 2.0 ? std::nextafter(2.0, 3.0) : from;
-        const double b = to == 2.0 ? std::nextafter(2.0, 1.0) : to;
-        for (double e : grid(a, b, 200)) {
-            const double v = period(e);
-            if (!(v <= top)) continue;
-            s.x.push_back(e);
-            s.y.push_back(v);
-        }
-        s.curve = plot::function_curve(a, b, period);
-        panel.data.push_back(std::move(s));
+        if (from < to) panel.data.push_back(energy_piece(st, i, from, to, label, period, top));
     }
-    if (lo < 2 && 2 < hi) {
-        plot::series line;
-        line.label = "separatrix, <i>E</i> = 2";
-        line.line = line_style::dotted;
-        line.rgb_color = plot::rgb{0.5, 0.5, 0.5};
-        line.autoscale = false;
-        line.x = {2, 2};
-        line.y = {p.y_range ? (*p.y_range)[0] : 0.0, top};
-        panel.data.push_back(std::move(line));
-    }
+    if (lo < 2 && 2 < hi) panel.data.push_back(energy_separatrix(p, top));
     return panel;
 }
 
@@ -170,14 +179,9 @@ plot::panel period_panel(const panel_context& c, const panel_spec& p) {
 
 namespace {
 
-plot::panel period_curves_panel(const panel_context& c, const panel_spec& p) {
-    if (p.energy_axis) return energy_period_panel(c, p);
-    const double lo = p.range ? (*p.range)[0] : 0.0;
-    const double hi = p.range ? (*p.range)[1] : pi;
-    plot::panel panel;
-    panel.x = amplitude_axis(p, lo, hi);
-    if (c.width_cm < 5) panel.x.max_ticks = 3;
-    const double seconds = c.spec.pendulum ? 2 * pi * seconds_per_radian(c.spec) : 1.0;
+/// The y axis of a period panel against the amplitude: its label, and a log scale for
+/// log |error|.
+void period_y_axis(plot::panel& panel, const panel_context& c, const panel_spec& p) {
     switch (p.y) {
         case period_axis::value:
             panel.y.label = c.spec.pendulum ? "<i>T</i> (s)" : "<i>T</i>/<i>T</i><sub>0</sub>";
@@ -188,10 +192,55 @@ plot::panel period_curves_panel(const panel_context& c, const panel_spec& p) {
             panel.y.kind = plot::scale::log;
             panel.y.max_ticks = 9;
             break;
-        case period_axis::residual:
-            panel.y.label = residual_label(p);
-            add_residual_curves(panel, p, lo, hi);
-            return panel;
+        case period_axis::residual: panel.y.label = residual_label(p); break;
+    }
+}
+
+/// A method's period against the amplitude (in seconds with [pendulum]).
+plot::series period_series(const panel_spec& p, const method_spec& m, const series_style& st,
+                           const std::vector<double>& curve, double lo, double hi, double seconds) {
+    const std::function<double(double)> period = [method = m.method, seconds](double t) {
+        return seconds * pendulum::method_period(method, t);
+    };
+    auto s = make_series(st, is_exact(m) ? circle_amplitudes(lo, hi) : curve, period);
+    for (double& v : s.x) v = to_axis_angle(p, v);
+    s.curve = amplitude_curve(p, curve.front(), curve.back(), period);
+    return s;
+}
+
+/// A method's period error against the amplitude, in per cent or as log |error|: without
+/// cancellation (MPFR where the periods agree closely), right to 1e-12.
+plot::series error_series(const panel_spec& p, const method_spec& m, const series_style& st,
+                          const std::vector<double>& curve) {
+    const auto error = [method = m.method, percent = p.y == period_axis::error_percent](double t) {
+        const auto err = pendulum::method_period_error(method, t);
+        using kind = pendulum::period_error::kind;
+        if (err.what == kind::no_period || err.what == kind::not_computed) return std::nan("");
+        if (percent) return 100 * err.value;  // 0 below 1e-300
+        // Below 1e-300 an error has no place on a log axis of doubles.
+        return err.what == kind::value && err.value != 0 ? std::fabs(err.value) : std::nan("");
+    };
+    plot::series s = series_of(st);
+    for (const double t : curve) {
+        s.x.push_back(to_axis_angle(p, t));
+        s.y.push_back(error(t));
+    }
+    s.curve = amplitude_curve(p, curve.front(), curve.back(), error);
+    return s;
+}
+
+plot::panel period_curves_panel(const panel_context& c, const panel_spec& p) {
+    if (p.energy_axis) return energy_period_panel(c, p);
+    const double lo = p.range ? (*p.range)[0] : 0.0;
+    const double hi = p.range ? (*p.range)[1] : pi;
+    plot::panel panel;
+    panel.x = amplitude_axis(p, lo, hi);
+    if (c.width_cm < 5) panel.x.max_ticks = 3;
+    const double seconds = c.spec.pendulum ? 2 * pi * seconds_per_radian(c.spec) : 1.0;
+    period_y_axis(panel, c, p);
+    if (p.y == period_axis::residual) {
+        add_residual_curves(panel, p, lo, hi);
+        return panel;
     }
     const auto curve = curve_amplitudes(lo, hi);
     for (std::size_t i = 0; i < p.methods.size(); ++i) {
@@ -199,32 +248,10 @@ plot::panel period_curves_panel(const panel_context& c, const panel_spec& p) {
         const series_style st = style_of(m, static_cast<int>(i));
         if (m.method.user) check_formula_finite(m.method, curve, [f = m.method.user](double t) { return f->value(t); });
         if (p.y == period_axis::value) {
-            const std::function<double(double)> period = [method = m.method, seconds](double t) {
-                return seconds * pendulum::method_period(method, t);
-            };
-            auto s = make_series(st, is_exact(m) ? circle_amplitudes(lo, hi) : curve, period);
-            for (double& v : s.x) v = to_axis_angle(p, v);
-            s.curve = amplitude_curve(p, curve.front(), curve.back(), period);
-            panel.data.push_back(std::move(s));
-            continue;
+            panel.data.push_back(period_series(p, m, st, curve, lo, hi, seconds));
+        } else if (!is_exact(m)) {  // the exact method's error is zero
+            panel.data.push_back(error_series(p, m, st, curve));
         }
-        if (is_exact(m)) continue;  // its error is zero
-        // Without cancellation (MPFR where the periods agree closely): right to 1e-12.
-        const auto error = [method = m.method, percent = p.y == period_axis::error_percent](double t) {
-            const auto err = pendulum::method_period_error(method, t);
-            using kind = pendulum::period_error::kind;
-            if (err.what == kind::no_period || err.what == kind::not_computed) return std::nan("");
-            if (percent) return 100 * err.value;  // 0 below 1e-300
-            // Below 1e-300 an error has no place on a log axis of doubles.
-            return err.what == kind::value && err.value != 0 ? std::fabs(err.value) : std::nan("");
-        };
-        plot::series s = series_of(st);
-        for (const double t : curve) {
-            s.x.push_back(to_axis_angle(p, t));
-            s.y.push_back(error(t));
-        }
-        s.curve = amplitude_curve(p, curve.front(), curve.back(), error);
-        panel.data.push_back(std::move(s));
     }
     return panel;
 }

@@ -6,11 +6,13 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace figures {
 
 struct figure_spec;
 struct panel_spec;
+struct key_reading;
 
 /// What a panel is built with besides its own spec.
 struct panel_context {
@@ -35,6 +37,21 @@ enum class range_kind {
     amplitudes,  ///< two angles
 };
 
+/// The formulas of the user (methods formula = "EXPR") a plot kind takes.
+enum class formula_kind {
+    none,           ///< none
+    law_of_motion,  ///< laws of motion theta(t) in t and theta0
+    period,         ///< periods T/T0 in theta0
+};
+
+/// The axis names and curves a panel's description speaks of.
+struct described_curves {
+    const plot::panel& panel;                    ///< the built panel
+    const std::vector<const plot::series*>& shown;  ///< its curves with a legend label
+    const std::string& x;                        ///< the x axis' name as spoken
+    const std::string& y;                        ///< the y axis' name as spoken
+};
+
 /// One plot kind: what it shows, the keys it takes, and how it is built and animated. A new
 /// kind is a row here and its builder.
 struct plot_row {
@@ -47,10 +64,18 @@ struct plot_row {
     range_kind range;              ///< what its range is
     bool needs_motion;             ///< its methods must give a law of motion, not only a period
     bool drawing;                  ///< a drawing rather than a plot: an animation's clock goes on it
+    formula_kind formulas;         ///< the user formulas its methods may be
+    /// Reads the kind's own keys (those in `keys`) into the panel, reporting their problems.
+    void (*read_keys)(key_reading& k);
     /// The panel, its data computed by the core library (without what moves, when animated).
     plot::panel (*build)(const panel_context& c, const panel_spec& p);
     /// Adds what moves at time w0 t to a built panel; null for a panel that stands still.
     void (*add_frame)(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t);
+    /// A drawing's description after "Panel (a)" (for alt text), in place of the general one;
+    /// null for the general one.
+    std::string (*describe_drawing)(const panel_spec& p, bool animated);
+    /// Sentences of its own added to the description of a plot's curves; null for none.
+    std::string (*describe_curves)(const described_curves& d);
 };
 
 /// Every plot kind, in the order help and lists show them.

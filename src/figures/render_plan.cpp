@@ -142,40 +142,54 @@ std::string render_one(const entry& e, const build_options& build, const plot::t
     return plot::render(figures::build(e, one), theme, format, output);
 }
 
+namespace {
+
+/// A list of output files, each with what writes it.
+using output_list = std::vector<std::pair<std::filesystem::path, std::string>>;
+
+/// A still file, and its drawing under the drawing format's name for an overlay format.
+void add_still_outputs(output_list& outputs, const figure_file& f) {
+    const std::string what = f.panel < 0 ? "figure '" + f.figure->id + "'"
+                                         : "figure '" + f.figure->id + "' panel " + std::to_string(f.panel + 1);
+    outputs.emplace_back(f.path, what);
+    std::string ext = f.path.extension().string();
+    if (!ext.empty()) ext.erase(0, 1);
+    const plot::format_row& row = plot::find_format(ext);
+    if (!row.graphics.empty()) {
+        auto drawing = f.path;
+        outputs.emplace_back(drawing.replace_extension(row.graphics), what + " (the drawing under its " + ext + ")");
+    }
+}
+
+/// An animation's files in one format: its frame files (each once), or one file (with its
+/// drawing for an overlay format) for a moving format or one frame (--at).
+void add_animation_outputs(output_list& outputs, const animation_job& m, const std::string& f,
+                           const std::filesystem::path& dir, bool at) {
+    const plot::format_row& row = plot::find_format(f);
+    const std::string what = "animation '" + m.figure->id + "' as " + f;
+    if (!at && row.animate) {
+        std::string previous;
+        for (int i = m.first; i <= m.last; ++i) {
+            const std::string name = row.frame_file(m.figure->id, i, m.plan.frames);
+            if (name != previous) outputs.emplace_back(dir / name, what);
+            previous = name;
+        }
+        return;
+    }
+    outputs.emplace_back(dir / (m.figure->id + "." + f), what);
+    if (!row.graphics.empty()) outputs.emplace_back(dir / (m.figure->id + "." + std::string(row.graphics)), what);
+}
+
+}  // namespace
+
 std::vector<std::pair<std::filesystem::path, std::string>> render_outputs(const std::vector<figure_file>& stills,
                                                                       const std::vector<animation_job>& animations,
                                                                       const std::vector<std::string>& formats,
                                                                       const std::filesystem::path& dir, bool at) {
-    std::vector<std::pair<std::filesystem::path, std::string>> outputs;
-    const auto add = [&](const std::filesystem::path& path, const std::string& what) { outputs.emplace_back(path, what); };
-    for (const auto& f : stills) {
-        const std::string what = f.panel < 0 ? "figure '" + f.figure->id + "'"
-                                             : "figure '" + f.figure->id + "' panel " + std::to_string(f.panel + 1);
-        add(f.path, what);
-        std::string ext = f.path.extension().string();
-        if (!ext.empty()) ext.erase(0, 1);
-        const plot::format_row& row = plot::find_format(ext);
-        if (!row.graphics.empty()) {
-            auto drawing = f.path;
-            add(drawing.replace_extension(row.graphics), what + " (the drawing under its " + ext + ")");
-        }
-    }
+    output_list outputs;
+    for (const auto& f : stills) add_still_outputs(outputs, f);
     for (const auto& m : animations) {
-        for (const auto& f : formats) {
-            const plot::format_row& row = plot::find_format(f);
-            const std::string what = "animation '" + m.figure->id + "' as " + f;
-            if (!at && row.animate) {
-                std::string previous;
-                for (int i = m.first; i <= m.last; ++i) {
-                    const std::string name = row.frame_file(m.figure->id, i, m.plan.frames);
-                    if (name != previous) add(dir / name, what);
-                    previous = name;
-                }
-                continue;
-            }
-            add(dir / (m.figure->id + "." + f), what);
-            if (!row.graphics.empty()) add(dir / (m.figure->id + "." + std::string(row.graphics)), what);
-        }
+        for (const auto& f : formats) add_animation_outputs(outputs, m, f, dir, at);
     }
     return outputs;
 }

@@ -30,36 +30,53 @@ std::string panel_letter(std::size_t i) {
 
 }  // namespace
 
-std::vector<panel_spec> panels_with(const figure_spec& spec, const build_options& o) {
-    if (o.amplitudes.empty()) return spec.panels;
-    std::vector<panel_spec> out;
-    const auto per_amplitude = [](const panel_spec& p) { return p.plot->amplitudes == amplitude_policy::one_per_panel; };
-    const auto first_trajectory = std::find_if(spec.panels.begin(), spec.panels.end(), per_amplitude);
+namespace {
+
+/// A panel that takes one amplitude and becomes one panel per amplitude.
+bool per_amplitude(const panel_spec& p) { return p.plot->amplitudes == amplitude_policy::one_per_panel; }
+
+/// The panels per amplitude, in place of the spec's first such panel: the spec's i-th such
+/// panel for the i-th amplitude, or copies of the first (without its paper file) past them.
+void add_amplitude_panels(std::vector<panel_spec>& out, const figure_spec& spec, const panel_spec& first,
+                          const build_options& o) {
     std::vector<const panel_spec*> trajectories;
     for (const auto& p : spec.panels) {
         if (per_amplitude(p)) trajectories.push_back(&p);
     }
-    for (const auto& p : spec.panels) {
-        if (per_amplitude(p)) {
-            if (&p != &*first_trajectory) continue;
-            for (std::size_t i = 0; i < o.amplitudes.size(); ++i) {
-                panel_spec q = i < trajectories.size() ? *trajectories[i] : p;
-                if (i >= trajectories.size()) q.paper_file.clear();
-                q.theta0 = {o.amplitudes[i]};
-                q.starts.clear();
-                q.title.reset();
-                out.push_back(std::move(q));
-            }
-            continue;
-        }
-        panel_spec q = p;
-        if (p.plot->amplitudes != amplitude_policy::none) q.starts.clear();
-        if (p.plot->amplitudes == amplitude_policy::list) {
-            q.theta0 = o.amplitudes;
-        } else if (p.plot->amplitudes == amplitude_policy::one) {
-            q.theta0 = {o.amplitudes.front()};
-        }
+    for (std::size_t i = 0; i < o.amplitudes.size(); ++i) {
+        panel_spec q = i < trajectories.size() ? *trajectories[i] : first;
+        if (i >= trajectories.size()) q.paper_file.clear();
+        q.theta0 = {o.amplitudes[i]};
+        q.starts.clear();
+        q.title.reset();
         out.push_back(std::move(q));
+    }
+}
+
+/// A panel of another kind with --theta0's amplitudes, as many as it takes.
+panel_spec with_amplitudes(const panel_spec& p, const build_options& o) {
+    panel_spec q = p;
+    if (p.plot->amplitudes != amplitude_policy::none) q.starts.clear();
+    if (p.plot->amplitudes == amplitude_policy::list) {
+        q.theta0 = o.amplitudes;
+    } else if (p.plot->amplitudes == amplitude_policy::one) {
+        q.theta0 = {o.amplitudes.front()};
+    }
+    return q;
+}
+
+}  // namespace
+
+std::vector<panel_spec> panels_with(const figure_spec& spec, const build_options& o) {
+    if (o.amplitudes.empty()) return spec.panels;
+    std::vector<panel_spec> out;
+    const auto first_trajectory = std::find_if(spec.panels.begin(), spec.panels.end(), per_amplitude);
+    for (const auto& p : spec.panels) {
+        if (!per_amplitude(p)) {
+            out.push_back(with_amplitudes(p, o));
+        } else if (&p == &*first_trajectory) {
+            add_amplitude_panels(out, spec, p, o);
+        }
     }
     return out;
 }
@@ -134,71 +151,70 @@ void require_values(const plot::panel& panel, const panel_spec& p, std::size_t i
 
 }  // namespace
 
-plot::figure build_figure(const figure_spec& spec, const build_options& options) {
-    const auto panels = panels_with(spec, options);
-    plot::figure f = figure_grid(spec, options);
-    const panel_context c{spec, f.panel_width_cm, options.animated, 0.0};
-    for (std::size_t i = 0; i < panels.size(); ++i) {
-        const auto& p = panels[i];
-        plot::panel panel = p.plot->build(c, p);
-        require_values(panel, p, i);
-        if (p.y_range) {
-            panel.y.min = (*p.y_range)[0];
-            panel.y.max = (*p.y_range)[1];
+namespace {
+
+/// The extent of an axis a reference line crosses: from limit to limit, or past the data by
+/// the widest margin an axis adds where the axis has no limit, so the line meets the frame.
+std::array<double, 2> line_extent(const plot::panel& panel, const plot::axis& a, bool horizontal) {
+    double lo = a.min.value_or(std::numeric_limits<double>::infinity());
+    double hi = a.max.value_or(-std::numeric_limits<double>::infinity());
+    for (const auto& d : panel.data) {
+        for (double v : horizontal ? d.x : d.y) {
+            if (!std::isfinite(v) || !d.autoscale) continue;
+            if (!a.min) lo = std::min(lo, v);
+            if (!a.max) hi = std::max(hi, v);
         }
-        if (p.x_label) panel.x.label = plot::tex_label(*p.x_label);
-        if (p.y_label) panel.y.label = plot::tex_label(*p.y_label);
-        const std::string letter = panels.size() > 1 ? panel_letter(i) : "";
-        if (p.title) {
-            panel.label = plot::tex_label(*p.title);
-        } else if (p.plot->amplitudes == amplitude_policy::one_per_panel) {
-            if (!letter.empty()) panel.label = plot::join(plot::label(letter + " "), panel.label);
-        } else {
-            panel.label = letter;
-        }
-        if (spec.legend == legend_mode::none) panel.legend = plot::legend_place::none;
-        for (const auto& line : p.lines) {
-            // A reference line crosses the whole panel, from limit to limit of the other axis
-            // (its data range when the axis has no limits), and leaves the limits alone.
-            plot::series s;
-            s.id = "line:" + std::to_string(&line - p.lines.data() + 1);
-            if (!line.label.empty()) s.label = plot::tex_label(line.label);
-            s.line = line.style;
-            s.autoscale = false;
-            const auto extent = [&](const plot::axis& a, bool horizontal) {
-                double lo = a.min.value_or(std::numeric_limits<double>::infinity());
-                double hi = a.max.value_or(-std::numeric_limits<double>::infinity());
-                for (const auto& d : panel.data) {
-                    for (double v : horizontal ? d.x : d.y) {
-                        if (!std::isfinite(v) || !d.autoscale) continue;
-                        if (!a.min) lo = std::min(lo, v);
-                        if (!a.max) hi = std::max(hi, v);
-                    }
-                }
-                // Past the data by the widest margin an axis adds, so the line meets the frame.
-                const double pad = a.kind == plot::scale::log ? 0.0 : (hi - lo);
-                return std::array<double, 2>{a.min ? lo : lo - pad, a.max ? hi : hi + pad};
-            };
-            if (line.span) {
-                const auto& [from, to] = *line.span;
-                s.x = line.y ? std::vector<double>{from, to} : std::vector<double>{*line.x, *line.x};
-                s.y = line.y ? std::vector<double>{*line.y, *line.y} : std::vector<double>{from, to};
-            } else if (line.y) {
-                const auto x = extent(panel.x, true);
-                s.x = {x[0], x[1]};
-                s.y = {*line.y, *line.y};
-            } else {
-                const auto y = extent(panel.y, false);
-                s.x = {*line.x, *line.x};
-                s.y = {y[0], y[1]};
-            }
-            panel.data.push_back(std::move(s));
-        }
-        give_series_ids(panel);
-        f.panels.push_back(std::move(panel));
     }
-    // The figure in words travels with it, into the files that can hold them; found when
-    // first asked for, once, from the figure as built here.
+    const double pad = a.kind == plot::scale::log ? 0.0 : (hi - lo);
+    return std::array<double, 2>{a.min ? lo : lo - pad, a.max ? hi : hi + pad};
+}
+
+/// A reference line's series: it crosses the whole panel, from limit to limit of the other
+/// axis (its data range when the axis has no limits), and leaves the limits alone.
+plot::series line_series(const plot::panel& panel, const reference_line& line, std::size_t number) {
+    plot::series s;
+    s.id = "line:" + std::to_string(number);
+    if (!line.label.empty()) s.label = plot::tex_label(line.label);
+    s.line = line.style;
+    s.autoscale = false;
+    if (line.span) {
+        const auto& [from, to] = *line.span;
+        s.x = line.y ? std::vector<double>{from, to} : std::vector<double>{*line.x, *line.x};
+        s.y = line.y ? std::vector<double>{*line.y, *line.y} : std::vector<double>{from, to};
+    } else if (line.y) {
+        const auto x = line_extent(panel, panel.x, true);
+        s.x = {x[0], x[1]};
+        s.y = {*line.y, *line.y};
+    } else {
+        const auto y = line_extent(panel, panel.y, false);
+        s.x = {*line.x, *line.x};
+        s.y = {y[0], y[1]};
+    }
+    return s;
+}
+
+/// The spec's y range, axis labels and title: "(a)" before a panel's own title where the
+/// figure has several panels.
+void label_panel(plot::panel& panel, const panel_spec& p, std::size_t i, std::size_t count) {
+    if (p.y_range) {
+        panel.y.min = (*p.y_range)[0];
+        panel.y.max = (*p.y_range)[1];
+    }
+    if (p.x_label) panel.x.label = plot::tex_label(*p.x_label);
+    if (p.y_label) panel.y.label = plot::tex_label(*p.y_label);
+    const std::string letter = count > 1 ? panel_letter(i) : "";
+    if (p.title) {
+        panel.label = plot::tex_label(*p.title);
+    } else if (p.plot->amplitudes == amplitude_policy::one_per_panel) {
+        if (!letter.empty()) panel.label = plot::join(plot::label(letter + " "), panel.label);
+    } else {
+        panel.label = letter;
+    }
+}
+
+/// The figure in words travels with it, into the files that can hold them; found when
+/// first asked for, once, from the figure as built.
+void attach_words(plot::figure& f, const figure_spec& spec, const build_options& options) {
     struct found {
         std::once_flag once;
         plot::figure_words words;
@@ -210,6 +226,25 @@ plot::figure build_figure(const figure_spec& spec, const build_options& options)
         });
         return memo->words;
     };
+}
+
+}  // namespace
+
+plot::figure build_figure(const figure_spec& spec, const build_options& options) {
+    const auto panels = panels_with(spec, options);
+    plot::figure f = figure_grid(spec, options);
+    const panel_context c{spec, f.panel_width_cm, options.animated, 0.0};
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        const auto& p = panels[i];
+        plot::panel panel = p.plot->build(c, p);
+        require_values(panel, p, i);
+        label_panel(panel, p, i, panels.size());
+        if (spec.legend == legend_mode::none) panel.legend = plot::legend_place::none;
+        for (std::size_t l = 0; l < p.lines.size(); ++l) panel.data.push_back(line_series(panel, p.lines[l], l + 1));
+        give_series_ids(panel);
+        f.panels.push_back(std::move(panel));
+    }
+    attach_words(f, spec, options);
     return f;
 }
 

@@ -129,31 +129,38 @@ constexpr std::array<std::pair<std::string_view, plot::marker_style>, 4> data_ma
     {"dot", plot::marker_style::filled_circle},
 }};
 
+/// A list of `key` whose items `read` reads (nothing for a bad one): all of them, or nothing
+/// (reported with `what`) when the list is not one or is empty or has a bad item.
+template <class T, class Read>
+std::optional<std::vector<T>> read_list(reader& r, const toml::table& doc, std::string_view key, const char* what,
+                                        Read read) {
+    const toml::node* n = doc.get(key);
+    if (!n) return std::nullopt;
+    const auto* a = n->as_array();
+    std::vector<T> items;
+    for (std::size_t i = 0; a && i < a->size(); ++i) {
+        if (auto v = read(*a->get(i))) items.push_back(*v);
+    }
+    if (!a || a->empty()) r.problem(*n, what);
+    if (a && !a->empty() && items.size() == a->size()) return items;
+    return std::nullopt;
+}
+
 /// data_palette and data_markers: the colours and markers measured data series take in turn.
 void read_data_style(reader& r, const toml::table& doc, plot::theme& t) {
-    if (const toml::node* n = doc.get("data_palette")) {
-        const auto* a = n->as_array();
-        std::vector<plot::rgb> palette;
-        for (std::size_t i = 0; a && i < a->size(); ++i) {
-            if (auto c = color(r, *a->get(i), "data_palette")) palette.push_back(*c);
-        }
-        if (!a || a->empty()) r.problem(*n, "'data_palette' must be a list of colours \"#rrggbb\"");
-        if (a && !a->empty() && palette.size() == a->size()) t.data_palette = std::move(palette);
+    if (auto palette = read_list<plot::rgb>(r, doc, "data_palette", "'data_palette' must be a list of colours \"#rrggbb\"",
+                                            [&](const toml::node& e) { return color(r, e, "data_palette"); })) {
+        t.data_palette = std::move(*palette);
     }
-    if (const toml::node* n = doc.get("data_markers")) {
-        const auto* a = n->as_array();
-        std::vector<plot::marker_style> shapes;
-        for (std::size_t i = 0; a && i < a->size(); ++i) {
-            if (auto m = r.choice_of(*a->get(i), "data_markers", data_marker_names)) shapes.push_back(*m);
-        }
-        if (!a || a->empty()) r.problem(*n, "'data_markers' must be a list of square, triangle, diamond or dot");
-        if (a && !a->empty() && shapes.size() == a->size()) t.data_markers = std::move(shapes);
+    if (auto shapes = read_list<plot::marker_style>(
+            r, doc, "data_markers", "'data_markers' must be a list of square, triangle, diamond or dot",
+            [&](const toml::node& e) { return r.choice_of(e, "data_markers", data_marker_names); })) {
+        t.data_markers = std::move(*shapes);
     }
 }
 
-/// Applies the keys of one style file (or --set line) to `t`.
-void apply(reader& r, const toml::table& doc, plot::theme& t) {
-    r.check_keys(doc, all_keys(), "a style file");
+/// font_family and size_px.
+void read_font_and_size(reader& r, const toml::table& doc, plot::theme& t) {
     if (auto v = r.string(doc, "font_family")) {
         if (v->empty()) {
             r.problem(*doc.get("font_family"), "'font_family' must name a font");
@@ -170,10 +177,13 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
             t.height_px = std::get<0>(size).second;
         }
     }
+}
+
+/// The number keys; a whole figure's size is 0 (sized by its panels) or as large as a panel
+/// at least: a smaller one would be a raster of no pixels.
+void read_numbers(reader& r, const toml::table& doc, plot::theme& t) {
     for (const auto& k : number_keys) {
         auto v = r.number(doc, k.name, k.lo, k.hi);
-        // A whole figure's size is 0 (sized by its panels) or as large as a panel at least:
-        // a smaller one would be a raster of no pixels.
         const bool whole = k.field == &plot::theme::fixed_width_cm || k.field == &plot::theme::fixed_height_cm;
         if (v && whole && *v > 0 && *v < min_figure_cm) {
             r.problem(*doc.get(k.name), "'" + std::string(k.name) + "' = " + pendulum::format_double(*v) +
@@ -184,6 +194,50 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
         }
         if (v) t.*k.field = *v;
     }
+}
+
+/// palette = ["#rrggbb", ...]: all of them, or the theme's where one is bad.
+void read_palette(reader& r, const toml::table& doc, plot::theme& t) {
+    const toml::node* n = doc.get("palette");
+    if (!n) return;
+    const auto* a = n->as_array();
+    if (!a || a->empty()) {
+        r.problem(*n, "'palette' must be a list of colours \"#rrggbb\"");
+        return;
+    }
+    std::vector<plot::rgb> palette;
+    for (const auto& e : *a) {
+        if (auto c = color(r, e, "palette")) palette.push_back(*c);
+    }
+    if (palette.size() == a->size()) t.palette = std::move(palette);
+}
+
+/// [styles]: NAME = { line = ..., marker = ... }.
+void read_named_styles(reader& r, const toml::table& doc, plot::theme& t) {
+    const toml::node* n = doc.get("styles");
+    if (!n) return;
+    const auto* styles = n->as_table();
+    if (!styles) {
+        r.problem(*n, "'styles' must be a table: [styles] with NAME = { line = ..., marker = ... }");
+        return;
+    }
+    for (const auto& [key, value] : *styles) {
+        const auto* st = value.as_table();
+        if (!st) {
+            r.problem(value, "a style is a table, e.g. exact = { line = \"none\", marker = \"circle\" }");
+            continue;
+        }
+        r.check_keys(*st, {"line", "marker"}, "a style");
+        plot::named_style& s = t.styles[std::string(key.str())];
+        if (auto v = r.choice(*st, "line", line_styles)) s.line = *v;
+        if (auto v = r.choice(*st, "marker", markers)) s.marker = *v;
+    }
+}
+
+void apply(reader& r, const toml::table& doc, plot::theme& t) {
+    r.check_keys(doc, all_keys(), "a style file");
+    read_font_and_size(r, doc, t);
+    read_numbers(r, doc, t);
     for (const auto& k : color_keys) {
         if (const toml::node* n = doc.get(k.name)) {
             if (auto c = color(r, *n, k.name)) t.*k.field = *c;
@@ -194,37 +248,9 @@ void apply(reader& r, const toml::table& doc, plot::theme& t) {
     }
     if (auto v = r.choice(doc, "svg_text", svg_text_modes)) t.svg_text = *v;
     if (auto v = r.choice(doc, "svg_size", svg_size_units)) t.svg_size = *v;
-    if (const toml::node* n = doc.get("palette")) {
-        const auto* a = n->as_array();
-        if (!a || a->empty()) {
-            r.problem(*n, "'palette' must be a list of colours \"#rrggbb\"");
-        } else {
-            std::vector<plot::rgb> palette;
-            for (const auto& e : *a) {
-                if (auto c = color(r, e, "palette")) palette.push_back(*c);
-            }
-            if (palette.size() == a->size()) t.palette = std::move(palette);
-        }
-    }
+    read_palette(r, doc, t);
     read_data_style(r, doc, t);
-    if (const toml::node* n = doc.get("styles")) {
-        const auto* styles = n->as_table();
-        if (!styles) {
-            r.problem(*n, "'styles' must be a table: [styles] with NAME = { line = ..., marker = ... }");
-            return;
-        }
-        for (const auto& [key, value] : *styles) {
-            const auto* st = value.as_table();
-            if (!st) {
-                r.problem(value, "a style is a table, e.g. exact = { line = \"none\", marker = \"circle\" }");
-                continue;
-            }
-            r.check_keys(*st, {"line", "marker"}, "a style");
-            plot::named_style& s = t.styles[std::string(key.str())];
-            if (auto v = r.choice(*st, "line", line_styles)) s.line = *v;
-            if (auto v = r.choice(*st, "marker", markers)) s.marker = *v;
-        }
-    }
+    read_named_styles(r, doc, t);
 }
 
 std::string read_file(const std::string& path) { return read_input_file(path, "style file"); }

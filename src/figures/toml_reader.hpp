@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -78,8 +79,10 @@ public:
     void problem(const source_position& where, std::string what) { problems_.push_back({where, std::move(what)}); }
 
     /// Reports keys of `table` outside `allowed`, with a suggestion; `context` names the table.
+    /// `elsewhere` gives the whole message for a key that belongs to other tables of the sort
+    /// (empty for a key unknown to all of them).
     void check_keys(const toml::table& table, const std::vector<std::string>& allowed, const std::string& context,
-                    const std::vector<std::string>& elsewhere = {}, const std::string& elsewhere_why = {}) {
+                    const std::function<std::string(const std::string&)>& elsewhere = {}) {
         for (const auto& [key, value] : table) {
             const std::string name(key.str());
             if (contains(allowed, name)) continue;
@@ -91,8 +94,8 @@ public:
             const std::string shown =
                 name.size() <= 80 ? name : name.substr(0, boundary(40)) + "..." + name.substr(boundary(name.size() - 20));
             std::string what = "unknown key '" + shown + "' in " + context;
-            if (contains(elsewhere, name)) {
-                what = "key '" + name + "' " + elsewhere_why;
+            if (std::string why = elsewhere ? elsewhere(name) : std::string(); !why.empty()) {
+                what = std::move(why);
             } else if (const auto guess = suggest(name, allowed); !guess.empty()) {
                 what += "; did you mean " + guess + "?";
             } else {

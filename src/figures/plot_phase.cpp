@@ -159,14 +159,15 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
         }
     }
     if (p.separatrix) {
-        // A wide grey band under the orbits: seen even where an orbit runs along it.
+        // A thin mid-grey line over the orbits, thinner than any of them: seen even where
+        // an orbit (0.99 pi) runs along it, and told from them in greyscale by its width.
         const auto theta = grid(-pi, pi, 400);
         for (double sign : {1.0, -1.0}) {
             plot::series s;
             if (sign > 0) s.label = "separatrix";
             s.line = line_style::solid;
-            s.rgb_color = plot::rgb{0.62, 0.62, 0.62};
-            s.width_scale = 3.5;
+            s.rgb_color = plot::rgb{0.5, 0.5, 0.5};
+            s.width_scale = 0.6;
             s.curve = plot::function_curve(-pi * angle, pi * angle, [sign, angle](double x) {
                 return sign * pendulum::separatrix_velocity(x / angle);
             });
@@ -174,7 +175,7 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
                 s.x.push_back(angle * t);
                 s.y.push_back(s.curve->at(angle * t).second);
             }
-            panel.data.insert(panel.data.begin() + (sign > 0 ? 0 : 1), std::move(s));
+            panel.data.push_back(std::move(s));
         }
     }
     add_angle_number_data(panel, p);

@@ -5,6 +5,7 @@
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
 #include "plot/frames.hpp"
+#include "plot/render.hpp"
 #include "plot/workers.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <deque>
 #include <exception>
 #include <memory>
+#include <iostream>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
@@ -120,19 +122,25 @@ void write_figures(const std::vector<figure_file>& files, const build_options& o
             lock.unlock();
             std::shared_ptr<const plot::figure> figure;
             std::exception_ptr error;
+            std::string warnings;  // what the layout left out, said once the lock is held
             try {
                 if (t.file == build_it) {
                     figure = std::make_shared<const plot::figure>(build(*distinct[t.figure], sized_by(options, theme)));
                 } else {
                     const figure_file& f = files[t.file];
                     const plot::figure& whole = *built[t.figure];
+                    const plot::layout_notes notes;
                     plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, whole.panel_width_cm), theme,
                                f.path, output);
+                    for (const auto& line : notes.lines()) {
+                        warnings += "pendulum-figures: warning: " + f.path.filename().string() + ": " + line + "\n";
+                    }
                 }
             } catch (...) {
                 error = std::current_exception();
             }
             lock.lock();
+            std::cerr << warnings;
             --busy;
             if (error && !first_error) first_error = error;
             if (figure) {

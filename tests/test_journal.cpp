@@ -87,6 +87,8 @@ TEST(JournalText, ThePaperThemeSaysItsMinimum) {
 // no text below 8 pt, no superscript or subscript below 6 pt, read from the PDFs' operators.
 TEST(JournalText, EveryPaperPdfKeepsToEightPoints) {
     const fs::path dir = temp_dir("journal-sizes");
+    fs::create_directories(dir / "all");
+    fs::create_directories(dir / "paper");
     const run_result all = run_cli("render --all -f pdf --theme paper -o '" + (dir / "all").string() + "'");
     ASSERT_EQ(all.status, 0) << all.err;
     const run_result paper =
@@ -151,7 +153,7 @@ TEST(JournalText, SmallTextRefusedWithExit2) {
     EXPECT_EQ(set.status, 2);
     EXPECT_NE(set.err.find("legend_font_pt = 7 is below the theme's min_text_pt = 8"), std::string::npos) << set.err;
     std::ofstream(dir / "small.toml") << "base = \"paper\"\ntick_font_pt = 7.5\n";
-    const run_result file = run_cli("render fig1 -f pdf --theme small.toml -o out", dir);
+    const run_result file = run_cli("render fig1 -f pdf --theme small.toml -o .", dir);
     EXPECT_EQ(file.status, 2);
     EXPECT_NE(file.err.find("style file small.toml"), std::string::npos) << file.err;
     EXPECT_NE(file.err.find("tick_font_pt = 7.5 is below the theme's min_text_pt = 8"), std::string::npos) << file.err;
@@ -210,6 +212,7 @@ TEST(JournalRoutes, PdfAndOverlaysAt10To12ShowTheSame) {
     for (const char* set : {"", "--paper-files"}) {
         for (const auto& [name, options] : routes) {
             const fs::path out = dir / (std::string(set).empty() ? "all" : "paper") / name;
+            fs::create_directories(out);
             const run_result r =
                 run_cli("render --all -f pdf_tex " + std::string(set) + " " + options + " -o '" + out.string() + "'");
             ASSERT_EQ(r.status, 0) << name << " " << set << ": " << r.err;
@@ -246,6 +249,7 @@ TEST(JournalRoutes, Fig2PaperFilesKeepTheirLegendAt12) {
     const fs::path dir = temp_dir("journal-fig2");
     for (const char* options : {"--tex-sizes absolute", "--tex-font-size 12"}) {
         const fs::path out = dir / (std::string(options).find("12") != std::string::npos ? "tex12" : "pdf");
+        fs::create_directories(out);
         const run_result r = run_cli("render fig2 --paper-files -f pdf_tex " + std::string(options) + " -o '" +
                                      out.string() + "'");
         ASSERT_EQ(r.status, 0) << r.err;

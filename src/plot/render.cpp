@@ -38,10 +38,10 @@ std::string escape_markup(const std::string& text) {
 
 namespace {
 
-/// A size in points as a message shows it: at most two decimals.
+/// A size in points as a message shows it: at most three decimals.
 std::string shown_pt(double pt) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2f", pt);
+    std::snprintf(buf, sizeof buf, "%.3f", pt);
     std::string s = buf;
     while (s.back() == '0') s.pop_back();
     if (s.back() == '.') s.pop_back();

@@ -213,8 +213,8 @@ bool spaces_markers(const series& s) {
 }
 
 /// The series as drawn: markers centred at least 1.5 diameters apart (spaced_markers); one
-/// whose markers would crowd is drawn as a line through all its points (its curve where it
-/// has one) with the markers that stand apart. `crowded` says which series that is.
+/// whose markers would crowd is drawn as a thin line through all its points, with the
+/// markers that stand apart. `crowded` says which series that is.
 struct spaced_series {
     std::vector<device_series> markers;  // per series: the markers drawn
     std::vector<bool> crowded;           // per series: drawn as a line too
@@ -241,14 +241,11 @@ spaced_series space_markers(const theme& th, const panel& p, const panel_geometr
     return out;
 }
 
-/// The line through a crowded series: its curve sampled within `tolerance`, or its points.
+/// The line through a crowded series: through its points (the markers stand on it).
 void stroke_crowded(cairo_t* cr, const theme& th, const series& s, const panel_geometry& g, std::size_t k,
-                    const rect& clip, double tolerance) {
+                    const rect& clip) {
     device_series line = g.dev[k];
-    if (s.curve) {
-        line.sampled = true;
-        sample_curve(*s.curve, g.mx, g.my, clip, tolerance, line.lx, line.ly);
-    }
+    line.sampled = false;
     set_color(cr, th, s);
     set_line_style(cr, th, line_style::solid, 0.6 * s.width_scale);
     stroke_polyline(cr, line, clip);
@@ -257,7 +254,7 @@ void stroke_crowded(cairo_t* cr, const theme& th, const series& s, const panel_g
 /// The panel's lines and error bars clipped to the axes, and its markers whole
 /// (matplotlib's clip_on=False), those whose centre is inside, spaced (space_markers).
 void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geometry& g, const spaced_series& spaced,
-                 const pass_gate& gate, double tolerance) {
+                 const pass_gate& gate) {
     const rect& area = g.area;
     const double reach = th.line_width_pt;
     cairo_save(cr);
@@ -268,7 +265,7 @@ void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geome
         const auto& s = p.data[k];
         if (!gate.draws(s.overlay)) continue;
         if (s.line == line_style::none) {
-            if (spaced.crowded[k]) stroke_crowded(cr, th, s, g, k, clip, tolerance);
+            if (spaced.crowded[k]) stroke_crowded(cr, th, s, g, k, clip);
             continue;
         }
         set_color(cr, th, s);
@@ -366,7 +363,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     const placed_panel placed = place_with_legend(th, p, plan, cell, spot, band, tolerance);
     const rect& area = placed.g.area;
     const spaced_series spaced = space_markers(th, p, placed.g);
-    draw_series(cr, th, p, placed.g, spaced, gate, tolerance);
+    draw_series(cr, th, p, placed.g, spaced, gate);
     if (!p.overlay_label.empty() && gate.draws(true)) {
         set_foreground(cr, th);
         // Inside the top left corner, which a drawing of the pendulum and a phase portrait leave free.
@@ -567,7 +564,8 @@ struct figure_layout {
 /// Where each panel's own legend goes: inside the axes where the legend at the deciding
 /// sizes finds room, else in a band above them (an automatic legend) or none, and said.
 /// A band is a row of its own above the cell; every cell of its row moves down by the
-/// row's highest band, so that the row's axes stay level.
+/// row's highest band, so that the row's axes stay level, and the files of a set (peers)
+/// by the highest band of any of them.
 struct own_legends {
     std::vector<legend_spot> spots;
     std::vector<std::optional<rect>> bands;
@@ -595,6 +593,19 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
                                number_text("%.4g", f.deciding.legend_font_pt) +
                                " pt legend text, and legend = \"inside\" allows no band above them");
         }
+    }
+    // The files of a set (peers, one panel each) leave the room of the highest band of any
+    // of them, so that their frames stay in line.
+    const rect cell = f.cells.empty() ? rect{} : f.cells.front();
+    for (std::size_t i = n; i < f.planned.size() && n > 0; ++i) {
+        const panel_plan& d = f.decided[i];
+        const auto g = place_panel(f.planned[i], d, panel_area(f.planned[i], d, cell), curve_tolerance(cr),
+                                   f.deciding.line_width_pt);
+        if (d.legend.entries.empty() || f.planned[i].legend != legend_place::automatic ||
+            legend_inside(f.planned[i], d.legend, g, f.deciding)) {
+            continue;
+        }
+        row_band[0] = std::max(row_band[0], legend_band_height(f.plans[i].legend, th, cell.w - 2 * pad));
     }
     bool moved = false;
     for (std::size_t i = 0; i < n; ++i) {

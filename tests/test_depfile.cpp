@@ -181,7 +181,7 @@ TEST(DepfileHostile, EveryByteOfASpecNameIsRefusedOrNamesTheFiles) {
 TEST(DepfileHostile, AHostileStyleNameIsRefusedBeforeAnyWork) {
     const auto dir = temp_dir("dep-style-name");
     const std::string style = "X=1;touch${IFS}PWNED4;.toml";
-    write(dir / style, "tick_font_pt = 8\n");
+    write(dir / style, "tick_font_pt = 9\n");
     write(dir / "X=1", "");
     write(dir / "f.toml", "[figure]\nstyle = \"" + style + "\"\n" + small_spec);
     fs::create_directory(dir / "out");

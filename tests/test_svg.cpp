@@ -103,8 +103,9 @@ TEST(SvgText, LabelsAreTextElementsWithTheirScripts) {
         "<tspan dy=\"([0-9.]+)\" font-size=\"([0-9.]+)\">0</tspan></text>");
     std::smatch m;
     ASSERT_TRUE(std::regex_search(svg, m, t_over_t0)) << svg;
-    EXPECT_NEAR(std::stod(m[1]), 0.15 * 8.5, 0.01);
-    EXPECT_NEAR(std::stod(m[2]), 0.7 * 8.5, 0.01);
+    EXPECT_EQ(paths.label_font_pt, 9);  // the paper theme's labels
+    EXPECT_NEAR(std::stod(m[1]), 0.15 * 9, 0.01);
+    EXPECT_NEAR(std::stod(m[2]), 0.7 * 9, 0.01);
     // The y axis label reads upwards about its anchor.
     EXPECT_NE(svg.find("transform=\"rotate(-90 "), std::string::npos);
     // Tick labels centred under their ticks.

@@ -58,13 +58,13 @@ TEST(Themes, BuiltInThemes) {
 
 TEST(Themes, AUsersStyleFileAndSets) {
     const auto path = write_file("journal.toml", "# 9 pt type in an 8.6 cm column\nbase = \"paper\"\n"
-                                                 "tick_font_pt = 8\nlabel_font_pt = 9\npanel_width_cm = 8.6\n"
+                                                 "tick_font_pt = 9\nlabel_font_pt = 9\npanel_width_cm = 8.6\n"
                                                  "[styles]\nlowest = { line = \"dashed\" }\n");
-    const auto t = load_theme(path.string(), {"legend_font_pt=7.5", "font_family=DejaVu Serif", "palette=[\"#112233\"]"});
+    const auto t = load_theme(path.string(), {"legend_font_pt=9.5", "font_family=DejaVu Serif", "palette=[\"#112233\"]"});
     EXPECT_EQ(t.name, "pendulum-theme-" + std::to_string(::getpid()) + "-journal");
-    EXPECT_EQ(t.tick_font_pt, 8);
+    EXPECT_EQ(t.tick_font_pt, 9);
     EXPECT_EQ(t.panel_width_cm, 8.6);
-    EXPECT_EQ(t.legend_font_pt, 7.5);
+    EXPECT_EQ(t.legend_font_pt, 9.5);
     EXPECT_EQ(t.font_family, "DejaVu Serif");
     EXPECT_DOUBLE_EQ(t.palette[0].r, 0x11 / 255.0);
     EXPECT_EQ(t.styles.at("lowest").line, plot::line_style::dashed);

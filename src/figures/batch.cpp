@@ -5,6 +5,7 @@
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
 #include "plot/frames.hpp"
+#include "plot/render.hpp"
 #include "plot/workers.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <deque>
 #include <exception>
 #include <memory>
+#include <iostream>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
@@ -123,12 +125,14 @@ public:
             lock.unlock();
             std::shared_ptr<const plot::figure> figure;
             std::exception_ptr error;
+            std::string warnings;  // what the layout left out, said once the lock is held
             try {
-                figure = run(t);
+                figure = run(t, warnings);
             } catch (...) {
                 error = std::current_exception();
             }
             lock.lock();
+            std::cerr << warnings;
             done(t, figure, error);
         }
     }
@@ -141,14 +145,19 @@ public:
 private:
     static constexpr std::size_t build_it = static_cast<std::size_t>(-1);
 
-    /// Builds the task's figure (returned), or writes its file (null returned).
-    std::shared_ptr<const plot::figure> run(const task& t) const {
+    /// Builds the task's figure (returned), or writes its file (null returned), with a
+    /// warning line in `warnings` for each thing the layout left out of it.
+    std::shared_ptr<const plot::figure> run(const task& t, std::string& warnings) const {
         if (t.file == build_it) {
             return std::make_shared<const plot::figure>(build(*distinct_[t.figure], sized_by(options_, theme_)));
         }
         const figure_file& f = files_[t.file];
         const plot::figure& whole = *built_[t.figure];
+        const plot::layout_notes notes;
         plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, whole.panel_width_cm), theme_, f.path, output_);
+        for (const auto& line : notes.lines()) {
+            warnings += "pendulum-figures: warning: " + f.path.filename().string() + ": " + line + "\n";
+        }
         return nullptr;
     }
 

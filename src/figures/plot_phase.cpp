@@ -177,15 +177,16 @@ void add_amplitude_orbits(plot::panel& panel, const panel_spec& p, double angle)
     }
 }
 
-/// The separatrix: a wide grey band under the orbits, seen even where an orbit runs along it.
+/// The separatrix: a thin mid-grey line over the orbits, thinner than any of them: seen even
+/// where an orbit (0.99 pi) runs along it, and told from them in greyscale by its width.
 void add_separatrix(plot::panel& panel, double angle) {
     const auto theta = grid(-pi, pi, 400);
     for (double sign : {1.0, -1.0}) {
         plot::series s;
         if (sign > 0) s.label = "separatrix";
         s.line = line_style::solid;
-        s.rgb_color = plot::rgb{0.62, 0.62, 0.62};
-        s.width_scale = 3.5;
+        s.rgb_color = plot::rgb{0.5, 0.5, 0.5};
+        s.width_scale = 0.6;
         s.curve = plot::function_curve(-pi * angle, pi * angle, [sign, angle](double x) {
             return sign * pendulum::separatrix_velocity(x / angle);
         });
@@ -193,7 +194,7 @@ void add_separatrix(plot::panel& panel, double angle) {
             s.x.push_back(angle * t);
             s.y.push_back(s.curve->at(angle * t).second);
         }
-        panel.data.insert(panel.data.begin() + (sign > 0 ? 0 : 1), std::move(s));
+        panel.data.push_back(std::move(s));
     }
 }
 

@@ -3,6 +3,7 @@
 
 #include "figures/input_file.hpp"
 #include "figures/toml_reader.hpp"
+#include "plot/render.hpp"
 
 #include <algorithm>
 #include <array>
@@ -40,6 +41,9 @@ constexpr number_key number_keys[] = {
     {"label_font_pt", &plot::theme::label_font_pt, 1, 200},
     {"legend_font_pt", &plot::theme::legend_font_pt, 1, 200},
     {"title_font_pt", &plot::theme::title_font_pt, 0, 200},
+    {"min_text_pt", &plot::theme::min_text_pt, 0, 50},
+    {"min_script_pt", &plot::theme::min_script_pt, 0, 50},
+    {"tex_agree_pt", &plot::theme::tex_agree_pt, 0, 30},
     {"line_width_pt", &plot::theme::line_width_pt, 0.05, 50},
     {"frame_width_pt", &plot::theme::frame_width_pt, 0.05, 50},
     {"marker_radius_pt", &plot::theme::marker_radius_pt, 0.1, 50},
@@ -412,6 +416,9 @@ plot::theme load_theme(std::string_view name_or_file, const std::vector<std::str
         t.given.insert(key);
     }
     check_font(t.font_family, font_from);
+    if (const std::string why = plot::text_size_problem(t); !why.empty()) {
+        throw_option_problem((name_or_file.ends_with(".toml") ? "style file " : "theme ") + std::string(name_or_file), why);
+    }
     if (t.width_px > 0) {
         // A size in pixels is a size in points at the theme's resolution: the layout follows
         // from it like any other size, and the raster has exactly those pixels.

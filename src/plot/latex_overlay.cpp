@@ -4,6 +4,7 @@
 #include "plot/errors.hpp"
 #include "plot/tex_markup.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -65,13 +66,42 @@ std::string fixed(double v) {
 
 }  // namespace
 
+namespace {
+
+/// The theme's text sizes as a LaTeX document of document_pt sets them: the nearest size
+/// command, or a larger one where the document sets that below the theme's least text size
+/// (\scriptsize is 7 pt in a 10 pt document).
+text_sizes in_document(const theme& th, double document_pt) {
+    const size_list sizes = document_sizes(document_pt);
+    const auto sized = [&](double pt) {
+        std::size_t i = nearest_size(pt, size10);
+        while (i + 1 < sizes.size() && sizes[i] < th.min_text_pt) ++i;
+        return sizes[i];
+    };
+    return {sized(th.tick_font_pt), sized(th.label_font_pt), sized(th.legend_font_pt)};
+}
+
+text_sizes larger(const text_sizes& a, const text_sizes& b) {
+    return {std::max(a.tick_pt, b.tick_pt), std::max(a.label_pt, b.label_pt), std::max(a.legend_pt, b.legend_pt)};
+}
+
+}  // namespace
+
+text_sizes decided_sizes(const theme& th) {
+    const text_sizes own{th.tick_font_pt, th.label_font_pt, th.legend_font_pt};
+    if (th.decided_at) return larger(*th.decided_at, own);
+    if (!(th.tex_agree_pt > 0)) return own;
+    return larger(own, in_document(th, th.tex_agree_pt));
+}
+
 theme latex_sized_theme(const theme& th, const output_options& options) {
     theme sized = th;
+    sized.decided_at = decided_sizes(th);
     if (options.tex_sizes == tex_sizing::absolute) return sized;
-    const size_list in_document = document_sizes(options.tex_font_pt);
-    for (double* pt : {&sized.tick_font_pt, &sized.label_font_pt, &sized.legend_font_pt}) {
-        *pt = in_document[nearest_size(*pt, size10)];
-    }
+    const text_sizes at = in_document(th, options.tex_font_pt);
+    sized.tick_font_pt = at.tick_pt;
+    sized.label_font_pt = at.label_pt;
+    sized.legend_font_pt = at.legend_pt;
     return sized;
 }
 

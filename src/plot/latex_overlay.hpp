@@ -19,6 +19,13 @@ namespace plot {
 /// metrics, makes room for the text the document sets. Absolute sizes keep the theme's.
 theme latex_sized_theme(const theme& th, const output_options& options);
 
+/// The text sizes the layout decides a figure's contents at (which tick labels stay,
+/// where the legend goes, whether there is room for one): the largest of the theme's own and
+/// those its LaTeX overlay sets in a document of tex_agree_pt (relative sizes), so that the
+/// PDF and the overlays up to that size keep the same; a theme made by latex_sized_theme
+/// decides at those of the theme it was made from, or its own where they are larger.
+text_sizes decided_sizes(const theme& th);
+
 /// What sets text of size_pt (a size of the sized theme): the LaTeX size command of that size
 /// in the document, or \fontsize for absolute sizes.
 std::string latex_size_command(double size_pt, const output_options& options);

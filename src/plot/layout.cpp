@@ -30,7 +30,11 @@ void for_each_reach(const series& s, bool horizontal, F f) {
 
 }  // namespace
 
-tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizontal) {
+namespace {
+
+/// The extremes of the data that set an axis's limits (error bars too), or the default
+/// range where there are none.
+std::pair<double, double> data_range(const axis& a, const std::vector<series>& data, bool horizontal) {
     double lo = std::numeric_limits<double>::infinity();
     double hi = -lo;
     for (const auto& s : data) {
@@ -41,10 +45,22 @@ tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizon
             hi = std::max(hi, d);
         });
     }
-    if (!std::isfinite(lo) || !std::isfinite(hi)) {
-        lo = a.kind == scale::log ? 0.1 : 0.0;
-        hi = 1.0;
-    }
+    if (!std::isfinite(lo) || !std::isfinite(hi)) return {a.kind == scale::log ? 0.1 : 0.0, 1.0};
+    return {lo, hi};
+}
+
+/// The axis's locator on [lo, hi].
+tick_set locate(const axis& a, double lo, double hi, bool expand) {
+    if (a.kind == scale::log) return log_ticks(lo, hi, a.max_ticks, expand);
+    if (a.ticks == tick_kind::multiples_of_pi) return pi_ticks(lo, hi, a.max_ticks, expand);
+    if (a.ticks == tick_kind::degrees) return degree_ticks(lo, hi, a.max_ticks, expand);
+    return linear_ticks(lo, hi, a.max_ticks, expand);
+}
+
+}  // namespace
+
+tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizontal) {
+    auto [lo, hi] = data_range(a, data, horizontal);
     // Data-driven limits get a margin so that no curve runs along the frame.
     // Limits rounded out to the enclosing ticks need none: a margin would push them a
     // whole tick further when the data end just short of one (an amplitude of pi - 1e-6).
@@ -55,17 +71,7 @@ tick_set axis_ticks(const axis& a, const std::vector<series>& data, bool horizon
     }
     if (a.min) lo = *a.min;
     if (a.max) hi = *a.max;
-    const bool expand = a.round_limits && !(a.min && a.max);
-    tick_set t;
-    if (a.kind == scale::log) {
-        t = log_ticks(lo, hi, a.max_ticks, expand);
-    } else if (a.ticks == tick_kind::multiples_of_pi) {
-        t = pi_ticks(lo, hi, a.max_ticks, expand);
-    } else if (a.ticks == tick_kind::degrees) {
-        t = degree_ticks(lo, hi, a.max_ticks, expand);
-    } else {
-        t = linear_ticks(lo, hi, a.max_ticks, expand);
-    }
+    tick_set t = locate(a, lo, hi, a.round_limits && !(a.min && a.max));
     // A fixed limit stays where it was asked, even if expanding moved the other one.
     if (a.min) t.lo = *a.min;
     if (a.max) t.hi = *a.max;
@@ -222,6 +228,39 @@ std::vector<extent> extents(const panel& p, const theme& th, bool horizontal, bo
 
 }  // namespace
 
+namespace {
+
+/// Moves one free axis's limits out until every extent stands clear of the frame. The
+/// length in points depends on the limits where the aspect is equal: a few rounds settle it.
+void keep_axis_off_frame(const panel& p, panel_plan& plan, const rect& cell, const std::vector<extent>& data,
+                         bool horizontal) {
+    const axis& a = horizontal ? p.x : p.y;
+    const bool log = a.kind == scale::log;
+    tick_set& t = horizontal ? plan.xt : plan.yt;
+    for (int round = 0; round < 4; ++round) {
+        const rect area = panel_area(p, plan, cell);
+        const double length = horizontal ? area.w : area.h;
+        double lo = log ? std::log10(t.lo) : t.lo;
+        double hi = log ? std::log10(t.hi) : t.hi;
+        if (!(length > 0) || !(hi > lo)) return;
+        const double per_pt = (hi - lo) / length;
+        double need_lo = lo;
+        double need_hi = hi;
+        for (const extent& e : data) {
+            need_lo = std::min(need_lo, e.lo - e.clear * per_pt);
+            need_hi = std::max(need_hi, e.hi + e.clear * per_pt);
+        }
+        const bool moved = (!a.min && need_lo < lo) || (!a.max && need_hi > hi);
+        if (!moved) return;
+        if (!a.min) lo = need_lo;
+        if (!a.max) hi = need_hi;
+        t.lo = log ? std::pow(10.0, lo) : lo;
+        t.hi = log ? std::pow(10.0, hi) : hi;
+    }
+}
+
+}  // namespace
+
 void keep_data_off_frame(const std::vector<panel>& panels, std::vector<panel_plan>& plans,
                          const std::vector<rect>& cells, const theme& th) {
     for (std::size_t i = 0; i < panels.size(); ++i) {
@@ -230,32 +269,8 @@ void keep_data_off_frame(const std::vector<panel>& panels, std::vector<panel_pla
         for (const bool horizontal : {true, false}) {
             const axis& a = horizontal ? p.x : p.y;
             if (a.min && a.max) continue;
-            const bool log = a.kind == scale::log;
-            const std::vector<extent> data = extents(p, th, horizontal, log);
-            if (data.empty()) continue;
-            // The length in points depends on the limits where the aspect is equal: a few
-            // rounds settle it.
-            for (int round = 0; round < 4; ++round) {
-                tick_set& t = horizontal ? plans[i].xt : plans[i].yt;
-                const rect area = panel_area(p, plans[i], cells[i]);
-                const double length = horizontal ? area.w : area.h;
-                double lo = log ? std::log10(t.lo) : t.lo;
-                double hi = log ? std::log10(t.hi) : t.hi;
-                if (!(length > 0) || !(hi > lo)) break;
-                const double per_pt = (hi - lo) / length;
-                double need_lo = lo;
-                double need_hi = hi;
-                for (const extent& e : data) {
-                    need_lo = std::min(need_lo, e.lo - e.clear * per_pt);
-                    need_hi = std::max(need_hi, e.hi + e.clear * per_pt);
-                }
-                const bool moved = (!a.min && need_lo < lo) || (!a.max && need_hi > hi);
-                if (!moved) break;
-                if (!a.min) lo = need_lo;
-                if (!a.max) hi = need_hi;
-                t.lo = log ? std::pow(10.0, lo) : lo;
-                t.hi = log ? std::pow(10.0, hi) : hi;
-            }
+            const std::vector<extent> data = extents(p, th, horizontal, a.kind == scale::log);
+            if (!data.empty()) keep_axis_off_frame(p, plans[i], cells[i], data, horizontal);
         }
     }
 }

@@ -7,36 +7,50 @@
 
 namespace plot {
 
+namespace {
+
+/// How many of a series' line segments and error bars touch the box.
+int segments_touching(const rect& box, const series& s, const device_series& d) {
+    int count = 0;
+    if (s.line != line_style::none) {
+        const auto& lx = d.line_x();
+        const auto& ly = d.line_y();
+        for (std::size_t i = 1; i < lx.size(); ++i) {
+            double x0 = lx[i - 1], y0 = ly[i - 1], x1 = lx[i], y1 = ly[i];
+            if (std::isnan(x0 + y0 + x1 + y1)) continue;
+            if (clip_segment(x0, y0, x1, y1, box)) ++count;
+        }
+    }
+    for (const auto& b : d.bars) {
+        double x0 = b.x0, y0 = b.y0, x1 = b.x1, y1 = b.y1;
+        if (clip_segment(x0, y0, x1, y1, box)) ++count;
+    }
+    return count;
+}
+
+/// How many of a series' markers touch the box: their centres within a radius of it.
+int markers_touching(const rect& box, const series& s, const device_series& d, double marker_radius) {
+    if (s.marker == marker_style::none) return 0;
+    const rect grown{box.x - marker_radius, box.y - marker_radius, box.w + 2 * marker_radius,
+                     box.h + 2 * marker_radius};
+    int count = 0;
+    for (std::size_t i = 0; i < d.x.size(); ++i) {
+        if (d.x[i] >= grown.x && d.x[i] <= grown.x + grown.w && d.y[i] >= grown.y && d.y[i] <= grown.y + grown.h) {
+            ++count;
+        }
+    }
+    return count;
+}
+
+}  // namespace
+
 int overlap(const rect& box, const std::vector<series>& data, const std::vector<device_series>& dev,
             double marker_radius) {
     int count = 0;
     for (std::size_t k = 0; k < data.size(); ++k) {
-        const auto& d = dev[k];
         // What moves in an animation must not move the legend from frame to frame.
         if (data[k].overlay) continue;
-        if (data[k].line != line_style::none) {
-            const auto& lx = d.line_x();
-            const auto& ly = d.line_y();
-            for (std::size_t i = 1; i < lx.size(); ++i) {
-                double x0 = lx[i - 1], y0 = ly[i - 1], x1 = lx[i], y1 = ly[i];
-                if (std::isnan(x0 + y0 + x1 + y1)) continue;
-                if (clip_segment(x0, y0, x1, y1, box)) ++count;
-            }
-        }
-        for (const auto& b : d.bars) {
-            double x0 = b.x0, y0 = b.y0, x1 = b.x1, y1 = b.y1;
-            if (clip_segment(x0, y0, x1, y1, box)) ++count;
-        }
-        if (data[k].marker != marker_style::none) {
-            const rect grown{box.x - marker_radius, box.y - marker_radius, box.w + 2 * marker_radius,
-                             box.h + 2 * marker_radius};
-            for (std::size_t i = 0; i < d.x.size(); ++i) {
-                if (d.x[i] >= grown.x && d.x[i] <= grown.x + grown.w && d.y[i] >= grown.y &&
-                    d.y[i] <= grown.y + grown.h) {
-                    ++count;
-                }
-            }
-        }
+        count += segments_touching(box, data[k], dev[k]) + markers_touching(box, data[k], dev[k], marker_radius);
     }
     return count;
 }

@@ -3,6 +3,7 @@
 
 #include "plot/geometry.hpp"
 #include "plot/handles.hpp"
+#include "plot/latex_overlay.hpp"
 #include "plot/layout.hpp"
 #include "plot/legend.hpp"
 #include "plot/strokes.hpp"
@@ -15,6 +16,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace plot {
 
@@ -31,6 +34,46 @@ std::string escape_markup(const std::string& text) {
         }
     }
     return out;
+}
+
+namespace {
+
+/// A size in points as a message shows it: at most three decimals.
+std::string shown_pt(double pt) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f", pt);
+    std::string s = buf;
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s;
+}
+
+}  // namespace
+
+std::string text_size_problem(const theme& th) {
+    const double script = script_metrics{}.size;
+    const std::pair<const char*, double> sizes[] = {{"tick_font_pt", th.tick_font_pt},
+                                                    {"label_font_pt", th.label_font_pt},
+                                                    {"legend_font_pt", th.legend_font_pt},
+                                                    {"title_font_pt", th.title_font_pt}};
+    for (const auto& [key, pt] : sizes) {
+        if (pt == 0 && std::string_view(key) == "title_font_pt") continue;  // no title
+        const std::string is = std::string(key) + " = " + shown_pt(pt);
+        if (pt < th.min_text_pt) {
+            return is + " is below the theme's min_text_pt = " + shown_pt(th.min_text_pt) +
+                   " (the smallest text at final size): raise " + key + " to " + shown_pt(th.min_text_pt) +
+                   " or more, or lower min_text_pt";
+        }
+        if (script * pt < th.min_script_pt) {
+            // The least size whose scripts reach the minimum, rounded up to the shown digits.
+            const double least = std::ceil(th.min_script_pt / script * 100 - 1e-9) / 100;
+            return is + " sets superscripts and subscripts at " + shown_pt(script * pt) +
+                   " pt, below the theme's min_script_pt = " + shown_pt(th.min_script_pt) + ": raise " + key +
+                   " to " + shown_pt(least) + " or more (scripts are " + shown_pt(script) +
+                   " of the text), or lower min_script_pt";
+        }
+    }
+    return {};
 }
 
 page_size figure_size(const figure& fig, const theme& th) {
@@ -108,83 +151,160 @@ struct pass_gate {
     }
 };
 
-/// Draws one panel; with show_legend, its legend goes inside the axes where it covers no
-/// data, otherwise in a row of its own above them.
-void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
-                const rect& cell, bool show_legend, pass_gate& gate) {
-    // Which series this pass draws.
-    const auto drawn = [&gate](const series& s) { return gate.draws(s.overlay); };
-    const double pad = th.padding_pt;
-    const double tolerance = curve_tolerance(cr);
-    // Curves are followed closely where their lines show: within a line width of the axes.
-    const double reach = th.line_width_pt;
-    panel_geometry g = place_panel(p, plan, panel_area(p, plan, cell), tolerance, reach);
-    const legend_layout& lg = plan.legend;
+/// Where a panel's legend goes, as decided at the sizes the contents are decided at.
+enum class legend_spot {
+    none,    ///< no legend
+    inside,  ///< inside the axes where it covers no data (a band above them if none is free)
+    band,    ///< in a row of its own above the axes
+};
+
+/// The panel's geometry and its legend's place: inside the axes, or in `band` (a row of
+/// its own above the cell, which the layout made room for). legend_spot::inside falls back
+/// to a band at the top of the cell, moving the axes down, where the legend is automatic
+/// and no spot inside is free.
+struct placed_panel {
+    panel_geometry g;
     std::optional<rect> legend_box;
     std::optional<rect> legend_band;
-    if (show_legend && !lg.entries.empty()) {
-        legend_box = legend_inside(p, lg, g, th);
-        if (!legend_box && p.legend == legend_place::automatic) {
-            // A band at the top of the cell, above the panel label.
-            const double band = legend_band_height(lg, th, cell.w - 2 * pad);
-            rect area = g.area;
-            area.y += band;
-            area.h -= band;
-            g = place_panel(p, plan, area, tolerance, reach);
-            legend_band = rect{cell.x + pad, cell.y + 0.3 * pad, cell.w - 2 * pad, band};
+};
+
+placed_panel place_with_legend(const theme& th, const panel& p, const panel_plan& plan, const rect& cell,
+                               legend_spot spot, const std::optional<rect>& band, double tolerance) {
+    const double pad = th.padding_pt;
+    // Curves are followed closely where their lines show: within a line width of the axes.
+    const double reach = th.line_width_pt;
+    placed_panel out{place_panel(p, plan, panel_area(p, plan, cell), tolerance, reach), std::nullopt, std::nullopt};
+    const legend_layout& lg = plan.legend;
+    if (spot == legend_spot::none || lg.entries.empty()) return out;
+    if (spot == legend_spot::band) {
+        out.legend_band = band;
+        return out;
+    }
+    out.legend_box = legend_inside(p, lg, out.g, th);
+    if (out.legend_box || p.legend != legend_place::automatic) return out;
+    const double h = legend_band_height(lg, th, cell.w - 2 * pad);
+    rect area = out.g.area;
+    area.y += h;
+    area.h -= h;
+    out.g = place_panel(p, plan, area, tolerance, reach);
+    out.legend_band = rect{cell.x + pad, cell.y + 0.3 * pad, cell.w - 2 * pad, h};
+    return out;
+}
+
+/// The markers of a series (indices into d) that stand at least `spacing` apart on the
+/// page from every marker kept before them, the first kept: a series sampled finely where
+/// it moves slowly (a plateau) or drawn small keeps a marker every `spacing`.
+std::vector<std::size_t> spaced_markers(const device_series& d, double spacing) {
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < d.x.size() && i < d.y.size(); ++i) {
+        if (!std::isfinite(d.x[i]) || !std::isfinite(d.y[i])) continue;
+        const bool apart = std::all_of(kept.begin(), kept.end(), [&](std::size_t j) {
+            return std::hypot(d.x[i] - d.x[j], d.y[i] - d.y[j]) >= spacing;
+        });
+        if (apart) kept.push_back(i);
+    }
+    return kept;
+}
+
+/// Whether a series' markers are spaced on the page (a method's circles; not measured data,
+/// whose every point is a measurement, nor what moves in an animation).
+bool spaces_markers(const series& s) {
+    return s.marker != marker_style::none && s.data_slot < 0 && !s.overlay;
+}
+
+/// The series as drawn: markers centred at least 1.5 diameters apart (spaced_markers); one
+/// whose markers would crowd is drawn as a thin line through all its points, with the
+/// markers that stand apart. `crowded` says which series that is.
+struct spaced_series {
+    std::vector<device_series> markers;  // per series: the markers drawn
+    std::vector<bool> crowded;           // per series: drawn as a line too
+};
+
+spaced_series space_markers(const theme& th, const panel& p, const panel_geometry& g) {
+    spaced_series out{g.dev, std::vector<bool>(p.data.size(), false)};
+    for (std::size_t k = 0; k < p.data.size(); ++k) {
+        if (!spaces_markers(p.data[k])) continue;
+        const double diameter = 2 * th.marker_radius_pt * p.data[k].marker_scale;
+        const std::vector<std::size_t> kept = spaced_markers(g.dev[k], 1.5 * diameter);
+        std::size_t finite = 0;
+        for (std::size_t i = 0; i < g.dev[k].x.size(); ++i) finite += std::isfinite(g.dev[k].x[i] + g.dev[k].y[i]);
+        if (kept.size() == finite) continue;
+        out.crowded[k] = true;
+        device_series& d = out.markers[k];
+        d.x.clear();
+        d.y.clear();
+        for (std::size_t i : kept) {
+            d.x.push_back(g.dev[k].x[i]);
+            d.y.push_back(g.dev[k].y[i]);
         }
     }
-    const rect& area = g.area;
-    const axis_map& mx = g.mx;
-    const axis_map& my = g.my;
-    const auto& dev = g.dev;
+    return out;
+}
 
-    // Curves clipped to the axes; markers whole (matplotlib's clip_on=False), those whose
-    // centre is inside.
+/// The line through a crowded series: through its points (the markers stand on it).
+void stroke_crowded(cairo_t* cr, const theme& th, const series& s, const panel_geometry& g, std::size_t k,
+                    const rect& clip) {
+    device_series line = g.dev[k];
+    line.sampled = false;
+    set_color(cr, th, s);
+    set_line_style(cr, th, line_style::solid, 0.6 * s.width_scale);
+    stroke_polyline(cr, line, clip);
+}
+
+/// The panel's lines and error bars clipped to the axes, and its markers whole
+/// (matplotlib's clip_on=False), those whose centre is inside, spaced (space_markers).
+void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geometry& g, const spaced_series& spaced,
+                 const pass_gate& gate) {
+    const rect& area = g.area;
+    const double reach = th.line_width_pt;
     cairo_save(cr);
     cairo_rectangle(cr, area.x, area.y, area.w, area.h);
     cairo_clip(cr);
     const rect clip{area.x - reach, area.y - reach, area.w + 2 * reach, area.h + 2 * reach};
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         const auto& s = p.data[k];
-        if (s.line == line_style::none || !drawn(s)) continue;
+        if (!gate.draws(s.overlay)) continue;
+        if (s.line == line_style::none) {
+            if (spaced.crowded[k]) stroke_crowded(cr, th, s, g, k, clip);
+            continue;
+        }
         set_color(cr, th, s);
         set_line_style(cr, th, s.line, s.width_scale);
-        stroke_polyline(cr, dev[k], clip);
+        stroke_polyline(cr, g.dev[k], clip);
     }
     // Error bars over the lines and under the markers, clipped to the axes as the lines are.
     for (std::size_t k = 0; k < p.data.size(); ++k) {
-        if (dev[k].bars.empty() || !drawn(p.data[k])) continue;
+        if (g.dev[k].bars.empty() || !gate.draws(p.data[k].overlay)) continue;
         set_color(cr, th, p.data[k]);
-        draw_error_bars(cr, th, p.data[k], dev[k].bars);
+        draw_error_bars(cr, th, p.data[k], g.dev[k].bars);
     }
     cairo_restore(cr);
     // draw_markers keeps markers whose centre is within a radius of the rect it is given.
     const double inward = th.marker_radius_pt - 1e-6 * (area.w + area.h);
     const rect centres{area.x + inward, area.y + inward, area.w - 2 * inward, area.h - 2 * inward};
     for (std::size_t k = 0; k < p.data.size(); ++k) {
-        if (p.data[k].marker == marker_style::none || !drawn(p.data[k])) continue;
+        if (p.data[k].marker == marker_style::none || !gate.draws(p.data[k].overlay)) continue;
         set_color(cr, th, p.data[k]);
-        draw_markers(cr, th, p.data[k], dev[k], centres);
+        draw_markers(cr, th, p.data[k], spaced.markers[k], centres);
     }
+}
 
-    if (!p.overlay_label.empty() && gate.draws(true)) {
-        set_foreground(cr, th);
-        // Inside the top left corner, which a drawing of the pendulum and a phase portrait leave free.
-        text.draw(p.overlay_label, th.label_font_pt, area.x + pad, area.y + pad, 0.0, 0.0);
+/// The panel as its legend shows it: a crowded series (space_markers) with its line.
+panel as_shown(const panel& p, const spaced_series& spaced) {
+    panel shown = p;
+    for (std::size_t k = 0; k < shown.data.size(); ++k) {
+        if (spaced.crowded[k]) shown.data[k].line = line_style::solid;
     }
-    if (!gate.draws(false)) return;
+    return shown;
+}
 
-    if (p.frameless) {
-        // A drawing: only its title and legend.
-        set_foreground(cr, th);
-        if (!p.label.empty()) text.draw(p.label, th.label_font_pt, area.x, area.y - 0.4 * pad, 0.0, 1.0);
-        if (legend_box) draw_legend(cr, text, th, p, lg, *legend_box);
-        if (legend_band) draw_legend_band(cr, text, th, p, lg, *legend_band);
-        return;
-    }
-
-    // Frame and ticks.
+/// The frame, the ticks and the tick labels, all at tick_gap from the frame: x labels on one
+/// baseline below their highest ink (and below the ink of y labels that hang under their
+/// baseline), y labels with their ink ending there, centred on a digit's height. Returns the
+/// x labels' baseline.
+double draw_frame_and_ticks(cairo_t* cr, const text_engine& text, const theme& th, const panel_plan& plan,
+                            const panel_geometry& g) {
+    const rect& area = g.area;
     set_foreground(cr, th);
     cairo_set_dash(cr, nullptr, 0, 0);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
@@ -192,29 +312,29 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     cairo_set_line_width(cr, th.frame_width_pt);
     cairo_rectangle(cr, area.x, area.y, area.w, area.h);
     cairo_stroke(cr);
-    draw_ticks(cr, th, plan.xt, mx, area, true);
-    draw_ticks(cr, th, plan.yt, my, area, false);
-
-    // Tick labels, all at tick_gap from the frame: x labels on one baseline below their
-    // highest ink (and below the ink of y labels that hang under their baseline), y labels
-    // with their ink ending there, centred on a digit's height.
+    draw_ticks(cr, th, plan.xt, g.mx, area, true);
+    draw_ticks(cr, th, plan.yt, g.my, area, false);
     const double x_baseline = area.y + area.h + plan.xtick_gap + plan.xtick_up;
     for (std::size_t i = 0; i < plan.xt.major.size(); ++i) {
-        const double d = mx(plan.xt.major[i]);
+        const double d = g.mx(plan.xt.major[i]);
         if (d < area.x - 0.01 || d > area.x + area.w + 0.01) continue;
         const text_ink ink = text.ink(plan.xt.labels[i], th.tick_font_pt);
         text.draw_on_baseline(plan.xt.labels[i], th.tick_font_pt, d - ink.x - 0.5 * ink.w, x_baseline, false, 0.5);
     }
     for (std::size_t i = 0; i < plan.yt.major.size(); ++i) {
-        const double d = my(plan.yt.major[i]);
+        const double d = g.my(plan.yt.major[i]);
         if (d < area.y - 0.01 || d > area.y + area.h + 0.01) continue;
         const text_ink ink = text.ink(plan.yt.labels[i], th.tick_font_pt);
         text.draw_on_baseline(plan.yt.labels[i], th.tick_font_pt, area.x - plan.tick_gap - ink.x - ink.w,
                               d + 0.5 * plan.digit_h, false, 1.0);
     }
+    return x_baseline;
+}
 
-    // Axis labels at label_gap from the tick labels (y labels of a column aligned, as the
-    // widest tick labels of the figure set them), panel label above the top tick label.
+/// Axis labels at label_gap from the tick labels (y labels of a column aligned, as the
+/// widest tick labels of the figure set them), panel label above the top tick label.
+void draw_axis_labels(const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
+                      const rect& area, double x_baseline) {
     if (!p.x.label.empty()) {
         const text_ink ink = text.ink(p.x.label.markup, th.label_font_pt);
         const double top = x_baseline + plan.xtick_down + plan.label_gap;
@@ -233,8 +353,35 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         const double bottom = area.y - 0.5 * plan.digit_h - plan.label_gap;
         text.draw_on_baseline(p.label, th.label_font_pt, area.x - ink.x, bottom - (ink.y + ink.h));
     }
-    if (legend_box) draw_legend(cr, text, th, p, lg, *legend_box);
-    if (legend_band) draw_legend_band(cr, text, th, p, lg, *legend_band);
+}
+
+/// Draws one panel, its legend where `spot` puts it (in `band` for legend_spot::band).
+void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
+                const rect& cell, legend_spot spot, const std::optional<rect>& band, const pass_gate& gate) {
+    const double pad = th.padding_pt;
+    const double tolerance = curve_tolerance(cr);
+    const placed_panel placed = place_with_legend(th, p, plan, cell, spot, band, tolerance);
+    const rect& area = placed.g.area;
+    const spaced_series spaced = space_markers(th, p, placed.g);
+    draw_series(cr, th, p, placed.g, spaced, gate);
+    if (!p.overlay_label.empty() && gate.draws(true)) {
+        set_foreground(cr, th);
+        // Inside the top left corner, which a drawing of the pendulum and a phase portrait leave free.
+        text.draw(p.overlay_label, th.label_font_pt, area.x + pad, area.y + pad, 0.0, 0.0);
+    }
+    if (!gate.draws(false)) return;
+    if (p.frameless) {
+        // A drawing: only its title and legend.
+        set_foreground(cr, th);
+        if (!p.label.empty()) text.draw(p.label, th.label_font_pt, area.x, area.y - 0.4 * pad, 0.0, 1.0);
+    } else {
+        const double x_baseline = draw_frame_and_ticks(cr, text, th, plan, placed.g);
+        draw_axis_labels(text, th, p, plan, area, x_baseline);
+    }
+    if (!placed.legend_box && !placed.legend_band) return;
+    const panel shown = as_shown(p, spaced);
+    if (placed.legend_box) draw_legend(cr, text, th, shown, plan.legend, *placed.legend_box);
+    if (placed.legend_band) draw_legend_band(cr, text, th, shown, plan.legend, *placed.legend_band);
 }
 
 
@@ -290,6 +437,280 @@ figure with_theme_styles(const figure& fig, const theme& th) {
     return styled;
 }
 
+namespace {
+
+thread_local layout_notes* current_notes = nullptr;
+
+/// The theme at the sizes a figure's contents are decided at (decided_sizes).
+theme deciding_theme(const theme& th) {
+    theme d = th;
+    const text_sizes at = decided_sizes(th);
+    d.tick_font_pt = at.tick_pt;
+    d.label_font_pt = at.label_pt;
+    d.legend_font_pt = at.legend_pt;
+    return d;
+}
+
+/// The figure's panels and, after them, its peers (panels of other files of the set).
+std::vector<panel> panels_with_peers(const figure& fig) {
+    std::vector<panel> all = fig.panels;
+    all.insert(all.end(), fig.peers.begin(), fig.peers.end());
+    return all;
+}
+
+/// The grid's cells below `top`, one per panel.
+std::vector<rect> make_cells(const figure& fig, page_size size, double top) {
+    const double cw = size.width_pt / fig.cols;
+    const double ch = (size.height_pt - top) / fig.rows;
+    std::vector<rect> cells;
+    for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+        cells.push_back(
+            rect{static_cast<double>(i % fig.cols) * cw, top + static_cast<double>(i / fig.cols) * ch, cw, ch});
+    }
+    return cells;
+}
+
+/// Every planned panel (the peers too) gets a cell the size of this figure's.
+std::vector<rect> planned_cells(const std::vector<rect>& own, std::size_t planned) {
+    std::vector<rect> all = own;
+    if (!all.empty()) all.resize(planned, all.front());
+    return all;
+}
+
+/// The panels planned at the theme's sizes: margins shared, crowded ticks thinned, data
+/// kept off the frame. With `decided`, each axis starts from the ticks decided there, so
+/// that a tick label that had to go at the deciding sizes goes here too.
+std::vector<panel_plan> plan_panels(const text_engine& text, const std::vector<panel>& planned, const theme& th,
+                                    const std::vector<rect>& cells, int cols,
+                                    const std::vector<panel_plan>* decided) {
+    std::vector<panel_plan> plans;
+    for (std::size_t i = 0; i < planned.size(); ++i) {
+        plans.push_back(decided ? plan_panel(text, planned[i], th, (*decided)[i].x_limit, (*decided)[i].y_limit)
+                                : plan_panel(text, planned[i], th));
+    }
+    share_margins(plans, th, cols);
+    thin_crowded_ticks(text, planned, plans, cells, th, cols);
+    keep_data_off_frame(planned, plans, cells, th);
+    return plans;
+}
+
+/// The figure's title, centred above everything at padding from the top; its height with
+/// the space below it, or 0.
+double draw_title(cairo_t* cr, const text_engine& text, const figure& fig, const theme& th, page_size size,
+                  const pass_gate& gate) {
+    if (fig.title.empty() || !(th.title_font_pt > 0)) return 0;
+    const text_ink ink = text.ink(fig.title.markup, th.title_font_pt);
+    if (gate.draws(false)) {
+        set_foreground(cr, th);
+        text.draw_on_baseline(fig.title, th.title_font_pt, 0.5 * size.width_pt - ink.x - 0.5 * ink.w,
+                              th.padding_pt - ink.y, false, 0.5);
+    }
+    return th.padding_pt + ink.h + 0.5 * th.padding_pt;
+}
+
+std::string number_text(const char* format, double value) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, format, value);
+    return buf;
+}
+
+/// Axes too small to read are an error, not a figure: less than three tick font sizes.
+void check_room(const figure& fig, const std::vector<panel_plan>& plans, const std::vector<rect>& cells,
+                const theme& th, page_size size) {
+    const double least = 3 * th.tick_font_pt;
+    for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+        const rect area = axes_area(plans[i], cells[i]);
+        if (area.w >= least && area.h >= least) continue;
+        constexpr double cm = 2.54 / 72;
+        const auto cm_of = [&](double pt) { return number_text("%.1f", pt * cm); };
+        throw layout_error("a figure of " + cm_of(size.width_pt) + " x " + cm_of(size.height_pt) +
+                           " cm leaves panel " + std::to_string(i + 1) + " of " + std::to_string(fig.panels.size()) +
+                           " axes of " + cm_of(std::max(area.w, 0.0)) + " x " + cm_of(std::max(area.h, 0.0)) +
+                           " cm, too small for " + number_text("%.3g", th.tick_font_pt) +
+                           " pt text: make the figure larger (figure_width_cm and figure_height_cm, or "
+                           "panel_width_cm) or its text smaller (tick_font_pt, label_font_pt, legend_font_pt)");
+    }
+}
+
+void record_frames(const figure& fig, const std::vector<panel_plan>& plans, const std::vector<rect>& cells,
+                   std::vector<panel_frame>* frames) {
+    if (!frames) return;
+    frames->clear();
+    for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+        const rect a = panel_area(fig.panels[i], plans[i], cells[i]);
+        frames->push_back(panel_frame{a.x, a.y, a.w, a.h, plans[i].xt.lo, plans[i].xt.hi, plans[i].yt.lo,
+                                      plans[i].yt.hi, fig.panels[i].frameless, plans[i].xt.labels,
+                                      plans[i].yt.labels});
+    }
+}
+
+/// A panel as a note names it: its label as text, or its place in the figure.
+std::string panel_name(const panel& p, std::size_t i) {
+    const std::string label = p.label.empty() ? std::string() : markup_text(p.label.markup);
+    return label.empty() ? "panel " + std::to_string(i + 1) : "panel " + label;
+}
+
+/// Everything draw_figure has decided before it draws the panels.
+struct figure_layout {
+    const figure* fig = nullptr;
+    std::vector<panel> planned;        // the panels, then the peers
+    std::vector<panel_plan> plans;     // at the theme's sizes
+    std::vector<panel_plan> decided;   // at the sizes the contents are decided at
+    theme deciding;
+    std::vector<rect> cells;
+    double title_h = 0;
+};
+
+/// Where each panel's own legend goes: inside the axes where the legend at the deciding
+/// sizes finds room, else in a band above them (an automatic legend) or none, and said.
+/// A band is a row of its own above the cell; every cell of its row moves down by the
+/// row's highest band, so that the row's axes stay level, and the files of a set (peers)
+/// by the highest band of any of them.
+struct own_legends {
+    std::vector<legend_spot> spots;
+    std::vector<std::optional<rect>> bands;
+};
+
+own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, const pass_gate& gate) {
+    const figure& fig = *f.fig;
+    const std::size_t n = fig.panels.size();
+    own_legends out{std::vector<legend_spot>(n, legend_spot::inside), std::vector<std::optional<rect>>(n)};
+    std::vector<double> row_band(static_cast<std::size_t>(fig.rows), 0.0);
+    const double pad = th.padding_pt;
+    for (std::size_t i = 0; i < n; ++i) {
+        const panel& p = fig.panels[i];
+        const panel_plan& d = f.decided[i];
+        const auto g = place_panel(p, d, panel_area(p, d, f.cells[i]), curve_tolerance(cr), f.deciding.line_width_pt);
+        if (d.legend.entries.empty() || legend_inside(p, d.legend, g, f.deciding)) continue;
+        out.spots[i] = p.legend == legend_place::automatic ? legend_spot::band : legend_spot::none;
+        if (out.spots[i] == legend_spot::band) {
+            const double h = legend_band_height(f.plans[i].legend, th, f.cells[i].w - 2 * pad);
+            out.bands[i] = rect{f.cells[i].x + pad, f.cells[i].y + 0.3 * pad, f.cells[i].w - 2 * pad, h};
+            double& row = row_band[i / static_cast<std::size_t>(fig.cols)];
+            row = std::max(row, h);
+        } else if (gate.draws(false)) {
+            layout_notes::note(panel_name(p, i) + ": no legend: no spot inside its axes is free of data at " +
+                               number_text("%.4g", f.deciding.legend_font_pt) +
+                               " pt legend text, and legend = \"inside\" allows no band above them");
+        }
+    }
+    // The files of a set (peers, one panel each) leave the room of the highest band of any
+    // of them, so that their frames stay in line.
+    const rect cell = f.cells.empty() ? rect{} : f.cells.front();
+    for (std::size_t i = n; i < f.planned.size() && n > 0; ++i) {
+        const panel_plan& d = f.decided[i];
+        const auto g = place_panel(f.planned[i], d, panel_area(f.planned[i], d, cell), curve_tolerance(cr),
+                                   f.deciding.line_width_pt);
+        if (d.legend.entries.empty() || f.planned[i].legend != legend_place::automatic ||
+            legend_inside(f.planned[i], d.legend, g, f.deciding)) {
+            continue;
+        }
+        row_band[0] = std::max(row_band[0], legend_band_height(f.plans[i].legend, th, cell.w - 2 * pad));
+    }
+    bool moved = false;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double h = row_band[i / static_cast<std::size_t>(fig.cols)];
+        f.cells[i].y += h;
+        f.cells[i].h -= h;
+        moved = moved || h > 0;
+    }
+    if (moved) keep_data_off_frame(f.planned, f.plans, planned_cells(f.cells, f.planned.size()), th);
+    return out;
+}
+
+/// The panels of a shared legend's set in the set's order, as indices into planned: the
+/// figure's panels, or, for a file of one panel of a figure (peers), the figure's panels in
+/// their order.
+std::vector<std::size_t> set_order(const figure& fig) {
+    std::vector<std::size_t> order;
+    if (fig.peers.empty()) {
+        for (std::size_t i = 0; i < fig.panels.size(); ++i) order.push_back(i);
+        return order;
+    }
+    const std::size_t own = std::min<std::size_t>(fig.place_in_set, fig.peers.size());
+    for (std::size_t i = 0; i < own; ++i) order.push_back(1 + i);
+    order.push_back(0);
+    for (std::size_t i = own; i < fig.peers.size(); ++i) order.push_back(1 + i);
+    return order;
+}
+
+/// The first panel of the set whose axes have room inside for the legend, at the deciding sizes.
+std::optional<std::size_t> shared_legend_panel(cairo_t* cr, const figure_layout& f) {
+    const legend_layout& lg = f.decided[0].legend;
+    for (std::size_t i : set_order(*f.fig)) {
+        const rect cell = i < f.cells.size() ? f.cells[i] : f.cells.front();
+        const auto g = place_panel(f.planned[i], f.decided[i], axes_area(f.decided[i], cell), curve_tolerance(cr),
+                                   f.deciding.line_width_pt);
+        if (legend_inside(f.planned[i], lg, g, f.deciding)) return i;
+    }
+    return std::nullopt;
+}
+
+/// Whether a band of height `band` leaves the files of one panel each room: their axes keep
+/// three quarters of their height (and room to read), or the band would squeeze the plots
+/// it names. Decided at the deciding sizes.
+bool band_leaves_room(const figure_layout& f, page_size size, double band) {
+    const double least = 3 * f.deciding.tick_font_pt;
+    const std::vector<rect> these = make_cells(*f.fig, size, f.title_h + band + 0.3 * f.deciding.padding_pt);
+    for (std::size_t i = 0; i < f.fig->panels.size(); ++i) {
+        const rect area = axes_area(f.decided[i], these[i]);
+        const rect before = axes_area(f.decided[i], f.cells[i]);
+        if (area.w < least || area.h < std::max(least, 0.75 * before.h)) return false;
+    }
+    return true;
+}
+
+/// Where a shared legend goes: the panel that shows it inside its axes, or a band across
+/// the top, or neither.
+struct shared_legend {
+    legend_layout lg;
+    std::optional<std::size_t> panel;
+    std::optional<rect> band;  // drawn by this file (the first of its set)
+};
+
+/// A shared legend goes to the first panel of the set with room for it inside the axes;
+/// failing that, to a band across the top, which moves the cells down. Every file of a
+/// figure decides alike, so exactly one of them shows the legend, and all of them leave
+/// room for a band, which keeps their frames in line; files too small for a band above
+/// their axes (band_leaves_room) have no legend, and the first file of the set says so: a
+/// caption names the lines. Every panel shows the same series, so the first panel's
+/// entries stand for all.
+shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f, page_size size) {
+    const figure& fig = *f.fig;
+    shared_legend out{f.plans[0].legend, shared_legend_panel(cr, f), std::nullopt};
+    if (out.panel || out.lg.entries.empty()) return out;
+    const double width = size.width_pt - 2 * th.padding_pt;
+    const bool first_file = fig.peers.empty() || fig.place_in_set == 0;
+    const double decided_band = legend_band_height(f.decided[0].legend, f.deciding, width);
+    if (!fig.peers.empty() && !band_leaves_room(f, size, decided_band)) {
+        if (first_file) {
+            layout_notes::note(
+                "no legend: no panel of the set has room for it inside its axes, nor its files for a band above "
+                "them, at " + number_text("%.4g", f.deciding.legend_font_pt) +
+                " pt legend text (the size a LaTeX overlay sets it at, or the theme's); name the lines in the "
+                "caption, or make the panels larger (panel_width_cm)");
+        }
+        return out;
+    }
+    const double band = legend_band_height(out.lg, th, width);
+    if (first_file) out.band = rect{th.padding_pt, f.title_h + 0.3 * th.padding_pt, width, band};
+    f.cells = make_cells(fig, size, f.title_h + band + 0.3 * th.padding_pt);
+    keep_data_off_frame(f.planned, f.plans, planned_cells(f.cells, f.planned.size()), th);
+    return out;
+}
+
+}  // namespace
+
+layout_notes::layout_notes() : outer_(current_notes) { current_notes = this; }
+
+layout_notes::~layout_notes() { current_notes = outer_; }
+
+void layout_notes::note(const std::string& line) {
+    if (!current_notes) return;
+    auto& lines = current_notes->lines_;
+    if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+}
+
 void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
                  std::vector<placed_text>* texts, bool vector, std::vector<panel_frame>* frames) {
     const auto keyed = [](const panel& p) {
@@ -304,153 +725,49 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         throw std::invalid_argument("figure grid is too small for its panels");
     }
     if (th.palette.empty()) throw bad_input("theme has no colours");
+    if (const std::string why = text_size_problem(th); !why.empty()) throw bad_input(why);
     text_engine text(cr, th.font_family);
     text.record_into(texts);
-    pass_gate gate{pass};
+    const pass_gate gate{pass};
     if ((!vector || th.opaque_vector_background) && gate.draws(false)) {
         cairo_set_source_rgb(cr, th.background.r, th.background.g, th.background.b);
         cairo_paint(cr);
     }
-
     // Shared margins keep the axes of neighbouring panels aligned, and those of panels drawn
     // alone in files of their own (the peers, each in a cell the size of this figure's):
     // a peer is planned as its own file plans it, crowded ticks thinned and all, so that
     // every file of the set reaches the same margins. Plans past the panels are the peers'.
-    std::vector<panel> with_peers;
-    if (!fig.peers.empty()) {
-        with_peers = fig.panels;
-        with_peers.insert(with_peers.end(), fig.peers.begin(), fig.peers.end());
-    }
-    const std::vector<panel>& planned = fig.peers.empty() ? fig.panels : with_peers;
-    std::vector<panel_plan> plans;
-    for (const auto& p : planned) plans.push_back(plan_panel(text, p, th));
-    share_margins(plans, th, fig.cols);
-    auto make_cells = [&](double top) {
-        const double cw = size.width_pt / fig.cols;
-        const double ch = (size.height_pt - top) / fig.rows;
-        std::vector<rect> cells;
+    // What the figure shows (which ticks, where the legend goes) is decided first at the
+    // deciding sizes, the same for a PDF and its LaTeX overlays; then laid out at the theme's.
+    figure_layout f;
+    f.fig = &fig;
+    f.planned = panels_with_peers(fig);
+    f.deciding = deciding_theme(th);
+    f.title_h = draw_title(cr, text, fig, th, size, gate);
+    f.cells = make_cells(fig, size, f.title_h);
+    const std::vector<rect> cells = planned_cells(f.cells, f.planned.size());
+    f.decided = plan_panels(text, f.planned, f.deciding, cells, fig.cols, nullptr);
+    f.plans = plan_panels(text, f.planned, th, cells, fig.cols, &f.decided);
+    if (!fig.shared_legend || fig.panels.empty() || !same_legend_entries(f.planned)) {
+        const own_legends own = place_own_legends(cr, th, f, gate);
+        f.plans.resize(fig.panels.size());
+        check_room(fig, f.plans, f.cells, th, size);
+        record_frames(fig, f.plans, f.cells, frames);
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-            cells.push_back(rect{static_cast<double>(i % fig.cols) * cw, top + static_cast<double>(i / fig.cols) * ch,
-                                 cw, ch});
-        }
-        return cells;
-    };
-    // The title, centred above everything, at padding from the top.
-    double title_h = 0;
-    if (!fig.title.empty() && th.title_font_pt > 0) {
-        const text_ink ink = text.ink(fig.title.markup, th.title_font_pt);
-        title_h = th.padding_pt + ink.h + 0.5 * th.padding_pt;
-        if (gate.draws(false)) {
-            set_foreground(cr, th);
-            text.draw_on_baseline(fig.title, th.title_font_pt, 0.5 * size.width_pt - ink.x - 0.5 * ink.w,
-                                  th.padding_pt - ink.y, false, 0.5);
-        }
-    }
-    std::vector<rect> cells = make_cells(title_h);
-    // Every planned panel (the peers too) gets a cell the size of this figure's.
-    const auto planned_cells_of = [&](const std::vector<rect>& own) {
-        std::vector<rect> all = own;
-        if (!all.empty()) all.resize(planned.size(), all.front());
-        return all;
-    };
-    thin_crowded_ticks(text, planned, plans, planned_cells_of(cells), th, fig.cols);
-    keep_data_off_frame(planned, plans, planned_cells_of(cells), th);
-    // Axes too small to read are an error, not a figure.
-    const double least = 3 * th.tick_font_pt;
-    // Room for a band over files of one panel each: their axes keep three quarters of their
-    // height (and room to read), or the band would squeeze the plots it names.
-    const auto roomy = [&](const std::vector<rect>& these) {
-        for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-            const rect area = axes_area(plans[i], these[i]);
-            const rect before = axes_area(plans[i], cells[i]);
-            if (area.w < least || area.h < std::max(least, 0.75 * before.h)) return false;
-        }
-        return true;
-    };
-    const auto check_room = [&] {
-        for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-            const rect area = axes_area(plans[i], cells[i]);
-            if (area.w >= least && area.h >= least) continue;
-            constexpr double cm = 2.54 / 72;
-            const auto number = [](const char* format, double value) {
-                char buf[32];
-                std::snprintf(buf, sizeof buf, format, value);
-                return std::string(buf);
-            };
-            const auto cm_of = [&](double pt) { return number("%.1f", pt * cm); };
-            const std::string what =
-                "a figure of " + cm_of(size.width_pt) + " x " + cm_of(size.height_pt) + " cm leaves panel " +
-                std::to_string(i + 1) + " of " + std::to_string(fig.panels.size()) + " axes of " +
-                cm_of(std::max(area.w, 0.0)) + " x " + cm_of(std::max(area.h, 0.0)) + " cm, too small for " +
-                number("%.3g", th.tick_font_pt) +
-                " pt text: make the figure larger (figure_width_cm and figure_height_cm, or panel_width_cm) or its "
-                "text smaller (tick_font_pt, label_font_pt, legend_font_pt)";
-            throw layout_error(what);
-        }
-    };
-    const auto record_frames = [&] {
-        if (!frames) return;
-        frames->clear();
-        for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-            const rect a = panel_area(fig.panels[i], plans[i], cells[i]);
-            frames->push_back(panel_frame{a.x, a.y, a.w, a.h, plans[i].xt.lo, plans[i].xt.hi, plans[i].yt.lo,
-                                          plans[i].yt.hi, fig.panels[i].frameless, plans[i].xt.labels,
-                                          plans[i].yt.labels});
-        }
-    };
-    if (!fig.shared_legend || fig.panels.empty() || !same_legend_entries(planned)) {
-        plans.resize(fig.panels.size());
-        check_room();
-        record_frames();
-        for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-            draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], true, gate);
+            draw_panel(cr, text, th, fig.panels[i], f.plans[i], f.cells[i], own.spots[i], own.bands[i], gate);
         }
         return;
     }
-    // A shared legend goes to the first panel of the set with room for it inside the axes;
-    // failing that, to a band across the top. The set is the figure's panels, or, for a file
-    // of one panel of a figure (peers), the figure's panels in their order: every file of a
-    // figure decides alike, so exactly one of them shows the legend, and all of them leave
-    // room for a band, which keeps their frames in line; files too small for a band above
-    // their axes (see roomy) have no legend: a caption names the lines. Every panel shows the same
-    // series, so the first panel's entries stand for all.
-    std::vector<std::size_t> set_order;  // indices into planned, in the set's order
-    if (fig.peers.empty()) {
-        for (std::size_t i = 0; i < fig.panels.size(); ++i) set_order.push_back(i);
-    } else {
-        const std::size_t own = std::min<std::size_t>(fig.place_in_set, fig.peers.size());
-        for (std::size_t i = 0; i < own; ++i) set_order.push_back(1 + i);
-        set_order.push_back(0);
-        for (std::size_t i = own; i < fig.peers.size(); ++i) set_order.push_back(1 + i);
-    }
-    const legend_layout lg = plans[0].legend;
-    std::optional<std::size_t> legend_panel;  // index into planned
-    for (std::size_t i : set_order) {
-        const rect cell = i < cells.size() ? cells[i] : cells.front();
-        const auto g = place_panel(planned[i], plans[i], axes_area(plans[i], cell), curve_tolerance(cr),
-                                   th.line_width_pt);
-        if (legend_inside(planned[i], lg, g, th)) {
-            legend_panel = i;
-            break;
-        }
-    }
-    const double band = lg.entries.empty() ? 0.0 : legend_band_height(lg, th, size.width_pt - 2 * th.padding_pt);
-    if (!legend_panel && !lg.entries.empty() &&
-        (fig.peers.empty() || roomy(make_cells(title_h + band + 0.3 * th.padding_pt)))) {
-        if ((fig.peers.empty() || fig.place_in_set == 0) && gate.draws(false)) {
-            draw_legend_band(cr, text, th, fig.panels[0], lg,
-                             rect{th.padding_pt, title_h + 0.3 * th.padding_pt, size.width_pt - 2 * th.padding_pt, band});
-        }
-        cells = make_cells(title_h + band + 0.3 * th.padding_pt);
-        keep_data_off_frame(planned, plans, planned_cells_of(cells), th);
-    }
-    plans.resize(fig.panels.size());
-    check_room();
-    record_frames();
+    const shared_legend shared = place_shared_legend(cr, th, f, size);
+    f.plans.resize(fig.panels.size());
+    check_room(fig, f.plans, f.cells, th, size);
+    record_frames(fig, f.plans, f.cells, frames);
+    if (shared.band && gate.draws(false)) draw_legend_band(cr, text, th, fig.panels[0], shared.lg, *shared.band);
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-        const bool here = legend_panel && i == *legend_panel;
-        if (here) plans[i].legend = lg;
-        draw_panel(cr, text, th, fig.panels[i], plans[i], cells[i], here, gate);
+        const bool here = shared.panel && i == *shared.panel;
+        if (here) f.plans[i].legend = shared.lg;
+        draw_panel(cr, text, th, fig.panels[i], f.plans[i], f.cells[i], here ? legend_spot::inside : legend_spot::none,
+                   std::nullopt, gate);
     }
 }
 
@@ -463,6 +780,44 @@ std::vector<panel_frame> panel_frames(const figure& fig, const theme& th) {
     std::vector<panel_frame> frames;
     draw_figure(cr.get(), fig, th, size, draw_pass::all, nullptr, false, &frames);
     return frames;
+}
+
+std::vector<std::vector<marker_centres_of>> marker_centres(const figure& unstyled, const theme& th) {
+    const figure fig = with_theme_styles(unstyled, th);
+    const std::vector<panel_frame> frames = panel_frames(fig, th);
+    std::vector<std::vector<marker_centres_of>> out;
+    for (std::size_t i = 0; i < fig.panels.size() && i < frames.size(); ++i) {
+        const panel& p = fig.panels[i];
+        const panel_frame& f = frames[i];
+        const axis_map mx{f.x_lo, f.x_hi, p.x.kind == scale::log, f.x, f.x + f.w};
+        const axis_map my{f.y_lo, f.y_hi, p.y.kind == scale::log, f.y + f.h, f.y};
+        std::vector<marker_centres_of> panel_centres;
+        for (const auto& s : p.data) {
+            marker_centres_of c;
+            c.radius = th.marker_radius_pt * s.marker_scale;
+            c.spaced = spaces_markers(s);
+            if (s.marker == marker_style::none) {
+                panel_centres.push_back(c);
+                continue;
+            }
+            const device_series d = to_device(s, mx, my);
+            std::vector<std::size_t> kept;
+            if (c.spaced) {
+                kept = spaced_markers(d, 3 * c.radius);
+            } else {
+                for (std::size_t k = 0; k < d.x.size(); ++k) kept.push_back(k);
+            }
+            for (std::size_t k : kept) {
+                // Drawn where the centre is inside the axes (draw_series).
+                if (d.x[k] >= f.x && d.x[k] <= f.x + f.w && d.y[k] >= f.y && d.y[k] <= f.y + f.h) {
+                    c.centres.emplace_back(d.x[k], d.y[k]);
+                }
+            }
+            panel_centres.push_back(std::move(c));
+        }
+        out.push_back(std::move(panel_centres));
+    }
+    return out;
 }
 
 namespace {

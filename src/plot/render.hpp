@@ -9,6 +9,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plot {
@@ -18,6 +19,11 @@ struct page_size {
     double width_pt = 0;   ///< width
     double height_pt = 0;  ///< height
 };
+
+/// What is wrong with the theme's text sizes, or "": a size (tick, label, legend, title)
+/// below min_text_pt, or one whose superscripts and subscripts (script_metrics::size of it)
+/// fall below min_script_pt. The message names the key, its value and what to do.
+std::string text_size_problem(const theme& th);
 
 /// The size of a figure drawn with a theme: the theme's fixed size, or the panels' size.
 page_size figure_size(const figure& fig, const theme& th);
@@ -41,6 +47,29 @@ struct panel_frame {
     bool frameless = false;  ///< a drawing without axes
     std::vector<std::string> x_labels;  ///< the x axis' major tick labels as drawn (markup)
     std::vector<std::string> y_labels;  ///< the y axis' major tick labels as drawn (markup)
+};
+
+/// Collects, while it lives, what the layout of the figures this thread draws leaves out
+/// and why (a legend without room), one line each, once; the innermost collector of a
+/// thread gets them.
+class layout_notes {
+public:
+    /// Starts collecting this thread's notes.
+    layout_notes();
+    /// Hands collecting back to the collector it replaced.
+    ~layout_notes();
+    layout_notes(const layout_notes&) = delete;
+    layout_notes& operator=(const layout_notes&) = delete;
+
+    /// The lines noted so far, in order.
+    const std::vector<std::string>& lines() const { return lines_; }
+
+    /// Gives a line to this thread's innermost collector, if any (a line it has is not repeated).
+    static void note(const std::string& line);
+
+private:
+    std::vector<std::string> lines_;
+    layout_notes* outer_ = nullptr;
 };
 
 /// A figure that cannot be laid out as asked: its size leaves axes too small to read.
@@ -70,6 +99,17 @@ figure with_theme_styles(const figure& fig, const theme& th);
 
 /// The frames of the figure's panels as draw_figure lays them out at the figure's size.
 std::vector<panel_frame> panel_frames(const figure& fig, const theme& th);
+
+/// The markers of one series as draw_figure places them, in points from the page's top left.
+struct marker_centres_of {
+    std::vector<std::pair<double, double>> centres;  ///< each drawn marker's centre
+    double radius = 0;                                ///< the markers' radius
+    bool spaced = false;                              ///< spaced 1.5 diameters apart (a method's markers)
+};
+
+/// Every panel's series' markers as draw_figure draws them at the figure's size: a method's
+/// markers spaced at least 1.5 diameters apart on the page, measured data's every point.
+std::vector<std::vector<marker_centres_of>> marker_centres(const figure& fig, const theme& th);
 
 /// One series as a raster draws it, in data values: a sampled curve's vertices (NaN
 /// between the pieces of a broken line), or the points of any other series.

@@ -30,9 +30,16 @@ enum class svg_size_unit {
     viewbox,  ///< none, only a viewBox: the figure fills the width the page gives it
 };
 
+/// The sizes of a figure's three kinds of text, in points.
+struct text_sizes {
+    double tick_pt = 0;    ///< tick labels
+    double label_pt = 0;   ///< axis and panel labels
+    double legend_pt = 0;  ///< legend entries
+};
+
 /// How figures look: fonts, sizes in points, line widths, colours, sizes. Built-in themes
 /// and users' themes are style files (see figures/themes.hpp); the defaults here are the
-/// paper theme's.
+/// paper theme's before its journal minimum (paper.toml sets min_text_pt and larger text).
 struct theme {
     std::string name;                 ///< theme name
     std::string font_family;          ///< Pango font families, the first preferred, comma-separated
@@ -40,6 +47,17 @@ struct theme {
     double label_font_pt = 8.5;       ///< axis labels and panel labels
     double legend_font_pt = 7.0;      ///< legend entries
     double title_font_pt = 9.5;       ///< a figure's title; 0 draws none
+    /// The smallest text at final size (a journal's minimum lettering, 8 pt); 0: no minimum.
+    double min_text_pt = 0;
+    /// The smallest superscript or subscript at final size (6 pt); 0: no minimum.
+    double min_script_pt = 0;
+    /// The largest LaTeX document size (--tex-font-size) whose overlays show what the PDF
+    /// shows: the layout decides which tick labels and legends a figure keeps at the largest
+    /// text of either (decided_sizes); 0: each route decides at its own sizes.
+    double tex_agree_pt = 0;
+    /// The sizes a theme made for a LaTeX overlay decides its contents at (those of the theme
+    /// it was made from); unset: decided_sizes of this theme's own.
+    std::optional<text_sizes> decided_at;
     double line_width_pt = 0.8;       ///< series lines
     double frame_width_pt = 0.5;      ///< axes frame and ticks
     double marker_radius_pt = 1.6;    ///< open circles

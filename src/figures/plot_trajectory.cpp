@@ -10,13 +10,11 @@
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
 #include "pendulum/phase.hpp"
-#include "pendulum/time_reduction.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <memory>
 #include <numbers>
 #include <stdexcept>
 
@@ -168,17 +166,8 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
             };
             check_formula_finite(m.method, grid(lo, hi, points), [&theta](double s) { return theta(s); });
         } else {
-            // The phase as trajectory forms it (the core's time_reducer with the solution's exact
-            // w/w0), so that a figure's data and trajectory give the same numbers.
-            // A level without a period has no value (NaN), refused by the checks downstream.
-            auto solution = pendulum::method_solution(m.method, a.theta0());
-            std::shared_ptr<const pendulum::time_reducer> reduce;
-            if (solution.exists()) {
-                reduce = std::make_shared<const pendulum::time_reducer>(
-                    a.theta0(), pendulum::time_scale{}, std::max(std::fabs(lo), std::fabs(hi)), solution);
-            }
-            theta = [solution = std::move(solution), reduce = std::move(reduce), period, angle](double s) {
-                return angle * (reduce ? solution.theta_at_phase(reduce->phase(s)) : solution.theta(s * period));
+            theta = [solution = pendulum::method_solution(m.method, a.theta0()), period, angle](double s) {
+                return angle * solution.theta(s * period);
             };
         }
         panel.data.push_back(make_series(st, grid(lo, hi, is_exact(m) ? circles : points), theta));

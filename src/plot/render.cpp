@@ -571,6 +571,40 @@ struct own_legends {
     std::vector<std::optional<rect>> bands;
 };
 
+/// In the files of one panel each (a set of peers), a band that would squeeze the axes below
+/// three quarters of their height (or below room to read, three tick lines), at the deciding
+/// sizes, goes: those panels show no legend, and say so, as a shared legend does. Every
+/// file of a set decides alike, as their bands are the same.
+void drop_bands_without_room(const figure_layout& f, std::vector<double>& row_band, own_legends& out,
+                             const pass_gate& gate) {
+    const figure& fig = *f.fig;
+    if (fig.peers.empty()) return;  // a whole figure's band moves its rows down; they keep their height
+    const double least = 3 * f.deciding.tick_font_pt;
+    for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+        double& band = row_band[i / static_cast<std::size_t>(fig.cols)];
+        if (band <= 0) continue;
+        rect squeezed = f.cells[i];
+        squeezed.y += band;
+        squeezed.h -= band;
+        const rect area = axes_area(f.decided[i], squeezed);
+        const rect before = axes_area(f.decided[i], f.cells[i]);
+        if (area.w >= least && area.h >= std::max(least, 0.75 * before.h)) continue;
+        band = 0;
+    }
+    for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+        if (out.spots[i] != legend_spot::band || row_band[i / static_cast<std::size_t>(fig.cols)] > 0) continue;
+        out.spots[i] = legend_spot::none;
+        out.bands[i].reset();
+        if (gate.draws(false)) {
+            layout_notes::note(panel_name(fig.panels[i], i) + ": no legend: no spot inside its axes is free of data, "
+                               "and a band above them would leave the axes less than three quarters of their "
+                               "height, at " + number_text("%.4g", f.deciding.legend_font_pt) +
+                               " pt legend text (the size a LaTeX overlay sets it at, or the theme's); name the "
+                               "lines in the caption, or make the panels larger (panel_width_cm)");
+        }
+    }
+}
+
 own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, const pass_gate& gate) {
     const figure& fig = *f.fig;
     const std::size_t n = fig.panels.size();
@@ -607,6 +641,7 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
         }
         row_band[0] = std::max(row_band[0], legend_band_height(f.plans[i].legend, th, cell.w - 2 * pad));
     }
+    drop_bands_without_room(f, row_band, out, gate);
     bool moved = false;
     for (std::size_t i = 0; i < n; ++i) {
         const double h = row_band[i / static_cast<std::size_t>(fig.cols)];

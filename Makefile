@@ -9,7 +9,7 @@
 #   make install    install under PREFIX (default /usr/local), DESTDIR honoured
 #   make deb        build the Debian packages pendulum-figures and libpendulum-dev
 #   make fuzz       run the fuzzers (FUZZ_SECONDS each)
-#   make tidy       clang-tidy on the core library (src/pendulum), .clang-tidy's checks
+#   make tidy       clang-tidy on every source file (src/), .clang-tidy's checks
 #   make clean      remove the build directory
 
 BUILD ?= build
@@ -170,11 +170,12 @@ deb: deps
 	packaging/build-deb.sh $(BUILD) $(BUILD)
 
 # make tidy: clang-tidy with the checks of .clang-tidy (every function's cognitive complexity
-# at most 25) on every source file of the core library, compiled as the build compiles it
+# at most 25) on every source file of the four layers, compiled as the build compiles it
 # (the build directory's compile_commands.json); any report fails.
 tidy: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
-	clang-tidy -p $(BUILD) --quiet --extra-arg=-Wno-unknown-warning-option src/pendulum/*.cpp
+	ls src/pendulum/*.cpp src/plot/*.cpp src/figures/*.cpp src/cli/*.cpp | \
+	  xargs -P $(JOBS) -n 8 clang-tidy -p $(BUILD) --quiet --extra-arg=-Wno-unknown-warning-option
 
 clean:
 	rm -rf $(BUILD)

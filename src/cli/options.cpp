@@ -79,6 +79,17 @@ void check_list_item(const std::string& option, const std::string& text, std::si
     }
 }
 
+std::istream& list_source(const std::string& text, const std::string& option, std::ifstream& file) {
+    if (text == "-") return std::cin;
+    std::error_code ec;
+    if (std::filesystem::is_directory(text.substr(1), ec)) {
+        throw usage_error(option + " " + text + ": '" + text.substr(1) + "' is a directory, not a list");
+    }
+    file.open(text.substr(1), std::ios::binary);
+    if (!file) throw usage_error(option + " " + shown_text(text) + ": cannot read '" + shown_text(text.substr(1)) + "'");
+    return file;
+}
+
 bool read_line(std::istream& in, std::string& line) {
     // istream::getline scans the stream's buffer a block at a time (a character at a time
     // was a tenth of reading a million amplitudes); it stores at most max_list_line_bytes + 1.

@@ -46,6 +46,26 @@ void check_list_item(const std::string& option, const std::string& text, std::si
 /// more time or memory than that.
 bool read_line(std::istream& in, std::string& line);
 
+/// The stream a list option reads, `text` being @FILE (opened into `file`) or - (standard
+/// input); a directory or a file that cannot be read is a usage error.
+std::istream& list_source(const std::string& text, const std::string& option, std::ifstream& file);
+
+/// Calls take(item) for each comma-separated item of one line, trimmed, as split_list cuts
+/// them (an empty one included).
+template <class Take>
+void for_each_line_item(std::string_view line, Take take) {
+    for (std::string_view rest = line;;) {
+        const auto comma = rest.find(',');
+        std::string_view item = rest.substr(0, comma);
+        const auto first = item.find_first_not_of(" \t\r");
+        item = first == std::string_view::npos ? std::string_view()
+                                               : item.substr(first, item.find_last_not_of(" \t\r") - first + 1);
+        take(item);
+        if (comma == std::string_view::npos) return;
+        rest.remove_prefix(comma + 1);
+    }
+}
+
 /// Calls take(item) for each item of a list option: its text, or the lines (each
 /// comma-separated, # comments) of FILE for @FILE and of standard input for -, read as
 /// they come, so that a million amplitudes need no more memory than their values.
@@ -60,15 +80,7 @@ void for_each_item(const std::string& text, const std::string& option, Take take
         return;
     }
     std::ifstream file;
-    if (text != "-") {
-        std::error_code ec;
-        if (std::filesystem::is_directory(text.substr(1), ec)) {
-            throw usage_error(option + " " + text + ": '" + text.substr(1) + "' is a directory, not a list");
-        }
-        file.open(text.substr(1), std::ios::binary);
-        if (!file) throw usage_error(option + " " + shown_text(text) + ": cannot read '" + shown_text(text.substr(1)) + "'");
-    }
-    std::istream& in = text == "-" ? std::cin : file;
+    std::istream& in = list_source(text, option, file);
     bool any = false;
     std::size_t number = 0;
     for (std::string line; read_line(in, line);) {
@@ -79,19 +91,11 @@ void for_each_item(const std::string& text, const std::string& option, Take take
         }
         if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        // The comma-separated items, trimmed, as split_list cuts them (an empty one included).
-        for (std::string_view rest = line;;) {
-            const auto comma = rest.find(',');
-            std::string_view item = rest.substr(0, comma);
-            const auto first = item.find_first_not_of(" \t\r");
-            item = first == std::string_view::npos ? std::string_view()
-                                                   : item.substr(first, item.find_last_not_of(" \t\r") - first + 1);
+        for_each_line_item(line, [&](std::string_view item) {
             check_list_item(option, text, ++count, item);
             take(std::string(item));
             any = true;
-            if (comma == std::string_view::npos) break;
-            rest.remove_prefix(comma + 1);
-        }
+        });
     }
     if (!any) throw usage_error(option + " " + text + ": no values");
 }

@@ -230,6 +230,16 @@ std::vector<extent> extents(const panel& p, const theme& th, bool horizontal, bo
 
 namespace {
 
+/// The limits (lo, hi) widened so that every extent stands its clearance (in points, at
+/// `per_pt` axis units a point) inside them.
+std::pair<double, double> limits_clear_of(const std::vector<extent>& data, double lo, double hi, double per_pt) {
+    for (const extent& e : data) {
+        lo = std::min(lo, e.lo - e.clear * per_pt);
+        hi = std::max(hi, e.hi + e.clear * per_pt);
+    }
+    return {lo, hi};
+}
+
 /// Moves one free axis's limits out until every extent stands clear of the frame. The
 /// length in points depends on the limits where the aspect is equal: a few rounds settle it.
 void keep_axis_off_frame(const panel& p, panel_plan& plan, const rect& cell, const std::vector<extent>& data,
@@ -243,13 +253,7 @@ void keep_axis_off_frame(const panel& p, panel_plan& plan, const rect& cell, con
         double lo = log ? std::log10(t.lo) : t.lo;
         double hi = log ? std::log10(t.hi) : t.hi;
         if (!(length > 0) || !(hi > lo)) return;
-        const double per_pt = (hi - lo) / length;
-        double need_lo = lo;
-        double need_hi = hi;
-        for (const extent& e : data) {
-            need_lo = std::min(need_lo, e.lo - e.clear * per_pt);
-            need_hi = std::max(need_hi, e.hi + e.clear * per_pt);
-        }
+        const auto [need_lo, need_hi] = limits_clear_of(data, lo, hi, (hi - lo) / length);
         const bool moved = (!a.min && need_lo < lo) || (!a.max && need_hi > hi);
         if (!moved) return;
         if (!a.min) lo = need_lo;

@@ -102,3 +102,34 @@ TEST(PlotLabels, AnEmptyPanelTitleIsAcceptedAsInASpec) {
     EXPECT_EQ(v.status, 2) << "a value, unlike a label, may not be empty";
     fs::remove_all(dir);
 }
+
+namespace {
+
+/// The resolution a PNG says it has (its pHYs chunk), read back by Pillow.
+double png_dpi(const fs::path& png) {
+    const auto r = run_command("/usr/bin/python3 -c \"from PIL import Image; print(Image.open('" + png.string() +
+                               "').info['dpi'][0])\"");
+    EXPECT_EQ(r.status, 0) << r.err;
+    return std::stod(r.out);
+}
+
+}  // namespace
+
+// A slide is seen whole: at --size 1920x1080 the slides theme keeps its 25.4-cm page, so its
+// text keeps its share of the frame (192 dpi, not 128); --dpi, when given, still wins, and a
+// theme sized by its panels (paper) keeps its resolution.
+TEST(SlideSize, TextKeepsItsShareOfTheFrameAtAnySize) {
+    const auto dir = temp_dir("slide-size");
+    const std::string plot = "plot trajectory --theta0 170deg --methods exact -f png ";
+    ASSERT_EQ(run_cli(plot + "--theme slides --name s720", dir).status, 0);
+    ASSERT_EQ(run_cli(plot + "--theme slides --size 1920x1080 --name s1080", dir).status, 0);
+    ASSERT_EQ(run_cli(plot + "--theme slides --size 3840x2160 --name s2160", dir).status, 0);
+    ASSERT_EQ(run_cli(plot + "--theme slides --size 1920x1080 --dpi 128 --name fixed", dir).status, 0);
+    ASSERT_EQ(run_cli(plot + "--theme paper --size 1000x600 --name paper", dir).status, 0);
+    EXPECT_NEAR(png_dpi(dir / "s720.png"), 128, 0.5);
+    EXPECT_NEAR(png_dpi(dir / "s1080.png"), 192, 0.5);
+    EXPECT_NEAR(png_dpi(dir / "s2160.png"), 384, 0.5);
+    EXPECT_NEAR(png_dpi(dir / "fixed.png"), 128, 0.5);
+    EXPECT_NEAR(png_dpi(dir / "paper.png"), 300, 0.5);
+    fs::remove_all(dir);
+}

@@ -427,6 +427,10 @@ plot::theme load_theme(std::string_view name_or_file, const std::vector<std::str
                 throw_option_problem("size_px", std::string("size_px and ") + key + " both size the figure; give one");
             }
         }
+        // A slide is seen whole, at any size: where the theme has a page width and no
+        // resolution is given, the resolution follows the pixels, so text keeps its share of
+        // the frame (the slides theme at 1920 x 1080 is 25.4 cm at 192 dpi, not 38.1 at 128).
+        if (!t.given.contains("dpi") && t.fixed_width_cm > 0) t.dpi = t.width_px / (t.fixed_width_cm / 2.54);
         t.fixed_width_cm = t.width_px / t.dpi * 2.54;
         t.fixed_height_cm = t.height_px / t.dpi * 2.54;
     }

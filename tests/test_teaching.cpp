@@ -14,13 +14,19 @@ using namespace test_support;
 
 namespace {
 
-/// The number of frames of a GIF, read back by Pillow.
-int gif_frames(const fs::path& gif) {
-    const auto r = run_command("/usr/bin/python3 -c \"from PIL import Image; print(Image.open('" + gif.string() +
-                               "').n_frames)\"");
+/// An image's property read back by Pillow: `expression` of the opened image `im`.
+std::string pillow(const fs::path& image, const std::string& expression) {
+    const auto r = run_command("/usr/bin/python3 -c \"from PIL import Image; im = Image.open('" + image.string() +
+                               "'); print(" + expression + ")\"");
     EXPECT_EQ(r.status, 0) << r.err;
-    return std::stoi(r.out);
+    return r.out;
 }
+
+/// The number of frames of a GIF.
+int gif_frames(const fs::path& gif) { return std::stoi(pillow(gif, "im.n_frames")); }
+
+/// The resolution a PNG says it has (its pHYs chunk).
+double png_dpi(const fs::path& png) { return std::stod(pillow(png, "im.info['dpi'][0]")); }
 
 }  // namespace
 
@@ -103,17 +109,6 @@ TEST(PlotLabels, AnEmptyPanelTitleIsAcceptedAsInASpec) {
     fs::remove_all(dir);
 }
 
-namespace {
-
-/// The resolution a PNG says it has (its pHYs chunk), read back by Pillow.
-double png_dpi(const fs::path& png) {
-    const auto r = run_command("/usr/bin/python3 -c \"from PIL import Image; print(Image.open('" + png.string() +
-                               "').info['dpi'][0])\"");
-    EXPECT_EQ(r.status, 0) << r.err;
-    return std::stod(r.out);
-}
-
-}  // namespace
 
 // A slide is seen whole: at --size 1920x1080 the slides theme keeps its 25.4-cm page, so its
 // text keeps its share of the frame (192 dpi, not 128); --dpi, when given, still wins, and a

@@ -19,7 +19,6 @@ namespace plot {
 namespace {
 
 using enum macro_kind;
-constexpr auto ord = math_class::ordinary;
 constexpr auto bin = math_class::binary;
 constexpr auto rel = math_class::relation;
 

@@ -571,6 +571,15 @@ struct own_legends {
     std::vector<std::optional<rect>> bands;
 };
 
+/// Whether panel i's axes in the cell `squeezed` keep three quarters of their height in its
+/// own cell, and room to read (three tick lines), at the deciding sizes.
+bool axes_keep_room(const figure_layout& f, std::size_t i, const rect& squeezed) {
+    const double least = 3 * f.deciding.tick_font_pt;
+    const rect area = axes_area(f.decided[i], squeezed);
+    const rect before = axes_area(f.decided[i], f.cells[i]);
+    return area.w >= least && area.h >= std::max(least, 0.75 * before.h);
+}
+
 /// In the files of one panel each (a set of peers), a band that would squeeze the axes below
 /// three quarters of their height (or below room to read, three tick lines), at the deciding
 /// sizes, goes: those panels show no legend, and say so, as a shared legend does. Every
@@ -579,17 +588,13 @@ void drop_bands_without_room(const figure_layout& f, std::vector<double>& row_ba
                              const pass_gate& gate) {
     const figure& fig = *f.fig;
     if (fig.peers.empty()) return;  // a whole figure's band moves its rows down; they keep their height
-    const double least = 3 * f.deciding.tick_font_pt;
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
         double& band = row_band[i / static_cast<std::size_t>(fig.cols)];
         if (band <= 0) continue;
         rect squeezed = f.cells[i];
         squeezed.y += band;
         squeezed.h -= band;
-        const rect area = axes_area(f.decided[i], squeezed);
-        const rect before = axes_area(f.decided[i], f.cells[i]);
-        if (area.w >= least && area.h >= std::max(least, 0.75 * before.h)) continue;
-        band = 0;
+        if (!axes_keep_room(f, i, squeezed)) band = 0;
     }
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
         if (out.spots[i] != legend_spot::band || row_band[i / static_cast<std::size_t>(fig.cols)] > 0) continue;
@@ -685,12 +690,9 @@ std::optional<std::size_t> shared_legend_panel(cairo_t* cr, const figure_layout&
 /// three quarters of their height (and room to read), or the band would squeeze the plots
 /// it names. Decided at the deciding sizes.
 bool band_leaves_room(const figure_layout& f, page_size size, double band) {
-    const double least = 3 * f.deciding.tick_font_pt;
     const std::vector<rect> these = make_cells(*f.fig, size, f.title_h + band + 0.3 * f.deciding.padding_pt);
     for (std::size_t i = 0; i < f.fig->panels.size(); ++i) {
-        const rect area = axes_area(f.decided[i], these[i]);
-        const rect before = axes_area(f.decided[i], f.cells[i]);
-        if (area.w < least || area.h < std::max(least, 0.75 * before.h)) return false;
+        if (!axes_keep_room(f, i, these[i])) return false;
     }
     return true;
 }

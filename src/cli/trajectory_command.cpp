@@ -192,7 +192,10 @@ void prepare_run(method_run& r, const trajectory_context& c, const start_option&
         time_scale ts;
         if (unit.name == "t/T0") ts.what = time_scale::unit::small_periods;
         if (unit.name == "t/s") ts = {time_scale::unit::seconds, *o.length, o.g};
-        r.reduce.emplace(m, ts, largest, is_exact ? 0.0 : r.approx.frequency_ratio);
+        // An approximant's phase with its own w/w0 from the exact amplitude (its exact source),
+        // to the precision the largest time needs: not its double w/w0 taken as exact.
+        if (is_exact) r.reduce.emplace(m, ts, largest, 0.0);
+        else r.reduce.emplace(m, ts, largest, r.approx);
     }
     // A libration from a state runs its approximant on its own clock: the phase at time 0.
     r.phase_at_start = is_exact || c.paper_table ? 0.0 : start_phase(m, r.approx);

@@ -266,7 +266,7 @@ void read_energy_starts(key_reading& k, const toml::node& energy) {
     for (const toml::node* e : items_of(energy)) {
         if (auto v = k.r.expression(*e, "energy", false)) {
             add_start(k, *e, "<i>E</i> = " + typeset_angle(v->first), true,
-                      [x = v->second] { return pendulum::motion::from_energy(x); });
+                      [text = v->first] { return pendulum::motion::from_energy(pendulum::written_number::expression(text)); });
         }
     }
 }
@@ -298,7 +298,12 @@ void read_state_starts(key_reading& k, const toml::node& theta0, const toml::nod
         add_start(k, omega0,
                   std::string(theta0_markup) + " = " + typeset_angle(angle_text) + ", <i>\u03c9</i><sub>0</sub> = " +
                       typeset_angle(speed_text),
-                  false, [angle = angle, speed = speed] { return pendulum::motion::from_state({angle, speed}); });
+                  false, [&angle_text = angle_text, &speed_text = speed_text] {
+                      // As written, as the command line reads them: pi-1e-9 keeps its distance from pi,
+                      // 2pi/3 with 1 is the separatrix.
+                      return pendulum::motion::from_state(pendulum::written_number::angle(angle_text),
+                                                          pendulum::written_number::expression(speed_text));
+                  });
     }
 }
 

@@ -10,11 +10,14 @@
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
 #include "pendulum/phase.hpp"
+#include "pendulum/time_reduction.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 
@@ -75,6 +78,51 @@ std::function<double(double)> start_theta(const method_spec& m, const pendulum::
     };
 }
 
+/// theta(s), s = t/T, of an approximant at amplitude a for times up to `largest` in size: its
+/// phase (w/w0) w0 t reduced exactly with its own w/w0 from the exact amplitude (time_reducer
+/// with the solution's exact source), so that the figure's numbers are the trajectory
+/// command's at any time.
+std::function<double(double)> approximant_theta(const pendulum::method_choice& method, const pendulum::amplitude& a,
+                                                double largest, double period, double angle) {
+    auto solution = std::make_shared<const pendulum::fourier_solution>(pendulum::method_solution(method, a));
+    if (!solution->exists()) {
+        return [solution, period, angle](double s) { return angle * solution->theta(s * period); };
+    }
+    auto reduce = std::make_shared<const pendulum::time_reducer>(a, pendulum::time_scale{}, largest, *solution);
+    return [solution, reduce, angle](double s) { return angle * solution->theta_at_phase(reduce->phase(s)); };
+}
+
+/// The unit of a start panel's time axis as time_reducer takes it.
+pendulum::time_scale start_time_scale(const figure_spec& spec, const panel_spec& p) {
+    if (p.time == time_unit::small_period) return {pendulum::time_scale::unit::small_periods};
+    if (p.time == time_unit::seconds) {
+        return {pendulum::time_scale::unit::seconds, spec.pendulum->length_m, spec.pendulum->g};
+    }
+    return {};
+}
+
+/// theta(x) of a start's exact motion at x in the axis' unit (w0 t = x unit), as the
+/// trajectory command computes it: x reduced modulo the motion's period exactly (time_reducer,
+/// for times up to `largest`) and a rotation's whole revolutions added back exactly. The
+/// separatrix has no period.
+std::function<double(double)> exact_start_theta(const pendulum::motion& motion, const pendulum::time_scale& ts,
+                                                double unit, double largest) {
+    if (!motion.has_period()) return [motion, unit](double x) { return motion.theta(x * unit); };
+    // A reducer keeps the last reduction's whole periods: one caller at a time.
+    struct clock {
+        clock(const pendulum::motion& m, const pendulum::time_scale& ts, double largest) : reduce(m, ts, largest) {}
+        pendulum::time_reducer reduce;
+        std::mutex lock;
+    };
+    auto c = std::make_shared<clock>(motion, ts, largest);
+    const int turns = motion.start().omega < 0 ? -1 : 1;
+    return [motion, c, turns](double x) {
+        const std::lock_guard<std::mutex> hold(c->lock);
+        const double theta = motion.theta(c->reduce(x));
+        return motion.kind() == pendulum::regime::rotation ? c->reduce.plus_turns(theta, turns) : theta;
+    };
+}
+
 /// A trajectory of one start (energy or state): theta(t) unwrapped, a rotation's angle rising.
 plot::panel start_trajectory_panel(const panel_context& c, const panel_spec& p) {
     const motion_start& start = p.starts.front();
@@ -100,7 +148,11 @@ plot::panel start_trajectory_panel(const panel_context& c, const panel_spec& p) 
     const int circles = std::clamp(static_cast<int>(std::lround(24 * cycles)), 2, 2400);
     for (std::size_t i = 0; i < p.methods.size(); ++i) {
         const auto& m = p.methods[i];
-        const auto theta = [f = start_theta(m, start.motion), unit = unit, angle](double x) { return angle * f(x * unit); };
+        const std::function<double(double)> f =
+            is_exact(m) ? exact_start_theta(start.motion, start_time_scale(c.spec, p), unit,
+                                            std::max(std::fabs(lo), std::fabs(hi)))
+                        : [g = start_theta(m, start.motion), unit = unit](double x) { return g(x * unit); };
+        const auto theta = [f, angle](double x) { return angle * f(x); };
         panel.data.push_back(make_series(style_of(m, static_cast<int>(i)), grid(lo, hi, is_exact(m) ? circles : 300), theta));
         panel.data.back().curve =
             plot::parametric_curve(lo, hi, [theta](double x) { return std::pair{x, theta(x)}; }, pieces);
@@ -166,9 +218,7 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
             };
             check_formula_finite(m.method, grid(lo, hi, points), [&theta](double s) { return theta(s); });
         } else {
-            theta = [solution = pendulum::method_solution(m.method, a.theta0()), period, angle](double s) {
-                return angle * solution.theta(s * period);
-            };
+            theta = approximant_theta(m.method, a.theta0(), std::max(std::fabs(lo), std::fabs(hi)), period, angle);
         }
         panel.data.push_back(make_series(st, grid(lo, hi, is_exact(m) ? circles : points), theta));
         panel.data.back().x = scaled(std::move(panel.data.back().x));

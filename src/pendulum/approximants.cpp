@@ -311,14 +311,19 @@ fourier_solution iterated(const amplitude& theta0, int order) {
 
 namespace {
 
-/// Level n of the iteration in MPFR at the exact amplitude, for a level's exact_source.
 /// How many bits of w/w0 the extended iteration keeps: its rounding grows from level to
 /// level and towards pi, to 2^-57.1 relative measured at d = 0.0201 (2^-61 at d >= 1).
 constexpr int extended_ratio_bits = 56;
 
+/// Level n of the iteration in MPFR at the exact amplitude, for a level's exact_source.
+/// Close to pi the iteration amplifies the rounding of every level: a run with p bits whose
+/// levels agree with the run at p/2 to 1e-15 (2^-49.8) amplifies by less than 2^(p/2 - 49),
+/// so `extra_bits` = p/2 more than asked keep w/w0 within 2^-(bits - 16) at any precision
+/// asked (without them a phase at pi - 1e-12, order 92, came from a 73-bit run: off by 1e-7).
 std::shared_ptr<const exact_source> iteration_source(const amplitude& a, int n, long double known_ratio,
-                                                     int known_bits) {
-    return make_source([a, n](mpfr_prec_t bits) {
+                                                     int known_bits, mpfr_prec_t extra_bits = 0) {
+    return make_source([a, n, extra_bits](mpfr_prec_t asked) {
+        const mpfr_prec_t bits = asked + extra_bits;
         const auto x = mp::exact_amplitude(a, bits);
         std::vector<std::vector<mp::real>> u;
         const auto lambdas = detail::mp_lambdas(x, n, bits, {}, &u);
@@ -336,10 +341,11 @@ std::vector<fourier_solution> iterated_sequence(const amplitude& a, int order) {
     check_order(order);
     // Close to pi the iteration's rounding grows at every level: MPFR there.
     if (a.from_pi() >= detail::iteration_mp_below) return iterated_sequence_extended(a, order);
-    auto levels = detail::iterated_sequence_mp(a, order);
+    mpfr_prec_t bits = 0;
+    auto levels = detail::iterated_sequence_mp(a, order, &bits);
     // Their w/w0 agree with a run at half the bits to 1e-15, and are rounded to doubles.
     for (std::size_t n = 0; n < levels.size(); ++n) {
-        levels[n].exact = iteration_source(a, static_cast<int>(n), levels[n].frequency_ratio, 49);
+        levels[n].exact = iteration_source(a, static_cast<int>(n), levels[n].frequency_ratio, 49, bits / 2);
     }
     return levels;
 }

@@ -200,7 +200,7 @@ std::vector<fourier_solution> mp_sequence(const amplitude& a, int order, mpfr_pr
 
 }  // namespace
 
-std::vector<fourier_solution> detail::iterated_sequence_mp(const amplitude& a, int order) {
+std::vector<fourier_solution> detail::iterated_sequence_mp(const amplitude& a, int order, mpfr_prec_t* bits_used) {
     // Close to pi the iteration amplifies rounding enormously (at pi - 1e-12 doubles give
     // T_92/T0 = 22.26 and T_90/T0 = 13.30 where the iteration itself gives 26.59 and 15.06,
     // tests/data/make_iteration_near_pi.py): the precision is doubled until every level's
@@ -215,7 +215,10 @@ std::vector<fourier_solution> detail::iterated_sequence_mp(const amplitude& a, i
             const bool agree = (std::isnan(wc) && std::isnan(wf)) || std::fabs(wc / wf - 1) <= 1e-15;
             if (!agree) differs = static_cast<int>(n);
         }
-        if (differs < 0) return fine;
+        if (differs < 0) {
+            if (bits_used) *bits_used = bits;
+            return fine;
+        }
         if (bits >= 2048) {
             throw domain_error("the iteration at order " + std::to_string(differs) + " for theta0 = " +
                                format_amplitude(a) + " cannot be computed to 1e-15 with 2048 bits");

@@ -50,8 +50,10 @@ inline constexpr double iteration_mp_below = 0.02;
 /// Levels 0 to `order` (0 <= order <= max_order, checked by the caller) of the iteration
 /// computed with 128 bits and more, rounded once to doubles;
 /// a level without a period has a NaN frequency, as in iterated_sequence(). Throws
-/// domain_error where the projection does not converge with 2^15 points.
-std::vector<fourier_solution> iterated_sequence_mp(const amplitude& theta0, int order);
+/// domain_error where the projection does not converge with 2^15 points. `bits_used`, if
+/// given, receives the precision whose levels agreed with the run at half of it.
+std::vector<fourier_solution> iterated_sequence_mp(const amplitude& theta0, int order,
+                                                   mpfr_prec_t* bits_used = nullptr);
 
 /// lambda = (w/w0)^2 of levels 0 .. order with `bits` at the exact amplitude x; an unset
 /// entry where the projection did not converge (that level and all later ones). Stops after

@@ -129,9 +129,10 @@ std::unique_ptr<time_reducer::state> reducer_setup::make(const std::function<rea
     const bool exact = source != nullptr && frequency_ratio > 0;
     real ratio = exact ? exact_ratio(*source, time_exponent + mp::exponent(rough_scale) + std::ilogb(frequency_ratio), bits)
                        : real(frequency_ratio, bits);
+    const long double ratio_extended = exact ? extended(ratio) : static_cast<long double>(frequency_ratio);
     auto s = std::make_unique<time_reducer::state>(time_reducer::state{
         per_unit, period, std::move(ratio), 2.0 * mp::pi(bits), extended(per_unit), extended(period),
-        static_cast<long double>(frequency_ratio), real(bits + 64), real(bits), real(bits), real(0.0, bits), exact});
+        ratio_extended, real(bits + 64), real(bits), real(bits), real(0.0, bits), exact});
     return s;
 }
 
@@ -158,13 +159,17 @@ double time_reducer::operator()(double s) const {
 double time_reducer::phase(double s) const {
     if (!std::isfinite(s)) throw domain_error("time must be finite, got " + format_double(s));
     if (!(state_->ratio_extended > 0)) throw domain_error("a phase needs the Fourier solution's frequency ratio");
-    // With a double ratio taken as exact, within one period of the phase: w0 t rounded
-    // once, times w/w0 rounded once (an ulp or two of x, the same as the formula at w0 t in
-    // doubles). With the solution's own ratio every phase is formed in MPFR and rounded once.
+    // Within one period of the phase: with a double ratio taken as exact, w0 t rounded once,
+    // times w/w0 rounded once (an ulp or two of x, the same as the formula at w0 t in doubles);
+    // with the solution's own ratio (to 2^-56 or better, held in extended precision) the
+    // product in extended precision rounded once. Further out the phase is formed in MPFR.
     if (!state_->exact_ratio) {
         const double w = static_cast<double>(s * state_->scale_extended);
         const double x = static_cast<double>(state_->ratio_extended) * w;
         if (std::fabs(x) < 2 * std::numbers::pi) return x;
+    } else {
+        const long double x = s * state_->scale_extended * state_->ratio_extended;
+        if (std::fabs(x) < 2 * std::numbers::pi_v<long double>) return static_cast<double>(x);
     }
     // Locals, not the state's scratch numbers: phase() is safe to call from several threads.
     real product(state_->product.precision());

@@ -8,7 +8,8 @@ then evaluated at 60 digits: theta = sum_k c_k cos((2k+1) x), x = sqrt(lambda) w
 w0 t = s 4 K(k) (s = t/T in periods of the exact motion of pi - d, d the double nearest
 1e-12, as the program holds it).
 
-Writes order92_near_pi.csv: the trajectory arguments and theta (25 digits).
+Writes order92_near_pi.csv: the trajectory arguments and theta (25 digits); the last two
+times, 1e6 periods out, are the ends of the longest range a figure's panel takes.
 
 Run with /usr/bin/python3 (python3-mpmath): a few minutes.
 """
@@ -23,7 +24,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import make_iteration_near_pi as iteration  # noqa: E402
 
 ORDER = 92
-TIMES = ["0.1", "0.25", "0.5", "1", "2.7"]
+TIMES = ["0.1", "0.25", "0.5", "1", "2.7", "999999.75", "1000000"]
 
 
 def main():

@@ -20,6 +20,9 @@ namespace {
 
 using test_support::run_cli;
 
+/// A number as printed (strtod: no exception for the tiny values near the top).
+double number(const std::string& text) { return std::strtod(text.c_str(), nullptr); }
+
 /// The rows of a CSV table printed by a command, split at commas, the header first.
 std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
     std::vector<std::vector<std::string>> rows;
@@ -106,6 +109,29 @@ TEST(LongTimesCommand, TheIssuesReproductions) {
     const auto near = run_cli("trajectory --theta0 pi-1e-12 --method first --at 0.9");
     ASSERT_EQ(near.status, 0) << near.err;
     EXPECT_NEAR(std::stod(csv_rows(near.out).at(1).at(1)), 0.2511412146364261481859648, 4 * 4.44e-16);
+}
+
+TEST(LongTimesCommand, AStatesReducedTimeIsCarriedBeyondOneDouble) {
+    // state_long_times.csv (make_state_long_times.py, 3500 bits): rotations from (1e-300, 2)
+    // and (3, 0.5) out to the largest double. The reduced w0 t was one double (half an ulp of
+    // up to 700 rad): theta(441 T0) for (1e-300, 2) was 11.543765862800525, 335 ulps from
+    // 11.54376586279993. An angle beyond the largest double is left out (none can hold it).
+    const auto rows = test_support::read_reference_text("state_long_times.csv");
+    ASSERT_GE(rows.size(), 12u);
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const double want = number(rows[i].at(1));
+        if (!(std::fabs(want) < 1e308)) continue;
+        const auto r = run_cli(rows[i].at(0));
+        ASSERT_EQ(r.status, 0) << rows[i].at(0) << ": " << r.err;
+        const auto got = csv_rows(r.out);
+        const double scale = std::max(std::fabs(want), 2 * M_PI);
+        const double ulp = std::nextafter(scale, 1e308) - scale;
+        EXPECT_LE(std::fabs(number(got.at(1).at(1)) - want), 4 * ulp) << rows[i].at(0);
+        // omega at the double of the reduced time: right to an ulp or two of 2 up to 1e15 T0.
+        if (std::fabs(number(rows[i].at(0).substr(rows[i].at(0).rfind(' ') + 1))) <= 1e15) {
+            EXPECT_NEAR(number(got.at(1).at(2)), number(rows[i].at(2)), 2e-15) << rows[i].at(0);
+        }
+    }
 }
 
 TEST(LongTimesFigures, ApproximantsAThousandPeriodsOutAreTheReferenceAndTheCommands) {

@@ -153,7 +153,6 @@ struct trajectory_context {
     bool state;        // a state or energy: omega too, theta unwrapped
     bool paper_table;  // an amplitude in t/T: the paper's table
     long double scale; // w0 t per unit of time
-    int turns_per_period;
     bool fractions;    // a libration in t/T: times as fractions of its period
 };
 
@@ -225,11 +224,16 @@ void append_values(const trajectory_context& c, const method_run& r, double s, s
         if (c.state) row.push_back(m.velocity_at_fraction(s));
         return;
     }
+    if (r.reduce) {
+        // The time reduced exactly as a double-double; a rotation's revolutions added back exactly.
+        const motion_point p = point_at(m, *r.reduce, s);
+        row.push_back(p.theta);
+        if (c.state) row.push_back(p.omega);
+        return;
+    }
     const long double far = 1e300L;
-    const double t = r.reduce ? (*r.reduce)(s) : static_cast<double>(std::clamp(s * c.scale, -far, far));
-    // A rotation's angle grows by 2 pi a revolution: the whole revolutions are added back exactly.
-    const double theta = m.theta(t);
-    row.push_back(m.kind() == regime::rotation ? r.reduce->plus_turns(theta, c.turns_per_period) : theta);
+    const double t = static_cast<double>(std::clamp(s * c.scale, -far, far));
+    row.push_back(m.theta(t));
     if (c.state) row.push_back(m.velocity(t));
 }
 
@@ -385,7 +389,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     const std::vector<double> times = times_at(o, unit, periods_given);
     if (methods.front().user) return write_formula_trajectory(out, format, methods.front(), start, state, unit, w0, o, times);
     const bool paper_table = !state && unit.name == "t/T";
-    const trajectory_context c{m, state, paper_table, unit.scale(m, w0), m.start().omega < 0 ? -1 : 1,
+    const trajectory_context c{m, state, paper_table, unit.scale(m, w0),
                                !paper_table && unit.name == "t/T" && m.kind() == regime::libration && m.starts_at_quarter()};
     std::deque<method_run> runs;  // in place: a time reducer stays where it is made
     for (const auto& method : methods) prepare_run(runs.emplace_back(method), c, start, o, unit, times);

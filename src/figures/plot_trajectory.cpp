@@ -115,11 +115,9 @@ std::function<double(double)> exact_start_theta(const pendulum::motion& motion, 
         std::mutex lock;
     };
     auto c = std::make_shared<clock>(motion, ts, largest);
-    const int turns = motion.start().omega < 0 ? -1 : 1;
-    return [motion, c, turns](double x) {
+    return [motion, c](double x) {
         const std::lock_guard<std::mutex> hold(c->lock);
-        const double theta = motion.theta(c->reduce(x));
-        return motion.kind() == pendulum::regime::rotation ? c->reduce.plus_turns(theta, turns) : theta;
+        return pendulum::point_at(motion, c->reduce, x).theta;
     };
 }
 

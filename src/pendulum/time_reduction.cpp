@@ -27,6 +27,7 @@ struct time_reducer::state {
     mutable real quotient;
     mutable real rest;
     mutable real turns;  // the whole periods the last reduction took off
+    mutable double low = 0;  // the last reduced time less its double
     bool exact_ratio = false;  // ratio is w/w0 to its precision, not a double taken as exact
 };
 
@@ -144,16 +145,37 @@ double time_reducer::operator()(double s) const {
     const long double w = s * state_->scale_extended;
     if (std::fabs(w) < state_->period_extended) {
         mpfr_set_zero(state_->turns.get(), 1);
-        return static_cast<double>(w);
+        const double t = static_cast<double>(w);
+        state_->low = static_cast<double>(w - t);
+        return t;
     }
     mpfr_mul_d(state_->product.get(), state_->scale.get(), s, MPFR_RNDN);
-    // n = trunc(w0 t / P) (off by one at worst next to a multiple of P, where the rest is
-    // then just outside (-P, P): still the exact difference), rest = w0 t - n P rounded once.
+    // n = round(w0 t / P) (off by one at worst next to a half period, where the rest is then
+    // just outside [-P/2, P/2]: still the exact difference), rest = w0 t - n P, and the rest
+    // as a double-double: its double and what that leaves.
     mpfr_div(state_->quotient.get(), state_->product.get(), state_->period.get(), MPFR_RNDN);
-    mpfr_trunc(state_->turns.get(), state_->quotient.get());
+    mpfr_rint(state_->turns.get(), state_->quotient.get(), MPFR_RNDN);
     mpfr_fms(state_->rest.get(), state_->turns.get(), state_->period.get(), state_->product.get(), MPFR_RNDN);
     mpfr_neg(state_->rest.get(), state_->rest.get(), MPFR_RNDN);
-    return state_->rest.to_double();
+    const double t = state_->rest.to_double();
+    mpfr_sub_d(state_->quotient.get(), state_->rest.get(), t, MPFR_RNDN);
+    state_->low = mpfr_get_d(state_->quotient.get(), MPFR_RNDN);
+    return t;
+}
+
+double time_reducer::low() const { return state_->low; }
+
+motion_point point_at(const motion& m, const time_reducer& reduce, double s) {
+    const double t = reduce(s);
+    const double low = reduce.low();
+    // theta(t + low) = theta(t) + theta'(t) low + O(low^2), low below half an ulp of t.
+    const double omega = m.velocity(t);
+    const double theta = m.theta(t);
+    // omega is left at the double time: theta'' = -sin(theta) from a theta next to a multiple
+    // of pi has no relative digits, where omega itself is next to 0.
+    motion_point p{theta + omega * low, omega};
+    if (m.kind() == regime::rotation) p.theta = reduce.plus_turns(p.theta, m.start().omega < 0 ? -1 : 1);
+    return p;
 }
 
 double time_reducer::phase(double s) const {

@@ -44,9 +44,14 @@ public:
     time_reducer(const time_reducer&) = delete;
     time_reducer& operator=(const time_reducer&) = delete;
 
-    /// w0 t for the time s, reduced to (-P, P) with the sign of s (P the period in w0 t); the
-    /// whole periods taken off are kept for plus_turns().
+    /// w0 t for the time s rounded once, w0 t itself within one period (|w0 t| < P, P the
+    /// period in w0 t), reduced to [-P/2, P/2] beyond; the whole periods taken off are kept
+    /// for plus_turns(), the part below the result's rounding for low().
     double operator()(double s) const;
+    /// The reduced time the last operator() rounded, less that double: the low half of a
+    /// double-double (below half an ulp of it), so that a motion's angle at the reduced time
+    /// can be right to an ulp however far out the time is (point_at()).
+    double low() const;
     /// The phase (w/w0) w0 t of the Fourier solution at the time s, reduced to (-2 pi, 2 pi)
     /// (to [-pi, pi] and rounded once with the solution's exact source); throws domain_error
     /// unless a frequency ratio was given. Safe to call from several threads at once.
@@ -60,5 +65,17 @@ private:
     friend struct reducer_setup;
     std::unique_ptr<state> state_;
 };
+
+/// theta and theta'/w0 of a motion at one time.
+struct motion_point {
+    double theta = 0;  ///< the angle, unwrapped (a rotation's whole revolutions added back exactly)
+    double omega = 0;  ///< theta'/w0
+};
+
+/// A motion with a period at the time s (in the reducer's unit): the time reduced exactly as
+/// a double-double, the angle at its double corrected by theta' times its low half, a
+/// rotation's revolutions added back (forward or backward with the start's velocity), omega
+/// at the double: what the trajectory command and the figures print.
+motion_point point_at(const motion& m, const time_reducer& reduce, double s);
 
 }  // namespace pendulum

@@ -31,7 +31,7 @@ def point(theta0, omega0, s):
     u = 2 * mp.pi * s / k + mp.ellipf(theta0 / 2, m)
     n = mp.nint(u / (2 * quarter))
     r = u - 2 * n * quarter
-    phi = r  # near m = 1 the amplitude is close to gd(r); Newton from asin(tanh(r))
+    # Near m = 1 the amplitude is close to gd(r) = asin(tanh(r)): Newton from there.
     phi = mp.asin(mp.tanh(r))
     for _ in range(200):
         step = (mp.ellipf(phi, m) - r) * mp.sqrt(1 - m * mp.sin(phi) ** 2)

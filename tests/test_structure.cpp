@@ -143,6 +143,10 @@ TEST(Suggest, EveryLayerSuggestsASwappedPair) {
     EXPECT_EQ(thrown<plot::bad_input>([] { plot::tex_to_markup("$\\lmabda$"); }),
               "label '$\\lmabda$': unknown macro \\lmabda (did you mean \\lambda?)");
     EXPECT_EQ(figures::suggest("mtehods", {"methods", "theta0"}), "methods");
+    // A short macro with a swapped pair: two edits for Levenshtein (no suggestion below 5
+    // letters), one here.
+    EXPECT_EQ(thrown<plot::bad_input>([] { plot::tex_to_markup("$\\tua$"); }),
+              "label '$\\tua$': unknown macro \\tua (did you mean \\tau?)");
 }
 
 // ---------------------------------------------------------------------------------------

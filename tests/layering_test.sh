@@ -2,6 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The layers include only what is below them: src/pendulum (the core) nothing of the others;
 # src/plot nothing of src/pendulum, src/figures or src/cli; src/figures nothing of src/cli.
+# src/common (header-only: the bad-input type, the edit distance) is below every layer: any
+# may include it, and it includes none of them.
 # The core's installed headers (the install(FILES ...) list of CMakeLists.txt) include no GSL
 # header and no project header that is not installed with them.
 # Usage: layering_test.sh SOURCE_DIR
@@ -17,12 +19,18 @@ forbid() {
     local layers
     layers=$(IFS='|'; echo "$*")
     local hits
-    hits=$(grep -nE "^[[:space:]]*#[[:space:]]*include[[:space:]]*[\"<]($layers)/" src/"$dir"/*.cpp src/"$dir"/*.hpp || true)
+    local files
+    files=$(find src/"$dir" -maxdepth 1 \( -name '*.cpp' -o -name '*.hpp' \) | sort)
+    [ -n "$files" ] || { fail "src/$dir has no source files"; return; }
+    # shellcheck disable=SC2086 # one word per file name (no spaces in src/)
+    hits=$(grep -nE "^[[:space:]]*#[[:space:]]*include[[:space:]]*[\"<]($layers)/" $files || true)
     [ -z "$hits" ] || fail "src/$dir includes from $*:"$'\n'"$hits"
 }
 forbid pendulum plot figures cli
 forbid plot pendulum figures cli
 forbid figures cli
+forbid common pendulum plot figures cli
+[ -z "$(find src/common -name '*.cpp')" ] || fail "src/common is header-only: $(find src/common -name '*.cpp')"
 
 # The installed headers: the src/pendulum/*.hpp named in CMakeLists.txt's install(FILES ...).
 installed=$(awk '/^install\(FILES/ { on = 1 } on { print } on && /\)/ { on = 0 }' CMakeLists.txt |

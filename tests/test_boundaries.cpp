@@ -12,6 +12,7 @@
 #include "plot/output.hpp"
 #include "plot/ticks.hpp"
 #include "png_image.hpp"
+#include "rgb24_image.hpp"
 #include "process.hpp"
 #include "reference.hpp"
 
@@ -235,17 +236,7 @@ TEST(Boundaries, AMarkerCountsAsFarAsItsRadius) {
 
 namespace {
 
-/// An RGB24 image of the given pixels (0xRRGGBB), one row a line of `width`.
-plot::argb_image rgb24(const std::vector<std::uint32_t>& pixels, int width) {
-    plot::argb_image im;
-    im.width = width;
-    im.height = static_cast<int>(pixels.size()) / width;
-    im.stride = 4 * width;
-    im.rgb24 = true;
-    im.data.resize(pixels.size() * 4);
-    std::memcpy(im.data.data(), pixels.data(), im.data.size());
-    return im;
-}
+using test_support::rgb24;
 
 /// What libpng reads from a PNG's header: its format flags and the entries of its palette.
 struct png_header {

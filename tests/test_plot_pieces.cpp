@@ -7,6 +7,7 @@
 #include "plot/output.hpp"
 
 #include "png_image.hpp"
+#include "rgb24_image.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,16 +18,7 @@
 
 namespace {
 
-plot::argb_image rgb24(const std::vector<std::uint32_t>& pixels, int width) {
-    plot::argb_image im;
-    im.width = width;
-    im.height = static_cast<int>(pixels.size()) / width;
-    im.stride = 4 * width;
-    im.rgb24 = true;
-    im.data.resize(pixels.size() * 4);
-    std::memcpy(im.data.data(), pixels.data(), im.data.size());
-    return im;
-}
+using test_support::rgb24;
 
 /// The PNG's colour type (IHDR's byte 25).
 int colour_type(const std::string& png) { return png.size() > 25 ? static_cast<unsigned char>(png[25]) : -1; }

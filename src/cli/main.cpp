@@ -2,12 +2,10 @@
 // pendulum-figures: the command line. The app, its commands (one file each), and the
 // mapping of errors to exit codes: 2 for bad input, 1 for anything else.
 #include "cli/commands.hpp"
-#include "cli/errors.hpp"
 #include "cli/options.hpp"
 #include "cli/report.hpp"
-#include "figures/errors.hpp"
+#include "common/errors.hpp"
 #include "pendulum/amplitude.hpp"
-#include "plot/errors.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -115,17 +113,14 @@ int main(int argc, char** argv) {
         }
         report_error(message);
         return 2;
-    } catch (const cli::usage_error& e) {
+    } catch (const common::bad_input& e) {
+        // plot::bad_input, figures::bad_input and cli::usage_error are this one type: an
+        // option or value, a spec or style file with problems, a figure the theme leaves too
+        // little room.
         report_error(e.what());
-        return 2;
-    } catch (const figures::bad_input& e) {
-        report_error(e.what());  // includes a spec or style file with problems
-        return 2;
-    } catch (const plot::bad_input& e) {
-        report_error(e.what());  // includes a figure the theme leaves too little room
         return 2;
     } catch (const pendulum::domain_error& e) {
-        report_error(e.what());
+        report_error(e.what());  // the core's own: an amplitude outside (0, pi)
         return 2;
     } catch (const std::bad_alloc&) {
         report_error("out of memory; a lower --dpi or fewer figures at once need less");

@@ -250,11 +250,7 @@ std::string animation_table(const plot_options& o, const std::string& keys) {
     const auto* row = figures::find_plot(o.kind);
     if (!row) return "";  // the spec reader names the kinds
     const bool video = any_format(o.formats, [](const plot::format_row& f) { return f.write == nullptr; });
-    // A format that plays motion: pictures whose every frame goes into one file (GIF, video),
-    // not a sequence of PNGs nor a PDF of pages.
-    const bool moving = any_format(o.formats, [](const plot::format_row& f) {
-        return f.raster && f.animate && f.frame_file && f.frame_file("x", 0, 2) == f.frame_file("x", 1, 2);
-    });
+    const bool moving = any_format(o.formats, [](const plot::format_row& f) { return f.plays_motion; });
     if (!row->add_frame && (video || !keys.empty())) {
         throw usage_error("plot " + o.kind + ": a " + o.kind + " plot does not move, so it cannot be " +
                           (keys.empty() ? "written as a video (-f " + o.formats + ")" : "animated (--fps, --periods, --duration, --speed, --clock)") +

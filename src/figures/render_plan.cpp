@@ -63,9 +63,10 @@ void check_raster_sizes(const std::vector<const entry*>& figures, const std::vec
         const build_options grid = sized_by(build, th);
         for (const auto& f : formats) {
             if (!plot::find_format(f).raster) continue;
+            // Outside the try: the figure's own bad input is not one of the format's.
+            const plot::figure layout = figure_grid(e->spec, grid);
             try {
                 const double dpi = moving ? style.moving.dpi : style.still.dpi;
-                const plot::figure layout = figure_grid(e->spec, grid);
                 plot::check_raster_size(layout, th, dpi);
                 const auto [w, h] = plot::pixel_size(layout, th, dpi);
                 plot::check_worker_memory(plot::raster_bytes_per_pixel * w * h, "a raster of " + std::to_string(w) +

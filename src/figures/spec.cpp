@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/spec.hpp"
 
+#include "common/suggest.hpp"
 #include "figures/data_reader.hpp"
 #include "figures/input_file.hpp"
 #include "figures/panel_keys.hpp"
@@ -282,33 +283,8 @@ spec_error::spec_error(std::vector<spec_problem> problems)
     : bad_input(join_problems(problems)), problems_(std::move(problems)) {}
 
 std::string suggest(std::string_view word, const std::vector<std::string>& names) {
-    // Edit distance with transpositions (optimal string alignment); a name within a third of
-    // the word's length (at least 1) is a likely typo.
-    // A word far longer than any name is no typo of one (and would cost length squared).
-    if (word.size() > 64) return {};
-    std::string best;
-    std::size_t best_d = std::max<std::size_t>(1, word.size() / 3) + 1;
-    for (const auto& name : names) {
-        const std::size_t m = word.size();
-        const std::size_t n = name.size();
-        std::vector<std::vector<std::size_t>> d(m + 1, std::vector<std::size_t>(n + 1));
-        for (std::size_t i = 0; i <= m; ++i) d[i][0] = i;
-        for (std::size_t j = 0; j <= n; ++j) d[0][j] = j;
-        for (std::size_t i = 1; i <= m; ++i) {
-            for (std::size_t j = 1; j <= n; ++j) {
-                const std::size_t cost = word[i - 1] == name[j - 1] ? 0 : 1;
-                d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-                if (i > 1 && j > 1 && word[i - 1] == name[j - 2] && word[i - 2] == name[j - 1]) {
-                    d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-                }
-            }
-        }
-        if (d[m][n] < best_d) {
-            best_d = d[m][n];
-            best = name;
-        }
-    }
-    return best;
+    // A name within a third of the word's length (at least 1) is a likely typo.
+    return common::nearest_name(word, names, std::max<std::size_t>(1, word.size() / 3) + 1);
 }
 
 namespace {

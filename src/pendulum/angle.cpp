@@ -2,6 +2,7 @@
 #include "pendulum/angle.hpp"
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/expression_lexer.hpp"
 #include "pendulum/mp_real.hpp"
 #include "pendulum/written_mp.hpp"
 
@@ -81,9 +82,7 @@ public:
         if (tokens_) tokens_->push_back({k, {}, {}, false});
     }
 
-    void skip_space() {
-        while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t')) ++pos_;
-    }
+    void skip_space() { pos_ = lexer::skip_space(text_, pos_); }
 
     bool take(std::string_view word) {
         skip_space();
@@ -178,42 +177,17 @@ private:
             emit(angle_token::kind::pi);
             return mp::pi(bits_);
         }
-        if (pos_ < text_.size() &&
-            ((text_[pos_] >= '0' && text_[pos_] <= '9') || text_[pos_] == '.')) {
-            return number();
-        }
+        if (pos_ < text_.size() && lexer::number_start(text_[pos_])) return number();
         if (pos_ == text_.size()) fail("incomplete expression");
         fail("unexpected '" + std::string(text_.substr(pos_)) + "'");
     }
 
-    /// The end of the number at pos_: only digits, one dot and an exponent are taken, so
-    /// strtod never sees "inf" or hex.
-    std::size_t number_end() const {
-        std::size_t end = pos_;
-        while (end < text_.size() && std::isdigit(static_cast<unsigned char>(text_[end]))) ++end;
-        if (end < text_.size() && text_[end] == '.') {
-            ++end;
-            while (end < text_.size() && std::isdigit(static_cast<unsigned char>(text_[end]))) ++end;
-        }
-        if (end < text_.size() && (text_[end] == 'e' || text_[end] == 'E')) {
-            std::size_t exp = end + 1;
-            if (exp < text_.size() && (text_[exp] == '+' || text_[exp] == '-')) ++exp;
-            if (exp < text_.size() && std::isdigit(static_cast<unsigned char>(text_[exp]))) {
-                end = exp;
-                while (end < text_.size() && std::isdigit(static_cast<unsigned char>(text_[end]))) ++end;
-            }
-        }
-        return end;
-    }
-
     real number() {
-        const std::size_t end = number_end();
+        const std::size_t end = lexer::number_end(text_, pos_);
         const std::string digits(text_.substr(pos_, end - pos_));
         // A number has a digit before its exponent: ".e5" is no number.
-        const std::string mantissa = digits.substr(0, digits.find_first_of("eE"));
-        if (mantissa.find_first_of("0123456789") == std::string::npos) {
-            fail("'" + digits + "' is not a number");
-        }
+        const std::string mantissa = lexer::mantissa_of(digits);
+        if (!lexer::has_digit(mantissa)) fail("'" + digits + "' is not a number");
         errno = 0;
         const double rounded = std::strtod(digits.c_str(), nullptr);
         if (errno == ERANGE && std::isinf(rounded)) fail("number " + digits + " is out of range");
@@ -250,10 +224,10 @@ constexpr mpfr_prec_t working_bits = 1280;
 /// A plain decimal number ("2.5", "1e-3", no sign, no spaces), as from_chars reads it: that
 /// rounds correctly already, and a million of them are read without MPFR.
 std::optional<double> plain_value(std::string_view t) {
-    if (t.empty() || !(std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '.')) return std::nullopt;
+    if (t.empty() || !lexer::number_start(t[0])) return std::nullopt;
     for (std::size_t i = 0; i < t.size(); ++i) {
         const char c = t[i];
-        if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E') continue;
+        if (lexer::number_start(c) || c == 'e' || c == 'E') continue;
         if ((c == '+' || c == '-') && (t[i - 1] == 'e' || t[i - 1] == 'E')) continue;
         return std::nullopt;
     }

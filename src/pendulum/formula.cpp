@@ -8,7 +8,9 @@
 //   primary = number | name | name "(" sum { "," sum } ")" | "(" sum ")"
 #include "pendulum/formula.hpp"
 
+#include "common/suggest.hpp"
 #include "pendulum/angle.hpp"
+#include "pendulum/expression_lexer.hpp"
 
 #include <algorithm>
 #include <array>
@@ -46,37 +48,13 @@ constexpr std::array<std::pair<std::string_view, op>, 5> names = {{
     {"theta0", op::theta0}, {"\u03b80", op::theta0}, {"t", op::t}, {"pi", op::pi}, {"\u03c0", op::pi},
 }};
 
-/// Levenshtein distance, for "did you mean".
-std::size_t distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = up;
-        }
-    }
-    return row[b.size()];
-}
-
 /// The nearest known name within two edits, or empty.
 std::string nearest_name(std::string_view word) {
-    std::string best;
-    std::size_t best_distance = 3;
-    const auto consider = [&](std::string_view name) {
-        const std::size_t d = distance(word, name);
-        if (d < best_distance) {
-            best_distance = d;
-            best = name;
-        }
-    };
-    for (const auto& f : functions) consider(f.name);
-    consider("theta0");
-    consider("t");
-    return best;
+    std::vector<std::string_view> known;
+    for (const auto& f : functions) known.push_back(f.name);
+    known.push_back("theta0");
+    known.push_back("t");
+    return common::nearest_name(word, known, 3);
 }
 
 /// A byte that may start a name: a letter, "_", or the first byte of θ or π.
@@ -84,8 +62,6 @@ bool name_start(char c) {
     const auto u = static_cast<unsigned char>(c);
     return std::isalpha(u) || c == '_' || u == 0xce || u == 0xcf;
 }
-
-bool digit(char c) { return c >= '0' && c <= '9'; }
 
 
 class parser {
@@ -134,9 +110,7 @@ private:
         return std::string(text_.substr(pos_, end - pos_));
     }
 
-    void skip_space() {
-        while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t')) ++pos_;
-    }
+    void skip_space() { pos_ = lexer::skip_space(text_, pos_); }
 
     bool take(char c) {
         skip_space();
@@ -245,7 +219,7 @@ private:
                                                             : "expected ')' or an operator, not '" + message_text(rest_word()) + "'");
             return v;
         }
-        if (digit(text_[pos_]) || text_[pos_] == '.') return number();
+        if (lexer::number_start(text_[pos_])) return number();
         if (name_start(text_[pos_])) return name();
         fail(pos_, "unexpected '" + message_text(rest_word()) + "'; expected a number, a name or '('");
     }
@@ -260,22 +234,9 @@ private:
 
     int number() {
         const std::size_t start = pos_;
-        std::size_t end = pos_;
-        while (end < text_.size() && digit(text_[end])) ++end;
-        if (end < text_.size() && text_[end] == '.') {
-            ++end;
-            while (end < text_.size() && digit(text_[end])) ++end;
-        }
-        const std::string mantissa(text_.substr(start, end - start));
-        if (mantissa.find_first_of("0123456789") == std::string::npos) fail(start, "'.' is not a number");
-        if (end < text_.size() && (text_[end] == 'e' || text_[end] == 'E')) {
-            std::size_t exp = end + 1;
-            if (exp < text_.size() && (text_[exp] == '+' || text_[exp] == '-')) ++exp;
-            if (exp < text_.size() && digit(text_[exp])) {
-                end = exp;
-                while (end < text_.size() && digit(text_[end])) ++end;
-            }
-        }
+        const std::size_t end = lexer::number_end(text_, pos_);
+        const std::string mantissa = lexer::mantissa_of(text_.substr(start, end - start));
+        if (!lexer::has_digit(mantissa)) fail(start, "'" + mantissa + "' is not a number");
         formula_node n;
         n.digits = std::string(text_.substr(start, end - start));
         errno = 0;

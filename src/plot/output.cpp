@@ -534,23 +534,23 @@ void check_gif_frame_rate(double fps) {
 // a fraction that H.264 and MP4 keep exactly, and WebM's millisecond times within 0.5 ms.
 constexpr format_row formats[] = {
     {"png", "raster at --dpi",
-     render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)", png_frame_file, nullptr},
+     render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)", png_frame_file, nullptr, false},
     {"pdf", "vector, fonts embedded",
-     write_pdf, {}, render_pdf, false, write_pdf_animation, "a PDF of one page per frame", pdf_animation_file, nullptr},
+     write_pdf, {}, render_pdf, false, write_pdf_animation, "a PDF of one page per frame", pdf_animation_file, nullptr, false},
     {"svg", "vector, for the web",
-     write_svg, {}, nullptr, false, nullptr, {}, nullptr, nullptr},
+     write_svg, {}, nullptr, false, nullptr, {}, nullptr, nullptr, false},
     {"eps", "vector, for latex and dvips",
-     write_eps, {}, render_eps, false, nullptr, {}, nullptr, nullptr},
+     write_eps, {}, render_eps, false, nullptr, {}, nullptr, nullptr, false},
     {"gif", "animation that loops; one frame for a still figure",
-     render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF", gif_animation_file, check_gif_frame_rate},
+     render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF", gif_animation_file, check_gif_frame_rate, true},
     {"mp4", "video (H.264) for slides and browsers; animations only",
-     nullptr, {}, nullptr, true, write_mp4_animation, "an MP4 video (H.264)", mp4_animation_file, nullptr},
+     nullptr, {}, nullptr, true, write_mp4_animation, "an MP4 video (H.264)", mp4_animation_file, nullptr, true},
     {"webm", "video (VP9) for browsers; animations only",
-     nullptr, {}, nullptr, true, write_webm_animation, "a WebM video (VP9)", webm_animation_file, nullptr},
+     nullptr, {}, nullptr, true, write_webm_animation, "a WebM video (VP9)", webm_animation_file, nullptr, true},
     {"pdf_tex", "ID.pdf without text and ID.pdf_tex setting the text in the document's fonts (pdflatex)",
-     refuse_one_stream, "pdf", nullptr, false, nullptr, {}, nullptr, nullptr},
+     refuse_one_stream, "pdf", nullptr, false, nullptr, {}, nullptr, nullptr, false},
     {"eps_tex", "ID.eps without text and ID.eps_tex setting the text in the document's fonts (latex, dvips)",
-     refuse_one_stream, "eps", nullptr, false, nullptr, {}, nullptr, nullptr},
+     refuse_one_stream, "eps", nullptr, false, nullptr, {}, nullptr, nullptr, false},
 };
 
 }  // namespace

@@ -95,6 +95,9 @@ struct format_row {
     /// Throws plot::bad_input, naming fps and the rates that play, if an animation at `fps`
     /// frames per second cannot be played as the format holds it; null: any rate plays.
     void (*check_frame_rate)(double fps);
+    /// Whether an animation in this format plays its motion: every frame in one file that
+    /// plays them in time (GIF, video), not a sequence of PNGs nor a PDF of pages.
+    bool plays_motion;
 };
 
 /// A LaTeX overlay's two files: the drawing without text, and the picture that sets the text.

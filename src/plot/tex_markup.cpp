@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/tex_markup.hpp"
 
+#include "common/suggest.hpp"
 #include "plot/errors.hpp"
 #include "plot/figure.hpp"
 
@@ -102,22 +103,6 @@ const tex_macro* find_macro(std::string_view name) {
     return nullptr;
 }
 
-/// Levenshtein distance of two short names.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = up;
-        }
-    }
-    return row[b.size()];
-}
-
 /// "unknown macro \\name", and the table's nearest name if one is close.
 std::string unknown_macro(std::string_view name) {
     std::string out = "unknown macro \\" + std::string(name);
@@ -126,7 +111,7 @@ std::string unknown_macro(std::string_view name) {
     std::size_t best_distance = name.size() <= 4 ? 2 : 3;
     for (const auto& m : macro_table) {
         if (m.name.size() < 2) continue;
-        const std::size_t d = edit_distance(name, m.name);
+        const std::size_t d = common::edit_distance(name, m.name);
         if (d < best_distance) best = &m, best_distance = d;
     }
     if (best) out += " (did you mean \\" + std::string(best->name) + "?)";

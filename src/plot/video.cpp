@@ -139,23 +139,11 @@ namespace {
 constexpr double encoder_bytes_per_pixel = 6;
 constexpr int encoder_frames_held = 8;
 
-bool is_x264(const video_kind& kind) { return std::string_view(kind.encoder) == "libx264"; }
-
-/// The kind's look-ahead, as its options set it.
-int kind_lookahead(const video_kind& kind) { return is_x264(kind) ? 5 : 25; }
-
-/// The kind's options with the look-ahead of `settings` in place of the kind's own.
+/// The kind's options with the look-ahead of `settings`.
 std::string options_with(const video_kind& kind, video_settings settings) {
-    const std::string key = is_x264(kind) ? "rc-lookahead" : "lag-in-frames";
-    std::string options;
-    const std::string_view all = kind.codec_options;
-    for (std::size_t from = 0; from < all.size();) {
-        const std::size_t end = std::min(all.find(':', from), all.size());
-        const std::string_view option = all.substr(from, end - from);
-        if (!option.starts_with(key + "=")) options += std::string(option) + ":";
-        from = end + 1;
-    }
-    return options + key + "=" + std::to_string(settings.lookahead);
+    std::string options = kind.codec_options;
+    if (!options.empty()) options += ":";
+    return options + kind.lookahead_option + "=" + std::to_string(settings.lookahead);
 }
 
 }  // namespace
@@ -169,7 +157,7 @@ double video_memory(const video_kind& kind, int width, int height, video_setting
 }
 
 video_settings video_settings_for(const video_kind& kind, int width, int height) {
-    video_settings s{kind.threads, kind_lookahead(kind)};
+    video_settings s{kind.threads, kind.lookahead};
     // Fewer frames held until the encoder with one worker fits: look-ahead first, then threads.
     while (video_memory(kind, width, height, s, 1) > raster_budget_bytes && (s.lookahead > 0 || s.threads > 1)) {
         if (s.lookahead > 0) {

@@ -17,11 +17,13 @@ namespace plot {
 
 /// A container and the codec in it, and how that codec is set up.
 struct video_kind {
-    const char* container;       ///< libavformat's name of the container: "mp4", "webm"
-    const char* encoder;         ///< libavcodec's encoder: "libx264", "libvpx-vp9"
-    const char* codec_options;   ///< the encoder's options, "key=value:key=value"
-    const char* muxer_options;   ///< the container's options, the same way
-    int threads;                 ///< the encoder's threads: fixed, as the bytes may depend on it
+    const char* container;         ///< libavformat's name of the container: "mp4", "webm"
+    const char* encoder;           ///< libavcodec's encoder: "libx264", "libvpx-vp9"
+    const char* codec_options;     ///< the encoder's options, "key=value:key=value", but the look-ahead
+    const char* lookahead_option;  ///< the encoder's option of the look-ahead: "rc-lookahead"
+    int lookahead;                 ///< frames looked ahead at most (fewer for large frames: video_settings_for)
+    const char* muxer_options;     ///< the container's options, the same way
+    int threads;                   ///< the encoder's threads: fixed, as the bytes may depend on it
 };
 
 /// MP4 holding H.264 (High profile, yuv420p, constant quality), its index first
@@ -29,11 +31,13 @@ struct video_kind {
 /// veryfast preset with two sliced threads and a look-ahead of 5 frames: a 30-s 1080p clip
 /// of two pendulums in 0.6 of the CPU time and half the memory of the medium preset with
 /// frame threads, at 40.5 dB PSNR and SSIM 0.9985 against the drawn frames (41.3 dB, 0.9988).
-inline constexpr video_kind mp4_video{"mp4", "libx264", "preset=veryfast:tune=animation:crf=23:profile=high:x264-params=sliced-threads=1:rc-lookahead=5",
-                                      "movflags=+faststart", 2};
+inline constexpr video_kind mp4_video{"mp4", "libx264",
+                                      "preset=veryfast:tune=animation:crf=23:profile=high:x264-params=sliced-threads=1",
+                                      "rc-lookahead", 5, "movflags=+faststart", 2};
 /// WebM holding VP9 (yuv420p, constant quality): browsers and Google Slides play it.
 inline constexpr video_kind webm_video{"webm", "libvpx-vp9",
-                                       "b=0:crf=34:deadline=good:cpu-used=4:row-mt=0:tile-columns=2", "", 4};
+                                       "b=0:crf=34:deadline=good:cpu-used=4:row-mt=0:tile-columns=2",
+                                       "lag-in-frames", 25, "", 4};  // libvpx's own lag-in-frames
 
 /// How many threads the encoder runs and how many frames it looks ahead (x264's
 /// rc-lookahead, libvpx's lag-in-frames): the frames it holds grow with both.

@@ -37,8 +37,9 @@ struct video_module {
     std::pair<int, int> (*frame_rate)(double fps);
 };
 
-/// Changes whenever video_module or video_sink changes: a module of another build is refused.
-inline constexpr int video_module_version = 1;
+/// Changes whenever video_module, video_sink or video_kind changes: a module of another build
+/// is refused.
+inline constexpr int video_module_version = 2;
 
 /// The module's file name, beside the program in a build tree and in LIBDIR/pendulum-figures/
 /// when installed.

@@ -42,7 +42,7 @@ std::size_t count(const std::string& text, const std::string& part) {
 
 /// The paper theme with `sets` on top, minimums lifted so that any size can be measured.
 plot::theme paper_with(std::vector<std::string> sets) {
-    sets.insert(sets.begin(), {"min_text_pt=0", "min_script_pt=0"});
+    sets.insert(sets.begin(), {"min_text_pt=0", "min_script_pt=0", "min_line_pt=0"});
     return figures::load_theme("paper", sets);
 }
 
@@ -89,7 +89,8 @@ TEST(CheckAps, EveryBuiltinInPaperPasses) {
 TEST(CheckAps, BadSpecEachItsOwnMessage) {
     const fs::path dir = temp_dir("preflight-bad");
     write(dir / "bad.toml",
-          "min_text_pt = 0\nmin_script_pt = 0\ntick_font_pt = 7\nline_width_pt = 0.3\nfigure_width_cm = 10\n");
+          "min_text_pt = 0\nmin_script_pt = 0\nmin_line_pt = 0\ntick_font_pt = 7\nline_width_pt = 0.3\n"
+          "figure_width_cm = 10\n");
     write(dir / "bad-figure.toml", "[figure]\nstyle = \"bad.toml\"\n\n[[panel]]\nplot = \"coefficient\"\n"
                                    "harmonic = 1\nmethods = [\"exact\", \"lowest\"]\n");
     const run_result r = run_cli("render bad-figure.toml --check aps:1", dir);
@@ -101,7 +102,7 @@ TEST(CheckAps, BadSpecEachItsOwnMessage) {
     EXPECT_NE(r.out.find("set at 7 pt, below aps's smallest lettering (8 pt): raise tick_font_pt to 8 pt or more"),
               std::string::npos)
         << r.out;
-    EXPECT_NE(r.out.find(" pt wide, thinner than aps's thinnest line (0.5 pt): raise line_width_pt"), std::string::npos)
+    EXPECT_NE(r.out.find(" pt wide, thinner than aps's thinnest line (0.5 pt): set min_line_pt = 0.5"), std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("lines 0.3 pt wide"), std::string::npos) << r.out;
     EXPECT_NE(r.err.find("1 of 1 figure breaks aps's rules for figures"), std::string::npos) << r.err;
@@ -155,6 +156,14 @@ TEST(CheckBoundary, HalfPointLines) {
     marked.panels[0].data[0].marker = plot::marker_style::open_circle;
     const std::string outlines = joined(problems(marked, paper_with({"line_width_pt=0.6"}), "aps"));
     EXPECT_NE(outlines.find("0.45 pt wide, thinner"), std::string::npos) << outlines;
+    // With the paper theme's min_line_pt = 0.5, every stroke is drawn at least that wide: the
+    // outlines, a 0.3-pt frame, thin lines.
+    const plot::theme floored = figures::load_theme("paper", {"line_width_pt=0.6", "frame_width_pt=0.3"});
+    EXPECT_EQ(floored.min_line_pt, 0.5);
+    EXPECT_EQ(joined(problems(marked, floored, "aps")), "");
+    const plot::figure_measure m = plot::measure_figure(marked, floored);
+    EXPECT_TRUE(std::all_of(m.strokes.begin(), m.strokes.end(), [](const auto& s) { return s.width_pt >= 0.5; }));
+    EXPECT_TRUE(std::any_of(m.strokes.begin(), m.strokes.end(), [](const auto& s) { return s.width_pt == 0.6; }));
 }
 
 // Width: 8.6 cm accepted and 8.61 refused for one column; 17.8 accepted and 17.81 refused for
@@ -194,6 +203,8 @@ TEST(CheckBoundary, GreysThatMerge) {
               std::string::npos)
         << merged;
     EXPECT_EQ(with_greys(0.2, 0.2, plot::line_style::dashed), "");
+    // One colour: not told apart by colour, so greyscale changes nothing.
+    EXPECT_EQ(with_greys(0.2, 0.2, plot::line_style::solid), "");
     // Colours that differ in hue and not in grey: red and a green of the same luma.
     plot::figure fig = two_lines();
     fig.panels[0].data[1].line = plot::line_style::solid;
@@ -211,6 +222,8 @@ TEST(CheckBoundary, ProblemsNameThePanel) {
     fig.panels[0].label = "(a)";
     fig.panels[1].label = "(b)";
     fig.panels[1].data[1].line = plot::line_style::solid;
+    fig.panels[1].data[0].rgb_color = plot::rgb{0.3, 0.3, 0.3};
+    fig.panels[1].data[1].rgb_color = plot::rgb{0.35, 0.35, 0.35};
     const std::string out = joined(problems(fig, paper_with({}), "aps"));
     EXPECT_NE(out.find("(b): \"one\" and \"two\" have the same dash and marker"), std::string::npos) << out;
     EXPECT_EQ(out.find("(a):"), std::string::npos) << out;
@@ -285,6 +298,29 @@ TEST(CheckMeasure, TextSizesAsThePdfHasThem) {
         scripts = scripts || t.script;
     }
     EXPECT_TRUE(scripts);
+    EXPECT_EQ(measured, pdf);
+    fs::remove_all(dir);
+}
+
+// The stroke widths measured are the PDF's own: the widths of the PDF's stroking operators, read
+// by pdf_line_widths.py, are those the preflight measured, for a figure with markers and lines.
+TEST(CheckMeasure, LineWidthsAsThePdfHasThem) {
+    const fs::path dir = temp_dir("preflight-pdf-lines");
+    const run_result r = run_cli("render period-error -f pdf --theme paper -o '" + dir.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string reader = std::string(PENDULUM_TEST_DATA) + "/../pdf_line_widths.py";
+    const run_result read = run_command("/usr/bin/python3 '" + reader + "' '" + (dir / "period-error.pdf").string() + "'");
+    ASSERT_EQ(read.status, 0) << read.err;
+    std::set<long> pdf;
+    std::istringstream in(read.out);
+    double width = 0;
+    while (in >> width) pdf.insert(std::lround(width * 1000));
+    const plot::theme th = figures::load_theme("paper");
+    const plot::figure_measure m =
+        plot::measure_figure(figures::build(figures::find("period-error"), figures::sized_by({}, th)), th);
+    std::set<long> measured;
+    for (const auto& s : m.strokes) measured.insert(std::lround(s.width_pt * 1000));
+    EXPECT_GE(measured.size(), 2u);
     EXPECT_EQ(measured, pdf);
     fs::remove_all(dir);
 }

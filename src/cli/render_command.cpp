@@ -342,21 +342,37 @@ void check_check_options(const render_options& o) {
     }
 }
 
+/// --check: refuses animations, and figures whose drawing would cost too much (as a PDF's
+/// would), before any work.
+void check_before_measuring(const std::vector<const figures::entry*>& chosen, const style_groups& groups,
+                            const std::vector<figures::render_style>& styles, const figures::build_options& build,
+                            const render_options& o) {
+    for (const auto* e : chosen) {
+        if (e->spec.animation) {
+            throw usage_error("--check measures still figures, and '" + shown_text(e->id) +
+                              "' is an animation (render a frame with --at and look at it)");
+        }
+    }
+    const std::vector<std::string> pdf{"pdf"};
+    render_jobs jobs{std::vector<std::vector<figures::figure_file>>(groups.size()),
+                     std::vector<std::vector<figures::animation_job>>(groups.size()), {}, {}};
+    for (std::size_t g = 0; g < groups.size(); ++g) plan_group(jobs, g, groups, pdf, o, build, styles);
+    figures::check_render_cost(jobs.stills, jobs.moving, pdf, build, styles, false);
+}
+
 /// --check JOURNAL: each chosen figure drawn as its files would be and measured against the
 /// journal's rules (plot::preflight_problems); one line per problem on standard output, and
 /// exit status 1 when a figure breaks a rule. No file is written.
-int check_figures(const style_groups& groups, const std::vector<figures::render_style>& styles,
-                  const figures::build_options& build, const plot::journal_check& journal) {
+int check_figures(const std::vector<const figures::entry*>& chosen, const style_groups& groups,
+                  const std::vector<figures::render_style>& styles, const figures::build_options& build,
+                  const render_options& o, const plot::journal_check& journal) {
+    check_before_measuring(chosen, groups, styles, build, o);
     const std::string name(journal.rules->name);
     int failed = 0;
     int count = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const plot::theme& th = styles[g].still_theme;
         for (const auto* e : groups[g].second) {
-            if (e->spec.animation) {
-                throw usage_error("--check measures still figures, and '" + shown_text(e->id) +
-                                  "' is an animation (render a frame with --at and look at it)");
-            }
             const plot::figure_measure m = plot::measure_figure(figures::build(*e, figures::sized_by(build, th)), th);
             const std::vector<std::string> problems = plot::preflight_problems(m, journal);
             ++count;
@@ -365,8 +381,9 @@ int check_figures(const style_groups& groups, const std::vector<figures::render_
             if (problems.empty()) {
                 const bool one = journal.span != plot::column_span::two &&
                                  m.width_cm <= journal.rules->column_cm + 1e-6;
-                std::cout << shown_text(e->id) << ": keeps to " << name << "'s rules (" << format_double(std::round(m.width_cm * 1000) / 1000)
-                          << " cm wide, " << (one ? "one column" : "two columns") << ")\n";
+                std::cout << shown_text(e->id) << ": keeps to " << name << "'s rules ("
+                          << format_double(std::round(m.width_cm * 1000) / 1000) << " cm wide, "
+                          << (one ? "one column" : "two columns") << ")\n";
             }
         }
     }
@@ -391,7 +408,7 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
     const style_groups groups = grouped_by_style(chosen, o);
     const std::vector<figures::render_style> styles = styles_of(groups, o, in);
     const figures::build_options build = build_options_of(chosen, o);
-    if (journal) return check_figures(groups, styles, build, *journal);
+    if (journal) return check_figures(chosen, groups, styles, build, o, *journal);
     if (o.dir == "-") return render_to_stdout(chosen, formats, o, build, styles.front());
     check_output_dir(o.dir);
     const std::optional<double> at = frame_time(chosen, o);

@@ -201,8 +201,9 @@ void stroke_problems(std::vector<std::string>& out, const figure_measure& m, con
     for (const auto& [k, count] : thin) {
         out.push_back(at(k.first) + std::to_string(count) + (count == 1 ? " line " : " lines ") + shown(k.second) +
                       " pt wide, thinner than " + std::string(j.name) + "'s thinnest line (" + shown(j.min_line_pt) +
-                      " pt): raise line_width_pt (series; markers' outlines are 0.75 of it, a crowded series' line "
-                      "0.6) or frame_width_pt (frame and ticks)");
+                      " pt): set min_line_pt = " + shown(j.min_line_pt) +
+                      " (every line at least that), or raise line_width_pt (series) or frame_width_pt (frame "
+                      "and ticks)");
     }
 }
 
@@ -213,9 +214,11 @@ void grey_problems(std::vector<std::string>& out, const figure_measure& m) {
             for (std::size_t b = a + 1; b < panel_series.size(); ++b) {
                 const set_series& s = panel_series[a];
                 const set_series& t = panel_series[b];
-                if (s.label == t.label || s.line != t.line || s.marker != t.marker) continue;
+                // Series of one colour are not told apart by colour: greyscale changes nothing.
+                const bool same_color = s.color.r == t.color.r && s.color.g == t.color.g && s.color.b == t.color.b;
+                if (s.label == t.label || same_color || s.line != t.line || s.marker != t.marker) continue;
                 const double step = std::fabs(grey_of(s.color) - grey_of(t.color));
-                if (step >= min_grey_step) continue;
+                if (step >= min_grey_step - 1e-9) continue;
                 out.push_back(at(s.where) + "\"" + s.label + "\" and \"" + t.label + "\" have the same dash and marker " +
                               "and greys " + shown(step) + " apart (less than " + shown(min_grey_step) +
                               " of black to white): they merge in greyscale print; give one another dash or marker, "

@@ -48,8 +48,9 @@ struct journal_check {
 /// journals otherwise.
 journal_check find_journal(std::string_view text);
 
-/// Two series whose greys differ by less than this (of black to white, 0 to 1) and that have
-/// the same dash and marker cannot be told apart in greyscale print.
+/// Two labelled series of one panel, of different colours, whose greys differ by less than
+/// this (of black to white, 0 to 1) and that have the same dash and marker cannot be told
+/// apart in greyscale print.
 constexpr double min_grey_step = 0.15;
 
 /// The grey a colour prints as in greyscale: its luma (ITU-R BT.601 weights of the

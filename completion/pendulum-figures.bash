@@ -48,6 +48,7 @@ _pendulum_figures() {
         -o|--output-dir) _filedir -d; return ;;
         --output|--depfile|--depfile-target) _filedir; return ;;
         --format) COMPREPLY=($(compgen -W "csv json" -- "$cur")); return ;;
+        --check) COMPREPLY=($(compgen -W "aps aip ajp aps:1 aps:2 aip:1 aip:2 ajp:1 ajp:2" -- "$cur")); return ;;
         --tex-sizes) _pendulum_figures_words "$exe" tex-sizes; return ;;
         --set) _pendulum_figures_words "$exe" set-keys; return ;;
         --method)
@@ -74,7 +75,7 @@ _pendulum_figures() {
         claims) options="--format --help --help-all" ;;
         list) options="--markdown --help --help-all" ;;
         show) options="--theme --help --help-all" ;;
-        render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --jobs --help --help-all" ;;
+        render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --jobs --check --help --help-all" ;;
         plot) options="--theta0 --energy --omega0 --methods --range --time --harmonic --harmonics --orders --y --x --angle-unit --separatrix --trail --apart --fps --periods --duration --speed --clock --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --data --length --g --help --help-all" ;;
         data) options="-o --output --theta0 -f --format --layout --help --help-all" ;;
         describe) options="--alt --help --help-all" ;;

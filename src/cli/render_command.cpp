@@ -10,12 +10,14 @@
 #include "figures/render_plan.hpp"
 #include "figures/themes.hpp"
 #include "plot/output.hpp"
+#include "plot/preflight.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <iostream>
 #include <filesystem>
 #include <stdexcept>
 #include <memory>
@@ -333,17 +335,80 @@ int render_to_stdout(const std::vector<const figures::entry*>& chosen, const std
                                             plot::output_options{style.still.dpi}));
 }
 
+/// --check: the options it cannot go with, refused before any work.
+void check_check_options(const render_options& o) {
+    if (o.dir == "-" || !o.depfile.empty() || o.paper_files) {
+        throw usage_error("--check measures the figures and writes no file: drop -o -, --depfile and --paper-files");
+    }
+}
+
+/// --check: refuses animations, and figures whose drawing would cost too much (as a PDF's
+/// would), before any work.
+void check_before_measuring(const std::vector<const figures::entry*>& chosen, const style_groups& groups,
+                            const std::vector<figures::render_style>& styles, const figures::build_options& build,
+                            const render_options& o) {
+    for (const auto* e : chosen) {
+        if (e->spec.animation) {
+            throw usage_error("--check measures still figures, and '" + shown_text(e->id) +
+                              "' is an animation (render a frame with --at and look at it)");
+        }
+    }
+    const std::vector<std::string> pdf{"pdf"};
+    render_jobs jobs{std::vector<std::vector<figures::figure_file>>(groups.size()),
+                     std::vector<std::vector<figures::animation_job>>(groups.size()), {}, {}};
+    for (std::size_t g = 0; g < groups.size(); ++g) plan_group(jobs, g, groups, pdf, o, build, styles);
+    figures::check_render_cost(jobs.stills, jobs.moving, pdf, build, styles, false);
+}
+
+/// --check JOURNAL: each chosen figure drawn as its files would be and measured against the
+/// journal's rules (plot::preflight_problems); one line per problem on standard output, and
+/// exit status 1 when a figure breaks a rule. No file is written.
+int check_figures(const std::vector<const figures::entry*>& chosen, const style_groups& groups,
+                  const std::vector<figures::render_style>& styles, const figures::build_options& build,
+                  const render_options& o, const plot::journal_check& journal) {
+    check_before_measuring(chosen, groups, styles, build, o);
+    const std::string name(journal.rules->name);
+    int failed = 0;
+    int count = 0;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const plot::theme& th = styles[g].still_theme;
+        for (const auto* e : groups[g].second) {
+            const plot::figure_measure m = plot::measure_figure(figures::build(*e, figures::sized_by(build, th)), th);
+            const std::vector<std::string> problems = plot::preflight_problems(m, journal);
+            ++count;
+            failed += problems.empty() ? 0 : 1;
+            for (const auto& p : problems) std::cout << shown_text(e->id) << ": " << shown_text(p) << '\n';
+            if (problems.empty()) {
+                const bool one = journal.span != plot::column_span::two &&
+                                 m.width_cm <= journal.rules->column_cm + 1e-6;
+                std::cout << shown_text(e->id) << ": keeps to " << name << "'s rules ("
+                          << format_double(std::round(m.width_cm * 1000) / 1000) << " cm wide, "
+                          << (one ? "one column" : "two columns") << ")\n";
+            }
+        }
+    }
+    if (failed > 0) {
+        std::cerr << failed << " of " << count << (count == 1 ? " figure breaks " : " figures break ") << name
+                  << "'s rules for figures (see above)\n";
+    }
+    return failed > 0 ? 1 : 0;
+}
+
 }  // namespace
 
 int render_figures(const std::vector<const figures::entry*>& chosen, const render_options& o) {
     // The environment is input too: a bad SOURCE_DATE_EPOCH stops the run before any work.
     plot::pdf_creation_date();
+    const std::optional<plot::journal_check> journal =
+        o.check.empty() ? std::nullopt : std::optional(plot::find_journal(o.check));
+    if (journal) check_check_options(o);
     const std::vector<std::string> formats = chosen_formats(o);
     const plot::output_options overlay = overlay_options(o);
     const style_inputs in{style_sets(o), overlay, chosen_jobs(o.jobs)};
     const style_groups groups = grouped_by_style(chosen, o);
     const std::vector<figures::render_style> styles = styles_of(groups, o, in);
     const figures::build_options build = build_options_of(chosen, o);
+    if (journal) return check_figures(chosen, groups, styles, build, o, *journal);
     if (o.dir == "-") return render_to_stdout(chosen, formats, o, build, styles.front());
     check_output_dir(o.dir);
     const std::optional<double> at = frame_time(chosen, o);
@@ -424,6 +489,13 @@ command add_render_command(CLI::App& app) {
     cmd->add_flag("--paper-files", ro->paper_files,
                      "One file per panel, named and sized as in the paper's LaTeX source (Fig.C1.Lowest, ...)");
     cmd->add_option("--jobs", ro->jobs, jobs_help)->type_name("N");
+    cmd->add_option("--check", ro->check,
+                    "Write nothing: measure each figure as drawn against a JOURNAL's rules for figures (" +
+                        plot::journal_names() + "; JOURNAL:1 one column, :2 two): every text's size, every "
+                        "line's width, the figure's width, series that merge in greyscale; exit status 1 if any "
+                        "breaks one")
+        ->type_name("JOURNAL")
+        ->check(non_empty);
     cmd->footer(std::string("\n") + angle_help +
                    "\n\nFiles are DIR/ID.EXT (or the paper's names with --paper-files). Each file is written "
                    "under a temporary name and renamed, so a failed run never leaves a partial figure. Set "

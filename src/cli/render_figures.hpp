@@ -30,6 +30,7 @@ struct render_options {
     std::optional<int> jobs;              // worker threads; PENDULUM_FIGURES_JOBS or the usable CPUs when not given
     std::string depfile;         // where to write the Make rule of the run's outputs and inputs; empty for none
     std::string depfile_target;  // the rule's target instead of the outputs (a stamp file)
+    std::string check;           // a journal (aps, aps:1, ...): measure the figures against its rules, write nothing
 };
 
 /// Checks the options of `o` other than the ids and renders the chosen figures; returns the exit code.

@@ -43,6 +43,7 @@ constexpr number_key number_keys[] = {
     {"title_font_pt", &plot::theme::title_font_pt, 0, 200},
     {"min_text_pt", &plot::theme::min_text_pt, 0, 50},
     {"min_script_pt", &plot::theme::min_script_pt, 0, 50},
+    {"min_line_pt", &plot::theme::min_line_pt, 0, 50},
     {"tex_agree_pt", &plot::theme::tex_agree_pt, 0, 30},
     {"line_width_pt", &plot::theme::line_width_pt, 0.05, 50},
     {"frame_width_pt", &plot::theme::frame_width_pt, 0.05, 50},

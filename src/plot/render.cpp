@@ -309,7 +309,7 @@ double draw_frame_and_ticks(cairo_t* cr, const text_engine& text, const theme& t
     cairo_set_dash(cr, nullptr, 0, 0);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
-    cairo_set_line_width(cr, th.frame_width_pt);
+    cairo_set_line_width(cr, line_width(th, th.frame_width_pt));
     cairo_rectangle(cr, area.x, area.y, area.w, area.h);
     cairo_stroke(cr);
     draw_ticks(cr, th, plan.xt, g.mx, area, true);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/strokes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -20,8 +21,10 @@ void set_color(cairo_t* cr, const theme& th, const series& s) {
     }
 }
 
+double line_width(const theme& th, double width) { return std::max(width, th.min_line_pt); }
+
 void set_line_style(cairo_t* cr, const theme& th, line_style style, double width_scale) {
-    const double w = th.line_width_pt * width_scale;
+    const double w = line_width(th, th.line_width_pt * width_scale);
     cairo_set_line_width(cr, w);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_line_cap(cr, style == line_style::dashed ? CAIRO_LINE_CAP_BUTT : CAIRO_LINE_CAP_ROUND);
@@ -116,7 +119,7 @@ bool filled(marker_style m) { return m != marker_style::none && m != marker_styl
 void draw_markers(cairo_t* cr, const theme& th, const series& s, const device_series& d, const rect& area) {
     const double r = th.marker_radius_pt * s.marker_scale;
     cairo_set_dash(cr, nullptr, 0, 0);
-    cairo_set_line_width(cr, 0.75 * th.line_width_pt);
+    cairo_set_line_width(cr, line_width(th, 0.75 * th.line_width_pt));
     for (std::size_t i = 0; i < d.x.size(); ++i) {
         if (std::isnan(d.x[i] + d.y[i])) continue;
         if (d.x[i] < area.x - r || d.x[i] > area.x + area.w + r || d.y[i] < area.y - r ||
@@ -143,7 +146,7 @@ void draw_error_bars(cairo_t* cr, const theme& th, const series& s, const std::v
     if (bars.empty()) return;
     const double c = cap_half_width(th, s);
     cairo_set_dash(cr, nullptr, 0, 0);
-    cairo_set_line_width(cr, th.line_width_pt * s.width_scale);
+    cairo_set_line_width(cr, line_width(th, th.line_width_pt * s.width_scale));
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
     for (const auto& b : bars) {
         cairo_move_to(cr, b.x0, b.y0);

@@ -15,6 +15,9 @@ void set_foreground(cairo_t* cr, const theme& th);
 /// Sets a series' colour: its own, or the palette's at its index.
 void set_color(cairo_t* cr, const theme& th, const series& s);
 
+/// A stroke's width at final size: `width`, or the theme's min_line_pt where that is wider.
+double line_width(const theme& th, double width);
+
 /// Sets width, dash pattern and caps of a line style.
 void set_line_style(cairo_t* cr, const theme& th, line_style style, double width_scale = 1.0);
 

@@ -51,6 +51,9 @@ struct theme {
     double min_text_pt = 0;
     /// The smallest superscript or subscript at final size (6 pt); 0: no minimum.
     double min_script_pt = 0;
+    /// The thinnest line at final size (a journal's minimum line weight, 0.5 pt): every stroke
+    /// (series, markers' outlines, error bars, frame, ticks) is drawn at least this wide; 0: no minimum.
+    double min_line_pt = 0;
     /// The largest LaTeX document size (--tex-font-size) whose overlays show what the PDF
     /// shows: the layout decides which tick labels and legends a figure keeps at the largest
     /// text of either (decided_sizes); 0: each route decides at its own sizes.

@@ -1,0 +1,71 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Prints the width at final size of every stroke a PDF makes, one line per stroking
+operator (S, s, B, B*, b, b*): "WIDTH" in points to three decimals.
+
+The width is read from the PDF's own operators, as a preflight tool reads it: the line
+width of the graphics state (w, kept through q and Q) times the scale of the current
+transformation matrix (cm), the square root of its determinant. Content streams and form
+XObjects (Do) are followed from the pages, with the reader of pdf_text_sizes.py.
+
+Usage: pdf_line_widths.py FILE.pdf
+"""
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pdf_text_sizes import TOKEN, mul, names_of, objects, resources, scale  # noqa: E402
+
+STROKES = {b"S", b"s", b"B", b"B*", b"b", b"b*"}
+
+
+def run(objs, content, head, ctm, width, out, depth=0):
+    xobjects = names_of(resources(objs, head), b"XObject")
+    stack, operands = [], []
+    for t in TOKEN.findall(content):
+        c = t[:1]
+        if c in b"0123456789.-+" or c in b"</([]":
+            operands.append(t)
+            continue
+        op = t
+        nums = [float(x) for x in operands if x[:1] in b"0123456789.-+"]
+        if op == b"q":
+            stack.append((ctm, width))
+        elif op == b"Q" and stack:
+            ctm, width = stack.pop()
+        elif op == b"cm" and len(nums) >= 6:
+            ctm = mul(nums[-6:], ctm)
+        elif op == b"w" and nums:
+            width = nums[-1]
+        elif op in STROKES:
+            out.append(width * scale(ctm))
+        elif op == b"Do" and operands and depth < 8:
+            ref = xobjects.get(operands[-1][1:])
+            if ref is not None:
+                fhead, fdata = objs[int(ref)]
+                if fdata is not None and b"/Form" in fhead:
+                    m = re.search(rb"/Matrix\s*\[([^\]]*)\]", fhead)
+                    fm = [float(x) for x in m.group(1).split()] if m else [1, 0, 0, 1, 0, 0]
+                    run(objs, fdata, fhead, mul(fm, ctm), width, out, depth + 1)
+        operands = []
+
+
+def main():
+    data = open(sys.argv[1], "rb").read()
+    objs = objects(data)
+    found = []
+    for head, _ in objs.values():
+        if not re.search(rb"/Type\s*/Page\b", head):
+            continue
+        refs = re.search(rb"/Contents\s+(?:\[([^\]]*)\]|(\d+)\s+0\s+R)", head)
+        if not refs:
+            continue
+        numbers = re.findall(rb"(\d+)\s+0\s+R", refs.group(1)) if refs.group(1) else [refs.group(2)]
+        for n in numbers:
+            run(objs, objs[int(n)][1] or b"", head, [1, 0, 0, 1, 0, 0], 1.0, found)
+    for width in found:
+        print("%.3f" % width)
+
+
+if __name__ == "__main__":
+    main()

@@ -158,6 +158,12 @@ enum class legend_spot {
     band,    ///< in a row of its own above the axes
 };
 
+/// The span of a cell's axes (their frame, with the plan's margins), where a legend band
+/// above them goes: as wide as the axes it names, not the cell or the page.
+rect band_over_axes(const panel_plan& plan, const rect& cell, double top, double h) {
+    return rect{cell.x + plan.left, top, std::max(0.0, cell.w - plan.left - plan.right), h};
+}
+
 /// The panel's geometry and its legend's place: inside the axes, or in `band` (a row of
 /// its own above the cell, which the layout made room for). legend_spot::inside falls back
 /// to a band at the top of the cell, moving the axes down, where the legend is automatic
@@ -182,12 +188,13 @@ placed_panel place_with_legend(const theme& th, const panel& p, const panel_plan
     }
     out.legend_box = legend_inside(p, lg, out.g, th);
     if (out.legend_box || p.legend != legend_place::automatic) return out;
-    const double h = legend_band_height(lg, th, cell.w - 2 * pad);
+    const rect span = band_over_axes(plan, cell, cell.y + 0.3 * pad, 0);
+    const double h = legend_band_height(lg, th, span.w);
     rect area = out.g.area;
     area.y += h;
     area.h -= h;
     out.g = place_panel(p, plan, area, tolerance, reach);
-    out.legend_band = rect{cell.x + pad, cell.y + 0.3 * pad, cell.w - 2 * pad, h};
+    out.legend_band = band_over_axes(plan, cell, span.y, h);
     return out;
 }
 
@@ -331,8 +338,8 @@ double draw_frame_and_ticks(cairo_t* cr, const text_engine& text, const theme& t
     return x_baseline;
 }
 
-/// Axis labels at label_gap from the tick labels (y labels of a column aligned, as the
-/// widest tick labels of the figure set them), panel label above the top tick label.
+/// Axis labels at label_gap from their own panel's tick labels, panel label above the top
+/// tick label.
 void draw_axis_labels(const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
                       const rect& area, double x_baseline) {
     if (!p.x.label.empty()) {
@@ -344,7 +351,7 @@ void draw_axis_labels(const text_engine& text, const theme& th, const panel& p, 
     if (!p.y.label.empty()) {
         // Turned by -90 degrees: the text's down is the page's right.
         const text_ink ink = text.ink(p.y.label.markup, th.label_font_pt);
-        const double right = area.x - plan.tick_gap - plan.column_ytick_w - plan.label_gap;
+        const double right = area.x - plan.tick_gap - plan.own_ytick_w - plan.label_gap;
         text.draw_on_baseline(p.y.label, th.label_font_pt, right - (ink.y + ink.h),
                               area.y + 0.5 * area.h + ink.x + 0.5 * ink.w, true, 0.5);
     }
@@ -623,8 +630,10 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
         if (d.legend.entries.empty() || legend_inside(p, d.legend, g, f.deciding)) continue;
         out.spots[i] = p.legend == legend_place::automatic ? legend_spot::band : legend_spot::none;
         if (out.spots[i] == legend_spot::band) {
-            const double h = legend_band_height(f.plans[i].legend, th, f.cells[i].w - 2 * pad);
-            out.bands[i] = rect{f.cells[i].x + pad, f.cells[i].y + 0.3 * pad, f.cells[i].w - 2 * pad, h};
+            const rect span = band_over_axes(f.plans[i], f.cells[i], f.cells[i].y + 0.3 * pad, 0);
+            out.bands[i] = band_over_axes(f.plans[i], f.cells[i], span.y,
+                                          legend_band_height(f.plans[i].legend, th, span.w));
+            const double h = out.bands[i]->h;
             double& row = row_band[i / static_cast<std::size_t>(fig.cols)];
             row = std::max(row, h);
         } else if (gate.draws(false)) {
@@ -644,7 +653,8 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
             legend_inside(f.planned[i], d.legend, g, f.deciding)) {
             continue;
         }
-        row_band[0] = std::max(row_band[0], legend_band_height(f.plans[i].legend, th, cell.w - 2 * pad));
+        const double w = band_over_axes(f.plans[i], cell, 0, 0).w;
+        row_band[0] = std::max(row_band[0], legend_band_height(f.plans[i].legend, th, w));
     }
     drop_bands_without_room(f, row_band, out, gate);
     bool moved = false;
@@ -716,7 +726,9 @@ shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f
     const figure& fig = *f.fig;
     shared_legend out{f.plans[0].legend, shared_legend_panel(cr, f), std::nullopt};
     if (out.panel || out.lg.entries.empty()) return out;
-    const double width = size.width_pt - 2 * th.padding_pt;
+    // Across the axes, from the first column's to the last's (margins are shared).
+    const double left = f.plans[0].left;
+    const double width = std::max(0.0, size.width_pt - left - f.plans[0].right);
     const bool first_file = fig.peers.empty() || fig.place_in_set == 0;
     const double decided_band = legend_band_height(f.decided[0].legend, f.deciding, width);
     if (!fig.peers.empty() && !band_leaves_room(f, size, decided_band)) {
@@ -730,7 +742,7 @@ shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f
         return out;
     }
     const double band = legend_band_height(out.lg, th, width);
-    if (first_file) out.band = rect{th.padding_pt, f.title_h + 0.3 * th.padding_pt, width, band};
+    if (first_file) out.band = rect{left, f.title_h + 0.3 * th.padding_pt, width, band};
     f.cells = make_cells(fig, size, f.title_h + band + 0.3 * th.padding_pt);
     keep_data_off_frame(f.planned, f.plans, planned_cells(f.cells, f.planned.size()), th);
     return out;

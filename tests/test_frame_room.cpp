@@ -227,8 +227,8 @@ TEST(FrameRoom, AYLabelStandsByItsOwnPanelsTickLabels) {
     fs::remove_all(dir);
 }
 
-// A legend band above the axes is as wide as the axes, not the page: the period-error
-// figure's band no longer starts at the figure's edge.
+// A legend band above the axes starts at the axes' left edge, not the page's: the
+// period-error figure's band no longer starts at the figure's edge.
 TEST(FrameRoom, ALegendBandIsAsWideAsTheAxes) {
     const auto dir = temp_dir("frame-band");
     int bands = 0;
@@ -255,7 +255,8 @@ TEST(FrameRoom, ALegendBandIsAsWideAsTheAxes) {
             if (last < 0) continue;  // the legend found room inside the axes: no band
             ++bands;
             EXPECT_GE(first, frame.left - 2) << theme << " " << name;
-            EXPECT_LE(last, frame.right + 2) << theme << " " << name;
+            // On the right, the axes leave half their last tick label: the band may use it.
+            EXPECT_LE(last, frame.right + above) << theme << " " << name;
         }
     }
     EXPECT_GE(bands, 2);  // the paper theme's two figures have bands

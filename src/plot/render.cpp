@@ -158,10 +158,11 @@ enum class legend_spot {
     band,    ///< in a row of its own above the axes
 };
 
-/// The span of a cell's axes (their frame, with the plan's margins), where a legend band
-/// above them goes: as wide as the axes it names, not the cell or the page.
-rect band_over_axes(const panel_plan& plan, const rect& cell, double top, double h) {
-    return rect{cell.x + plan.left, top, std::max(0.0, cell.w - plan.left - plan.right), h};
+/// Where a legend band above a cell's axes goes: from the axes' left edge (the frame, not
+/// the page's edge, where the y label's margin starts) to the cell's right padding, which
+/// the axes leave only for half their last tick label.
+rect band_over_axes(const panel_plan& plan, const rect& cell, double top, double h, double pad) {
+    return rect{cell.x + plan.left, top, std::max(0.0, cell.w - plan.left - pad), h};
 }
 
 /// The panel's geometry and its legend's place: inside the axes, or in `band` (a row of
@@ -188,13 +189,13 @@ placed_panel place_with_legend(const theme& th, const panel& p, const panel_plan
     }
     out.legend_box = legend_inside(p, lg, out.g, th);
     if (out.legend_box || p.legend != legend_place::automatic) return out;
-    const rect span = band_over_axes(plan, cell, cell.y + 0.3 * pad, 0);
+    const rect span = band_over_axes(plan, cell, cell.y + 0.3 * pad, 0, pad);
     const double h = legend_band_height(lg, th, span.w);
     rect area = out.g.area;
     area.y += h;
     area.h -= h;
     out.g = place_panel(p, plan, area, tolerance, reach);
-    out.legend_band = band_over_axes(plan, cell, span.y, h);
+    out.legend_band = band_over_axes(plan, cell, span.y, h, pad);
     return out;
 }
 
@@ -630,9 +631,9 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
         if (d.legend.entries.empty() || legend_inside(p, d.legend, g, f.deciding)) continue;
         out.spots[i] = p.legend == legend_place::automatic ? legend_spot::band : legend_spot::none;
         if (out.spots[i] == legend_spot::band) {
-            const rect span = band_over_axes(f.plans[i], f.cells[i], f.cells[i].y + 0.3 * pad, 0);
+            const rect span = band_over_axes(f.plans[i], f.cells[i], f.cells[i].y + 0.3 * pad, 0, pad);
             out.bands[i] = band_over_axes(f.plans[i], f.cells[i], span.y,
-                                          legend_band_height(f.plans[i].legend, th, span.w));
+                                          legend_band_height(f.plans[i].legend, th, span.w), pad);
             const double h = out.bands[i]->h;
             double& row = row_band[i / static_cast<std::size_t>(fig.cols)];
             row = std::max(row, h);
@@ -653,7 +654,7 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
             legend_inside(f.planned[i], d.legend, g, f.deciding)) {
             continue;
         }
-        const double w = band_over_axes(f.plans[i], cell, 0, 0).w;
+        const double w = band_over_axes(f.plans[i], cell, 0, 0, pad).w;
         row_band[0] = std::max(row_band[0], legend_band_height(f.plans[i].legend, th, w));
     }
     drop_bands_without_room(f, row_band, out, gate);
@@ -726,9 +727,9 @@ shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f
     const figure& fig = *f.fig;
     shared_legend out{f.plans[0].legend, shared_legend_panel(cr, f), std::nullopt};
     if (out.panel || out.lg.entries.empty()) return out;
-    // Across the axes, from the first column's to the last's (margins are shared).
+    // From the first column's axes (margins are shared) to the page's right padding.
     const double left = f.plans[0].left;
-    const double width = std::max(0.0, size.width_pt - left - f.plans[0].right);
+    const double width = std::max(0.0, size.width_pt - left - th.padding_pt);
     const bool first_file = fig.peers.empty() || fig.place_in_set == 0;
     const double decided_band = legend_band_height(f.decided[0].legend, f.deciding, width);
     if (!fig.peers.empty() && !band_leaves_room(f, size, decided_band)) {

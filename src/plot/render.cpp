@@ -158,11 +158,30 @@ enum class legend_spot {
     band,    ///< in a row of its own above the axes
 };
 
-/// Where a legend band above a cell's axes goes: from the axes' left edge (the frame, not
-/// the page's edge, where the y label's margin starts) to the cell's right padding, which
-/// the axes leave only for half their last tick label.
-rect band_over_axes(const panel_plan& plan, const rect& cell, double top, double h, double pad) {
-    return rect{cell.x + plan.left, top, std::max(0.0, cell.w - plan.left - pad), h};
+/// Where a legend band above a cell's axes goes, `top` its top: over the axes, from their
+/// left edge (the frame, not the page's edge, where the y label's margin starts) to the
+/// cell's right padding, which the axes leave only for half their last tick label; or, not
+/// `over_axes`, across the cell.
+rect legend_band_rect(const legend_layout& lg, const theme& th, const panel_plan& plan, const rect& cell, double top,
+                      bool over_axes) {
+    const double pad = th.padding_pt;
+    const double x = over_axes ? cell.x + plan.left : cell.x + pad;
+    const double w = std::max(0.0, over_axes ? cell.w - plan.left - pad : cell.w - 2 * pad);
+    return rect{x, top, w, legend_band_height(lg, th, w)};
+}
+
+/// Whether a band with `plan`'s legend over `cell` may span the axes alone: at `th`'s sizes
+/// it takes no more lines than across the cell, or the axes keep three quarters of their
+/// height (and three tick lines) under its extra lines; else it goes across the cell.
+bool band_spans_axes(const panel_plan& plan, const theme& th, const rect& cell) {
+    const double across = legend_band_rect(plan.legend, th, plan, cell, 0, false).h;
+    const double over = legend_band_rect(plan.legend, th, plan, cell, 0, true).h;
+    if (over <= across) return true;
+    rect squeezed = cell;
+    squeezed.y += over;
+    squeezed.h -= over;
+    const double least = 3 * th.tick_font_pt;
+    return axes_area(plan, squeezed).h >= std::max(least, 0.75 * axes_area(plan, cell).h);
 }
 
 /// The panel's geometry and its legend's place: inside the axes, or in `band` (a row of
@@ -189,13 +208,12 @@ placed_panel place_with_legend(const theme& th, const panel& p, const panel_plan
     }
     out.legend_box = legend_inside(p, lg, out.g, th);
     if (out.legend_box || p.legend != legend_place::automatic) return out;
-    const rect span = band_over_axes(plan, cell, cell.y + 0.3 * pad, 0, pad);
-    const double h = legend_band_height(lg, th, span.w);
+    const rect band_here = legend_band_rect(lg, th, plan, cell, cell.y + 0.3 * pad, band_spans_axes(plan, th, cell));
     rect area = out.g.area;
-    area.y += h;
-    area.h -= h;
+    area.y += band_here.h;
+    area.h -= band_here.h;
     out.g = place_panel(p, plan, area, tolerance, reach);
-    out.legend_band = band_over_axes(plan, cell, span.y, h, pad);
+    out.legend_band = band_here;
     return out;
 }
 
@@ -631,9 +649,9 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
         if (d.legend.entries.empty() || legend_inside(p, d.legend, g, f.deciding)) continue;
         out.spots[i] = p.legend == legend_place::automatic ? legend_spot::band : legend_spot::none;
         if (out.spots[i] == legend_spot::band) {
-            const rect span = band_over_axes(f.plans[i], f.cells[i], f.cells[i].y + 0.3 * pad, 0, pad);
-            out.bands[i] = band_over_axes(f.plans[i], f.cells[i], span.y,
-                                          legend_band_height(f.plans[i].legend, th, span.w), pad);
+            // Decided at the deciding sizes, so that every route spans alike.
+            out.bands[i] = legend_band_rect(f.plans[i].legend, th, f.plans[i], f.cells[i], f.cells[i].y + 0.3 * pad,
+                                            band_spans_axes(d, f.deciding, f.cells[i]));
             const double h = out.bands[i]->h;
             double& row = row_band[i / static_cast<std::size_t>(fig.cols)];
             row = std::max(row, h);
@@ -654,8 +672,8 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
             legend_inside(f.planned[i], d.legend, g, f.deciding)) {
             continue;
         }
-        const double w = band_over_axes(f.plans[i], cell, 0, 0, pad).w;
-        row_band[0] = std::max(row_band[0], legend_band_height(f.plans[i].legend, th, w));
+        row_band[0] = std::max(row_band[0], legend_band_rect(f.plans[i].legend, th, f.plans[i], cell, 0,
+                                                             band_spans_axes(d, f.deciding, cell)).h);
     }
     drop_bands_without_room(f, row_band, out, gate);
     bool moved = false;
@@ -728,10 +746,10 @@ shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f
     shared_legend out{f.plans[0].legend, shared_legend_panel(cr, f), std::nullopt};
     if (out.panel || out.lg.entries.empty()) return out;
     // From the first column's axes (margins are shared) to the page's right padding.
-    const double left = f.plans[0].left;
-    const double width = std::max(0.0, size.width_pt - left - th.padding_pt);
+    const rect page{0, f.title_h + 0.3 * th.padding_pt, size.width_pt, size.height_pt};
     const bool first_file = fig.peers.empty() || fig.place_in_set == 0;
-    const double decided_band = legend_band_height(f.decided[0].legend, f.deciding, width);
+    const bool over_axes = band_spans_axes(f.decided[0], f.deciding, page);
+    const double decided_band = legend_band_rect(f.decided[0].legend, f.deciding, f.decided[0], page, 0, over_axes).h;
     if (!fig.peers.empty() && !band_leaves_room(f, size, decided_band)) {
         if (first_file) {
             layout_notes::note(
@@ -742,8 +760,9 @@ shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f
         }
         return out;
     }
-    const double band = legend_band_height(out.lg, th, width);
-    if (first_file) out.band = rect{left, f.title_h + 0.3 * th.padding_pt, width, band};
+    const rect band_rect = legend_band_rect(out.lg, th, f.plans[0], page, page.y, over_axes);
+    const double band = band_rect.h;
+    if (first_file) out.band = band_rect;
     f.cells = make_cells(fig, size, f.title_h + band + 0.3 * th.padding_pt);
     keep_data_off_frame(f.planned, f.plans, planned_cells(f.cells, f.planned.size()), th);
     return out;

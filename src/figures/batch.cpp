@@ -50,14 +50,28 @@ std::vector<figure_file> files_for(const std::vector<const entry*>& figures, con
 
 std::string figure_csv(const plot::figure& f) { return numbers_csv(numbers_of(f), data_layout::long_rows); }
 
+namespace {
+
+/// A panel as the paper's files draw it: the paper's y range (paper_y_range), kept exactly.
+plot::panel in_paper_range(plot::panel p) {
+    if (p.y.paper_range) {
+        p.y.min = p.y.paper_range->first;
+        p.y.max = p.y.paper_range->second;
+        p.y.exact_range = true;
+    }
+    return p;
+}
+
+}  // namespace
+
 plot::figure single_panel(const plot::figure& f, int panel, double width_cm) {
     plot::figure one;
     one.panel_width_cm = width_cm;
     one.panel_aspect = f.panel_aspect;
-    one.panels.push_back(f.panels.at(panel));
+    one.panels.push_back(in_paper_range(f.panels.at(panel)));
     // The other panels' margins are shared, so every file of the figure has the same frame.
     for (std::size_t i = 0; i < f.panels.size(); ++i) {
-        if (static_cast<int>(i) != panel) one.peers.push_back(f.panels[i]);
+        if (static_cast<int>(i) != panel) one.peers.push_back(in_paper_range(f.panels[i]));
     }
     // One legend per figure: the plot layer puts it in the file of the panel the whole
     // figure would put it in, or in a band over the first file (all files leave room).

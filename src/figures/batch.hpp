@@ -32,7 +32,8 @@ std::vector<figure_file> files_for(const std::vector<const entry*>& figures, con
 std::string figure_csv(const plot::figure& f);
 
 /// A figure's panel on its own, sized as the paper's LaTeX includes it, with the same frame
-/// as the figure's other panels on their own; the first panel alone carries the legend.
+/// as the figure's other panels on their own, in the paper's y range where the spec gives one
+/// (paper_y_range); the first panel alone carries the legend.
 plot::figure single_panel(const plot::figure& f, int panel, double width_cm);
 
 /// Builds each figure once and writes every file, on all cores. Each file is complete or

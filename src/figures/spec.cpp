@@ -44,7 +44,7 @@ std::string join_problems(const std::vector<spec_problem>& problems) {
 }
 
 /// Keys every panel takes.
-constexpr std::string_view common_panel_keys = "plot title x_label y_label y_range paper_file line";
+constexpr std::string_view common_panel_keys = "plot title x_label y_label y_range paper_y_range paper_file line";
 constexpr std::string_view figure_keys = "columns panel_width_cm panel_aspect legend title description style";
 constexpr std::string_view pendulum_keys = "length_m g";
 constexpr std::string_view top_keys = "figure pendulum animation panel";
@@ -137,13 +137,13 @@ void read_style(reader& r, const toml::node& n, const std::string& v, figure_spe
     }
 }
 
-/// y_range = [from, to]: two numbers the tick labels can tell apart.
-void read_y_range(reader& r, const toml::table& t, panel_spec& p) {
-    const toml::node* n = t.get("y_range");
+/// y_range or paper_y_range (`key`) = [from, to]: two numbers the tick labels can tell apart.
+void read_y_range(reader& r, const toml::table& t, const std::string& key, std::optional<std::array<double, 2>>& out) {
+    const toml::node* n = t.get(key);
     if (!n) return;
     const auto* a = n->as_array();
     if (!a || a->size() != 2 || !a->get(0)->is_number() || !a->get(1)->is_number()) {
-        r.problem(*n, "'y_range' must be two numbers, [from, to]");
+        r.problem(*n, "'" + key + "' must be two numbers, [from, to]");
         return;
     }
     const auto value = [](const toml::node& e) {
@@ -155,14 +155,14 @@ void read_y_range(reader& r, const toml::table& t, panel_spec& p) {
     // least and of 1e-9 of the largest magnitude.
     const double span = hi - lo;
     if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi)) {
-        r.problem(*n, "'y_range' must go from a smaller to a larger finite value");
+        r.problem(*n, "'" + key + "' must go from a smaller to a larger finite value");
     } else if (!(std::fabs(lo) <= 1e300 && std::fabs(hi) <= 1e300 && span >= 1e-300 &&
                  span >= 1e-9 * std::max(std::fabs(lo), std::fabs(hi)))) {
-        r.problem(*n, "'y_range' = [" + pendulum::format_double(lo) + ", " + pendulum::format_double(hi) +
+        r.problem(*n, "'" + key + "' = [" + pendulum::format_double(lo) + ", " + pendulum::format_double(hi) +
                           "] cannot be labelled: values must be within -1e300 to 1e300, and the span at "
                           "least 1e-300 and at least 1e-9 of the largest magnitude");
     } else {
-        p.y_range = std::array<double, 2>{lo, hi};
+        out = std::array<double, 2>{lo, hi};
     }
 }
 
@@ -196,7 +196,8 @@ void read_lines(reader& r, const toml::table& t, panel_spec& p) {
 
 /// The keys every panel takes besides plot: title, axis labels, y range, paper file, lines.
 void read_common_keys(reader& r, const toml::table& t, panel_spec& p) {
-    read_y_range(r, t, p);
+    read_y_range(r, t, "y_range", p.y_range);
+    read_y_range(r, t, "paper_y_range", p.paper_y_range);
     p.title = r.label(t, "title");
     p.x_label = r.label(t, "x_label");
     p.y_label = r.label(t, "y_label");

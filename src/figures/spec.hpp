@@ -103,6 +103,7 @@ struct panel_spec {
     time_unit time = time_unit::period;          ///< trajectory and phase time unit
     std::optional<std::array<double, 2>> range;  ///< x range: times, or amplitudes in radians
     std::optional<std::array<double, 2>> y_range;  ///< y range, in the y axis' unit
+    std::optional<std::array<double, 2>> paper_y_range;  ///< the paper's y range: its files (--paper-files) keep it
     std::optional<std::string> title;            ///< title; default "(a) ϑ0 = ..."
     std::optional<std::string> x_label;          ///< x axis label; default from the plot kind
     std::optional<std::string> y_label;          ///< y axis label; default from the plot kind

@@ -199,7 +199,9 @@ void label_panel(plot::panel& panel, const panel_spec& p, std::size_t i, std::si
     if (p.y_range) {
         panel.y.min = (*p.y_range)[0];
         panel.y.max = (*p.y_range)[1];
+        panel.y.exact_range = true;
     }
+    if (p.paper_y_range) panel.y.paper_range = std::pair{(*p.paper_y_range)[0], (*p.paper_y_range)[1]};
     if (p.x_label) panel.x.label = plot::tex_label(*p.x_label);
     if (p.y_label) panel.y.label = plot::tex_label(*p.y_label);
     const std::string letter = count > 1 ? panel_letter(i) : "";

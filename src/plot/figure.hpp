@@ -165,6 +165,13 @@ struct axis {
     int max_ticks = 6;                  ///< at most this many major ticks
     double margin = 0.04;               ///< fraction of the data range added to free limits
     bool round_limits = false;          ///< move free limits out to the enclosing ticks
+    /// min and max are a range the user set (a spec's y_range): kept exactly, the data
+    /// beyond them clipped. Otherwise a limit given is the data's domain (a plot kind's
+    /// [0, pi] of amplitudes), moved out as a free one is until no marker sits on the frame.
+    bool exact_range = false;
+    /// The paper's range, kept exactly in the paper's files (--paper-files) in place of min
+    /// and max; unset: they draw the axis as every other file does.
+    std::optional<std::pair<double, double>> paper_range;
 };
 
 /// Where a legend goes: automatic picks a spot inside the axes free of data, else a band

@@ -104,6 +104,7 @@ panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th, 
     for (const auto& l : plan.yt.labels) {
         const text_ink i = text.ink(l, th.tick_font_pt);
         plan.ytick_w = std::max(plan.ytick_w, i.w);
+        plan.own_ytick_w = plan.ytick_w;
         plan.ytick_extent.push_back(i.h);
         // Ink below the baseline (the slash of pi/2) hangs that much nearer the x labels.
         plan.xtick_gap = std::max(plan.xtick_gap, plan.tick_gap + std::max(0.0, i.y + i.h - digit.y - digit.h));
@@ -254,10 +255,12 @@ void keep_axis_off_frame(const panel& p, panel_plan& plan, const rect& cell, con
         double hi = log ? std::log10(t.hi) : t.hi;
         if (!(length > 0) || !(hi > lo)) return;
         const auto [need_lo, need_hi] = limits_clear_of(data, lo, hi, (hi - lo) / length);
-        const bool moved = (!a.min && need_lo < lo) || (!a.max && need_hi > hi);
+        const bool lo_free = !a.min || !a.exact_range;
+        const bool hi_free = !a.max || !a.exact_range;
+        const bool moved = (lo_free && need_lo < lo) || (hi_free && need_hi > hi);
         if (!moved) return;
-        if (!a.min) lo = need_lo;
-        if (!a.max) hi = need_hi;
+        if (lo_free) lo = std::min(lo, need_lo);
+        if (hi_free) hi = std::max(hi, need_hi);
         t.lo = log ? std::pow(10.0, lo) : lo;
         t.hi = log ? std::pow(10.0, hi) : hi;
     }
@@ -272,20 +275,14 @@ void keep_data_off_frame(const std::vector<panel>& panels, std::vector<panel_pla
         if (p.frameless) continue;
         for (const bool horizontal : {true, false}) {
             const axis& a = horizontal ? p.x : p.y;
-            if (a.min && a.max) continue;
+            if (a.min && a.max && a.exact_range) continue;
             const std::vector<extent> data = extents(p, th, horizontal, a.kind == scale::log);
             if (!data.empty()) keep_axis_off_frame(p, plans[i], cells[i], data, horizontal);
         }
     }
 }
 
-void share_margins(std::vector<panel_plan>& plans, const theme& th, int cols) {
-    std::vector<double> column_w(static_cast<std::size_t>(std::max(cols, 1)), 0.0);
-    for (std::size_t i = 0; i < plans.size(); ++i) {
-        double& w = column_w[i % column_w.size()];
-        w = std::max(w, plans[i].ytick_w);
-    }
-    for (std::size_t i = 0; i < plans.size(); ++i) plans[i].column_ytick_w = column_w[i % column_w.size()];
+void share_margins(std::vector<panel_plan>& plans, const theme& th, int /*cols*/) {
     panel_plan m;
     for (const auto& p : plans) {
         m.ytick_w = std::max(m.ytick_w, p.ytick_w);

@@ -34,8 +34,8 @@ struct panel_plan {
     double xtick_gap = 0;    // from the frame to the x tick labels: tick_gap and what y labels hang below it
     double label_gap = 0;   // from the tick labels' ink to the axis label's
     double digit_h = 0;     // ink height of a digit: y tick labels are centred on it
-    double ytick_w = 0;     // widest y tick label
-    double column_ytick_w = 0;  // widest y tick label of the panels in this one's column
+    double ytick_w = 0;     // widest y tick label (of every panel, once margins are shared)
+    double own_ytick_w = 0;  // widest y tick label of this panel: its y label stands by them
     double ylabel_h = 0;    // ink height of the y label (its width on the page)
     double xtick_up = 0;    // highest x tick label ink above its baseline
     double xtick_down = 0;  // lowest x tick label ink below its baseline
@@ -61,8 +61,8 @@ panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th, 
 bool tick_labels_fit(const tick_set& t, const std::vector<double>& extents, const axis_map& m, double font_pt);
 
 /// Gives every plan the largest text sizes among them and margins to fit, so that panels
-/// drawn beside each other, or alone in files of their own, have the same frame and their
-/// y labels line up (matplotlib's align_ylabels).
+/// drawn beside each other, or alone in files of their own, have the same frame (each y
+/// label still stands by its own panel's tick labels, as TeX sets a label by its box).
 /// Plans are of a grid with `cols` columns, row-major.
 void share_margins(std::vector<panel_plan>& plans, const theme& th, int cols);
 
@@ -72,8 +72,9 @@ void share_margins(std::vector<panel_plan>& plans, const theme& th, int cols);
 void thin_crowded_ticks(const text_engine& text, const std::vector<panel>& panels, std::vector<panel_plan>& plans,
                         const std::vector<rect>& cells, const theme& th, int cols);
 
-/// Moves free axis limits (those a panel does not fix) out until every point of the data
-/// that sets them stands clear of the frame in `cells`: a marker by its radius, a line by
+/// Moves axis limits out, free ones and a plot kind's domain alike (all but a range the
+/// user set, axis::exact_range), until every point of the data that sets them stands clear
+/// of the frame in `cells`, in points, not a share of the range: a marker by its radius, a line by
 /// its half width, each and the frame's half width by a gap of a point more, so that no
 /// curve runs along a frame line and no marker is cut, at any size, dpi or format.
 void keep_data_off_frame(const std::vector<panel>& panels, std::vector<panel_plan>& plans,

@@ -158,6 +158,32 @@ enum class legend_spot {
     band,    ///< in a row of its own above the axes
 };
 
+/// Where a legend band above a cell's axes goes, `top` its top: over the axes, from their
+/// left edge (the frame, not the page's edge, where the y label's margin starts) to the
+/// cell's right padding, which the axes leave only for half their last tick label; or, not
+/// `over_axes`, across the cell.
+rect legend_band_rect(const legend_layout& lg, const theme& th, const panel_plan& plan, const rect& cell, double top,
+                      bool over_axes) {
+    const double pad = th.padding_pt;
+    const double x = over_axes ? cell.x + plan.left : cell.x + pad;
+    const double w = std::max(0.0, over_axes ? cell.w - plan.left - pad : cell.w - 2 * pad);
+    return rect{x, top, w, legend_band_height(lg, th, w)};
+}
+
+/// Whether a band with `plan`'s legend over `cell` may span the axes alone: at `th`'s sizes
+/// it takes no more lines than across the cell, or the axes keep three quarters of their
+/// height (and three tick lines) under its extra lines; else it goes across the cell.
+bool band_spans_axes(const panel_plan& plan, const theme& th, const rect& cell) {
+    const double across = legend_band_rect(plan.legend, th, plan, cell, 0, false).h;
+    const double over = legend_band_rect(plan.legend, th, plan, cell, 0, true).h;
+    if (over <= across) return true;
+    rect squeezed = cell;
+    squeezed.y += over;
+    squeezed.h -= over;
+    const double least = 3 * th.tick_font_pt;
+    return axes_area(plan, squeezed).h >= std::max(least, 0.75 * axes_area(plan, cell).h);
+}
+
 /// The panel's geometry and its legend's place: inside the axes, or in `band` (a row of
 /// its own above the cell, which the layout made room for). legend_spot::inside falls back
 /// to a band at the top of the cell, moving the axes down, where the legend is automatic
@@ -182,12 +208,12 @@ placed_panel place_with_legend(const theme& th, const panel& p, const panel_plan
     }
     out.legend_box = legend_inside(p, lg, out.g, th);
     if (out.legend_box || p.legend != legend_place::automatic) return out;
-    const double h = legend_band_height(lg, th, cell.w - 2 * pad);
+    const rect band_here = legend_band_rect(lg, th, plan, cell, cell.y + 0.3 * pad, band_spans_axes(plan, th, cell));
     rect area = out.g.area;
-    area.y += h;
-    area.h -= h;
+    area.y += band_here.h;
+    area.h -= band_here.h;
     out.g = place_panel(p, plan, area, tolerance, reach);
-    out.legend_band = rect{cell.x + pad, cell.y + 0.3 * pad, cell.w - 2 * pad, h};
+    out.legend_band = band_here;
     return out;
 }
 
@@ -331,8 +357,8 @@ double draw_frame_and_ticks(cairo_t* cr, const text_engine& text, const theme& t
     return x_baseline;
 }
 
-/// Axis labels at label_gap from the tick labels (y labels of a column aligned, as the
-/// widest tick labels of the figure set them), panel label above the top tick label.
+/// Axis labels at label_gap from their own panel's tick labels, panel label above the top
+/// tick label.
 void draw_axis_labels(const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
                       const rect& area, double x_baseline) {
     if (!p.x.label.empty()) {
@@ -344,7 +370,7 @@ void draw_axis_labels(const text_engine& text, const theme& th, const panel& p, 
     if (!p.y.label.empty()) {
         // Turned by -90 degrees: the text's down is the page's right.
         const text_ink ink = text.ink(p.y.label.markup, th.label_font_pt);
-        const double right = area.x - plan.tick_gap - plan.column_ytick_w - plan.label_gap;
+        const double right = area.x - plan.tick_gap - plan.own_ytick_w - plan.label_gap;
         text.draw_on_baseline(p.y.label, th.label_font_pt, right - (ink.y + ink.h),
                               area.y + 0.5 * area.h + ink.x + 0.5 * ink.w, true, 0.5);
     }
@@ -623,8 +649,10 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
         if (d.legend.entries.empty() || legend_inside(p, d.legend, g, f.deciding)) continue;
         out.spots[i] = p.legend == legend_place::automatic ? legend_spot::band : legend_spot::none;
         if (out.spots[i] == legend_spot::band) {
-            const double h = legend_band_height(f.plans[i].legend, th, f.cells[i].w - 2 * pad);
-            out.bands[i] = rect{f.cells[i].x + pad, f.cells[i].y + 0.3 * pad, f.cells[i].w - 2 * pad, h};
+            // Decided at the deciding sizes, so that every route spans alike.
+            out.bands[i] = legend_band_rect(f.plans[i].legend, th, f.plans[i], f.cells[i], f.cells[i].y + 0.3 * pad,
+                                            band_spans_axes(d, f.deciding, f.cells[i]));
+            const double h = out.bands[i]->h;
             double& row = row_band[i / static_cast<std::size_t>(fig.cols)];
             row = std::max(row, h);
         } else if (gate.draws(false)) {
@@ -644,7 +672,8 @@ own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, co
             legend_inside(f.planned[i], d.legend, g, f.deciding)) {
             continue;
         }
-        row_band[0] = std::max(row_band[0], legend_band_height(f.plans[i].legend, th, cell.w - 2 * pad));
+        row_band[0] = std::max(row_band[0], legend_band_rect(f.plans[i].legend, th, f.plans[i], cell, 0,
+                                                             band_spans_axes(d, f.deciding, cell)).h);
     }
     drop_bands_without_room(f, row_band, out, gate);
     bool moved = false;
@@ -716,9 +745,11 @@ shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f
     const figure& fig = *f.fig;
     shared_legend out{f.plans[0].legend, shared_legend_panel(cr, f), std::nullopt};
     if (out.panel || out.lg.entries.empty()) return out;
-    const double width = size.width_pt - 2 * th.padding_pt;
+    // From the first column's axes (margins are shared) to the page's right padding.
+    const rect page{0, f.title_h + 0.3 * th.padding_pt, size.width_pt, size.height_pt};
     const bool first_file = fig.peers.empty() || fig.place_in_set == 0;
-    const double decided_band = legend_band_height(f.decided[0].legend, f.deciding, width);
+    const bool over_axes = band_spans_axes(f.decided[0], f.deciding, page);
+    const double decided_band = legend_band_rect(f.decided[0].legend, f.deciding, f.decided[0], page, 0, over_axes).h;
     if (!fig.peers.empty() && !band_leaves_room(f, size, decided_band)) {
         if (first_file) {
             layout_notes::note(
@@ -729,8 +760,9 @@ shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f
         }
         return out;
     }
-    const double band = legend_band_height(out.lg, th, width);
-    if (first_file) out.band = rect{th.padding_pt, f.title_h + 0.3 * th.padding_pt, width, band};
+    const rect band_rect = legend_band_rect(out.lg, th, f.plans[0], page, page.y, over_axes);
+    const double band = band_rect.h;
+    if (first_file) out.band = band_rect;
     f.cells = make_cells(fig, size, f.title_h + band + 0.3 * th.padding_pt);
     keep_data_off_frame(f.planned, f.plans, planned_cells(f.cells, f.planned.size()), th);
     return out;

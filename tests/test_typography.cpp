@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -276,6 +278,7 @@ TEST(Typography, SlashSpacingIsTeXs) {
         for (const std::string tex : {"$t/T$", "$T_N/T$", "$\\theta/T$"}) {
             const std::vector<double> gaps = column_gaps(draw(tex, family));
             ASSERT_FALSE(gaps.empty()) << tex;
+            std::printf("%s in %s: %.3f em from the slash to the T\n", tex.c_str(), family.c_str(), gaps.back());
             EXPECT_NEAR(gaps.back(), plot::slash_gap, 0.02) << tex << " in " << family;
         }
         // A digit after the slash is set as the font sets it (TeX's gap already): π/4 unchanged.
@@ -318,8 +321,8 @@ int stem_width(const drawing& d) {
 
 TEST(Typography, PrimesHaveTheWeightOfTheLetters) {
     // Computer Modern Unicode has no U+2032 but has the modifier letter prime U+02B9: every
-    // prime (x', \prime, a typed ′) is drawn with it, so that its stroke is about as heavy as
-    // the letters' (DejaVu Math's ′, the fallback, was 1.9 times the stem of CMU's l).
+    // prime (x', \prime, a typed ′) is drawn with it, from the letters' own font, and its
+    // stroke is within 1.5 times the stem of CMU's l.
     const std::string family = families[0];
     const double stem = stem_width(draw("$\\mathrm{l}$", family));
     ASSERT_GT(stem, 0);
@@ -330,6 +333,10 @@ TEST(Typography, PrimesHaveTheWeightOfTheLetters) {
             EXPECT_LT(prime / stem, 1.5) << tex;
         }
     }
+    // The fallback's prime, for the record (its horizontal cut; its weight shows in its size).
+    const double fallback = stem_width(draw("$\\prime$", "DejaVu Math TeX Gyre"));
+    const double ours = stem_width(draw("$\\prime$", family));
+    std::printf("prime's widest cut / stem of l: CMU's U+02B9 %.2f, DejaVu Math's U+2032 %.2f\n", ours / stem, fallback / stem);
     const plot::surface_ptr s(cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1));
     const plot::context_ptr cr(cairo_create(s.get()));
     const plot::text_engine engine(cr.get(), family);
@@ -361,5 +368,40 @@ TEST(Typography, AccentsInScriptsOfScriptsArePlacedByTheLayout) {
             EXPECT_LT(mark.y1, z.y0) << accent << " in " << family;
             EXPECT_NEAR(mark.centre_x(), z.centre_x(), 0.05 * em_px) << accent << " in " << family;
         }
+    }
+}
+
+TEST(Typography, AScriptAfterAFractionClearsItsLetterAsAlone) {
+    // x^2 after a fraction in the same math: the 2 clear of the leaning x by as much as in
+    // x^2 alone (the base's last run is measured, not the fraction).
+    for (const auto& family : families) {
+        const std::vector<double> alone = column_gaps(draw("$x^2$", family));
+        const std::vector<double> after = column_gaps(draw("$\\frac{1}{2} x^2$", family));
+        ASSERT_FALSE(alone.empty()) << family;
+        ASSERT_FALSE(after.empty()) << family;
+        EXPECT_NEAR(after.back(), alone.back(), 0.01) << family;
+    }
+}
+
+TEST(Typography, FractionsNestedToTheLimitAreShapedOnce) {
+    // \frac{\frac{...}{2}}{2} 24 deep (the nesting limit's): each part is shaped once, not
+    // once to measure and again to place (2^24 shapings).
+    std::string tex = "x";
+    for (int i = 0; i < 24; ++i) tex = "\\frac{" + tex + "}{2}";
+    const auto start = std::chrono::steady_clock::now();
+    const drawing d = draw("$" + tex + "$", families[0]);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_FALSE(ink_in(d, 0, d.h - 1).empty());
+    EXPECT_LT(seconds, 5.0);
+}
+
+TEST(Typography, TheFractionElementCannotBeWrittenByALabel) {
+    // Text and math escape < and >: a label that spells the element out gets its characters.
+    for (const std::string tex : {"<frac><num>1</num><den>2</den></frac>", "$\\mathrm{<frac><num>1</num><den>2</den></frac>}$",
+                                  "$<frac>$", "\u221a<span overline=\"single\">x</span>"}) {
+        const std::string markup = plot::tex_to_markup(tex);
+        EXPECT_EQ(markup.find("<frac>"), std::string::npos) << markup;
+        EXPECT_EQ(markup.find("<span"), std::string::npos) << markup;
+        for (const auto& p : plot::split_boxes(markup)) EXPECT_EQ(p.type, plot::box_piece::kind::run) << tex;
     }
 }

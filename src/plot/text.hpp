@@ -282,10 +282,21 @@ private:
     /// italic letter leans out that far (the bowl of ϑ), as a math italic font's wider
     /// advance would; under an overhang above it (the arm of T) it tucks in.
     double script_x(const script_place& at, const std::string& script, double pt, double dy) const {
-        if (at.base.empty() || has_boxes(at.base) || has_boxes(script)) return at.end;
+        if (at.base.empty() || has_boxes(script)) return at.end;
+        // After a fraction or radical, the run that ends the base (none: the box's advance).
+        std::string base = at.base;
+        double start = at.start;
+        if (has_boxes(base)) {
+            const std::vector<box_piece> pieces = split_boxes(base);
+            if (pieces.back().type != box_piece::kind::run) return at.end;
+            base = pieces.back().text;
+            PangoRectangle extent;
+            pango_layout_get_extents(make(base, at.size, base).get(), nullptr, &extent);
+            start = at.end - extent.width / double(PANGO_SCALE);
+        }
         const text_ink j = ink_of(script, pt);
-        const double right = ink_right_in_band(at.base, at.size, dy + j.y, dy + j.y + j.h);
-        return std::max(at.end, at.start + right + 0.04 * at.size - j.x);
+        const double right = ink_right_in_band(base, at.size, dy + j.y, dy + j.y + j.h);
+        return std::max(at.end, start + right + 0.04 * at.size - j.x);
     }
 
     /// Adds a piece's superscript and subscript, stacked; returns their advance.
@@ -336,6 +347,25 @@ private:
         return t;
     }
 
+    /// Moves a box laid out on its own into b, its baseline's left end at (x, y): each part
+    /// is shaped once however deep fractions and radicals nest.
+    static void add_box(text_box& b, text_box&& t, double x, double y) {
+        for (auto& p : t.parts) {
+            p.x += x;
+            p.y += y;
+            b.parts.push_back(std::move(p));
+        }
+        for (const auto& r : t.rules) b.rules.push_back({r.x + x, r.y + y, r.w, r.h});
+        b.ascent = std::max(b.ascent, t.ascent - y);
+        b.descent = std::max(b.descent, t.descent + y);
+        if (!t.inked) return;
+        b.ink_x0 = b.inked ? std::min(b.ink_x0, t.ink_x0 + x) : t.ink_x0 + x;
+        b.ink_y0 = b.inked ? std::min(b.ink_y0, t.ink_y0 + y) : t.ink_y0 + y;
+        b.ink_x1 = b.inked ? std::max(b.ink_x1, t.ink_x1 + x) : t.ink_x1 + x;
+        b.ink_y1 = b.inked ? std::max(b.ink_y1, t.ink_y1 + y) : t.ink_y1 + y;
+        b.inked = true;
+    }
+
     /// Adds a filled rectangle (a fraction's rule, a radical's line) to the box.
     static void add_rule(text_box& b, double x, double y, double w, double h) {
         b.rules.push_back({x, y, w, h});
@@ -359,8 +389,8 @@ private:
     double add_fraction(text_box& b, const box_piece& p, double size, double least, double x, double y) const {
         const fraction_metrics f;
         const double pt = p.display ? size : std::max(script_metrics{}.size * size, least);
-        const text_box num = sub_box(p.num, pt, least);
-        const text_box den = sub_box(p.den, pt, least);
+        text_box num = sub_box(p.num, pt, least);
+        text_box den = sub_box(p.den, pt, least);
         const double theta = f.rule * size;
         const double clear = (p.display ? 3 : 1) * theta;
         const double axis = f.axis * size;
@@ -371,8 +401,10 @@ private:
         const double w = std::max(num.width, den.width);
         const double side = f.side * size;
         const double cx = x + side + w / 2;
-        add_math(b, p.num, pt, least, centred(num, cx), y - up);
-        add_math(b, p.den, pt, least, centred(den, cx), y + down);
+        const double num_x = centred(num, cx);
+        const double den_x = centred(den, cx);
+        add_box(b, std::move(num), num_x, y - up);
+        add_box(b, std::move(den), den_x, y + down);
         add_rule(b, x + side, y - axis - theta / 2, w, theta);
         return w + 2 * side;
     }
@@ -382,7 +414,7 @@ private:
     /// own size where it reaches the rule and the radicand's foot, else stretched to them.
     double add_radical(text_box& b, const box_piece& p, double size, double least, double x, double y) const {
         const fraction_metrics f;
-        const text_box body = sub_box(p.text, size, least);
+        text_box body = sub_box(p.text, size, least);
         const double theta = f.rule * size;
         const double body_top = body.inked ? std::min(body.ink_y0, -0.43 * size) : -0.43 * size;
         double rule_top = body_top - (p.sign ? 1.25 : 3) * theta - theta;
@@ -397,10 +429,10 @@ private:
             advance = add_part(b, sign, size, x, y + rule_top - stretch * s.y, true, stretch);
             rule_x = x + s.x + s.w - theta / 2;
         }
-        add_math(b, p.text, size, least, x + advance, y);
-        const double end = x + advance + body.width;
-        add_rule(b, rule_x, y + rule_top, end - rule_x, theta);
-        return advance + body.width;
+        const double width = body.width;
+        add_box(b, std::move(body), x + advance, y);
+        add_rule(b, rule_x, y + rule_top, x + advance + width - rule_x, theta);
+        return advance + width;
     }
 
     /// The rightmost ink of plain markup between heights y0 and y1 (relative to its

@@ -79,9 +79,9 @@ constexpr tex_macro macro_table[] = {
     {"&", "&", "\\&", symbol},  {"#", "#", "\\#", symbol},  {"_", "_", "\\_", symbol},  {"|", "\u2016", "\\|", symbol},
     // Layout: the markup column says what the drawing shows
     {"sqrt", "\u221a and a line over x; [n]: n raised before", "\\sqrt", function},
-    {"frac", "a over a rule over b, the parts at script size", "\\frac", function},
+    {"frac", "a over a rule over b", "\\frac", function},
     {"tfrac", "as \\frac", "\\tfrac", function},
-    {"dfrac", "as \\frac, the parts at the text's size", "\\dfrac", function},
+    {"dfrac", "as \\frac, parts at text size", "\\dfrac", function},
     {"left", "a delimiter: ( ) [ ] \\{ \\} | \\| . (none)", "\\left", function},
     {"right", "the delimiter closing \\left", "\\right", function},
     {"big", "its delimiter, at the text's size", "", function},

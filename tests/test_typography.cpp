@@ -111,8 +111,11 @@ TEST(Typography, FractionMarkupKeepsTheInlineFormForText) {
     EXPECT_EQ(plot::tex_to_markup("$\\dfrac{a}{b}$"), "<dfrac><num><i>a</i></num><den><i>b</i></den></dfrac>");
     EXPECT_EQ(plot::tex_to_markup("$\\tfrac{a}{b}$"), "<frac><num><i>a</i></num><den><i>b</i></den></frac>");
     EXPECT_EQ(plot::markup_text(plot::tex_to_markup("$\\frac{1}{x/2}$")), "1/(x/2)");
-    EXPECT_EQ(plot::markup_text(plot::tex_to_markup("$\\frac{a+b}{\\frac{1}{c}}$")), "(a + b)/1/c");
-    EXPECT_EQ(plot::inline_fractions(plot::tex_to_markup("$\\frac{\\frac{1}{2}}{3}$")), "1/2/3");
+    // A fraction in a part is a quotient too: \frac{1}{\frac{x}{2}} reads 1/(x/2), not 1/x/2.
+    EXPECT_EQ(plot::markup_text(plot::tex_to_markup("$\\frac{a+b}{\\frac{1}{c}}$")), "(a + b)/(1/c)");
+    EXPECT_EQ(plot::inline_fractions(plot::tex_to_markup("$\\frac{\\frac{1}{2}}{3}$")), "(1/2)/3");
+    EXPECT_EQ(plot::tex_to_plain("$\\frac{1}{\\frac{x}{2}}$"), "1/(x/2)");
+    EXPECT_EQ(plot::tex_to_plain("$\\sqrt{\\frac{1}{c}}$"), "\u221a(1/c)");
     EXPECT_EQ(plot::tex_to_plain("$\\frac{1}{x/2}$"), "1/(x/2)");
     // A program's markup with a fraction still has LaTeX: the inline form's.
     EXPECT_EQ(plot::markup_to_latex(plot::tex_to_markup("$\\frac{1}{x/2}$")), "$1/(x/2)$");
@@ -404,4 +407,20 @@ TEST(Typography, TheFractionElementCannotBeWrittenByALabel) {
         EXPECT_EQ(markup.find("<span"), std::string::npos) << markup;
         for (const auto& p : plot::split_boxes(markup)) EXPECT_EQ(p.type, plot::box_piece::kind::run) << tex;
     }
+}
+
+TEST(Typography, DescriptionsReadAFractionInLineWithItsParentheses) {
+    // A title \frac{1}{\frac{x}{2}} and a formula 1/(theta0/2): the SVG's <title>, the alt
+    // text and the description read 1/(x/2) and 1/(theta0/2), never 1/x/2 nor 1x2.
+    const auto dir = temp_dir("typography-alt");
+    std::ofstream(dir / "alt.toml") << "[figure]\ncolumns = 1\ntitle = '$\\frac{1}{\\frac{x}{2}}$'\n\n[[panel]]\n"
+                                       "plot = \"period\"\nmethods = [\"exact\", { formula = \"1/(theta0/2)\" }]\n";
+    const auto d = run_cli("describe alt.toml", dir);
+    ASSERT_EQ(d.status, 0) << d.err;
+    EXPECT_EQ(d.out.rfind("1/(x/2).\n", 0), 0u) << d.out;
+    EXPECT_NE(d.out.find("Title: 1/(x/2)."), std::string::npos) << d.out;
+    EXPECT_NE(d.out.find("1/(theta0/2) (dashed line)"), std::string::npos) << d.out;
+    const auto r = run_cli("render alt.toml -f svg", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(slurp(dir / "alt.svg").find("<title>1/(x/2)</title>"), std::string::npos);
 }

@@ -294,6 +294,7 @@ private:
         bool sum = false;                           ///< a group with a binary operator, relation, / or * at its top
         bool prime = false;                         ///< a lone ' (LaTeX: a prime on an empty base)
         bool operator_name = false;                 ///< \sin, \log, ...: a thin space before an operand after it
+        bool fraction = false;                      ///< \frac, \tfrac, \dfrac: a quotient, in line a/b
     };
 
     /// True at "\right" (a whole macro name).
@@ -365,7 +366,7 @@ private:
         if (c == ',' && script_depth_ == 0 && !latex_) out += "\u2009";
         state.after_operand = !(c == '(' || c == '/' || c == '*' || c == ',' || c == '+' || c == '-');
         // a/b/c reads as (a/b)/c: a quotient or product in a fraction's part is one too
-        if (sum && state.parens == 0 && (c == '/' || c == '*')) *sum = true;
+        if (sum && state.parens == 0 && (c == '/' || c == '*' || last_.fraction)) *sum = true;
     }
 
     /// One atom and the primes and scripts that follow it; last_ keeps the atom's facts.
@@ -534,6 +535,7 @@ private:
             case macro_kind::font: return face(*m);
             case macro_kind::function: break;
         }
+        facts.fraction = m->name.ends_with("frac");
         return function(*m);
     }
 

@@ -120,26 +120,28 @@ TEST(Notation, RootsFractionsAndDelimiters) {
     EXPECT_EQ(tex_to_latex("$\\sqrt x$"), "$\\sqrt{x}$");
     EXPECT_EQ(tex_to_latex("$\\sqrt[3]{x}$"), "$\\sqrt[3]{x}$");
     EXPECT_EQ(tex_to_plain("$\\sqrt{g/L}$"), "\u221a(g/L)");
-    // \frac: inline a/b, a part in parentheses only where it is a sum.
-    EXPECT_EQ(tex_to_markup("$\\frac{T}{T_0}$"), "<i>T</i>/<i>T</i><sub>0</sub>");
-    EXPECT_EQ(tex_to_markup("$\\frac{a+b}{2}$"), "(<i>a</i> + <i>b</i>)/2");
-    EXPECT_EQ(tex_to_markup("$\\frac{1}{a-b}$"), "1/(<i>a</i> \u2212 <i>b</i>)");
-    EXPECT_EQ(tex_to_markup("$\\frac{2\\pi}{3}$"), "2<i>\u03c0</i>/3");
-    EXPECT_EQ(tex_to_markup("$\\frac12$"), "1/2");
+    // \frac: stacked by the layout; in line (alt text, plain text) a/b, a part in parentheses
+    // only where it is a sum.
+    EXPECT_EQ(tex_to_markup("$\\frac{T}{T_0}$"), "<frac><num><i>T</i></num><den><i>T</i><sub>0</sub></den></frac>");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac{T}{T_0}$")), "<i>T</i>/<i>T</i><sub>0</sub>");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac{a+b}{2}$")), "(<i>a</i> + <i>b</i>)/2");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac{1}{a-b}$")), "1/(<i>a</i> \u2212 <i>b</i>)");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac{2\\pi}{3}$")), "2<i>\u03c0</i>/3");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac12$")), "1/2");
     // a quotient in a part is one too: 1/(x/2), never 1/x/2 (which reads (1/x)/2)
-    EXPECT_EQ(tex_to_markup("$\\frac{1}{x/2}$"), "1/(<i>x</i>/2)");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac{1}{x/2}$")), "1/(<i>x</i>/2)");
     // what is inside written parentheses is not at the part's top
-    EXPECT_EQ(tex_to_markup("$\\frac{\\sin(x/2)}{(a+b)}$"), "sin(<i>x</i>/2)/(<i>a</i> + <i>b</i>)");
-    EXPECT_EQ(tex_to_markup("$\\frac{(a+b)c}{2}$"), "(<i>a</i> + <i>b</i>)<i>c</i>/2");
-    EXPECT_EQ(tex_to_markup("$\\frac{a*b}{c}$"), "(<i>a</i>\u2217<i>b</i>)/<i>c</i>");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac{\\sin(x/2)}{(a+b)}$")), "sin(<i>x</i>/2)/(<i>a</i> + <i>b</i>)");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac{(a+b)c}{2}$")), "(<i>a</i> + <i>b</i>)<i>c</i>/2");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac{a*b}{c}$")), "(<i>a</i>\u2217<i>b</i>)/<i>c</i>");
     // an operator name and its operand with TeX's thin space: sin x, sin² x; none before (
-    EXPECT_EQ(tex_to_markup("$\\frac{\\sin x}{x/2}$"), "sin\u2009<i>x</i>/(<i>x</i>/2)");
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\frac{\\sin x}{x/2}$")), "sin\u2009<i>x</i>/(<i>x</i>/2)");
     EXPECT_EQ(tex_to_markup("$\\sin^2 x$"), "sin<sup>2</sup>\u2009<i>x</i>");
     EXPECT_EQ(tex_to_markup("$\\cos(x)$"), "cos(<i>x</i>)");
     EXPECT_EQ(tex_to_markup("$\\log\\left(x\\right)$"), "log(<i>x</i>)");
     EXPECT_EQ(tex_to_latex("$\\sin x$"), "$\\sin x$");
     for (const std::string f : {"frac", "tfrac", "dfrac"}) {
-        EXPECT_EQ(tex_to_markup("$\\" + f + "{\\pi}{2}$"), "<i>\u03c0</i>/2") << f;
+        EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\" + f + "{\\pi}{2}$")), "<i>\u03c0</i>/2") << f;
         EXPECT_EQ(tex_to_latex("$\\" + f + "{\\pi}{2}$"), "$\\" + f + "{\\pi }{2}$") << f;
     }
     // \left and \right: the delimiters as written, at the text's size.
@@ -158,7 +160,7 @@ TEST(Notation, RootsFractionsAndDelimiters) {
     // The two labels of the period figure's test.
     EXPECT_EQ(tex_to_markup("$T/T_0 \\approx 1/\\sqrt{\\cos(\\theta_0/2)}$"),
               "<i>T</i>/<i>T</i><sub>0</sub> \u2248 1/\u221a<span overline=\"single\">cos(<i>\u03b8</i><sub>0</sub>/2)</span>");
-    EXPECT_EQ(tex_to_markup("$\\left(\\frac{T}{T_0}\\right)^2 \\le \\infty$"),
+    EXPECT_EQ(plot::inline_fractions(tex_to_markup("$\\left(\\frac{T}{T_0}\\right)^2 \\le \\infty$")),
               "(<i>T</i>/<i>T</i><sub>0</sub>)<sup>2</sup> \u2264 \u221e");
     EXPECT_EQ(tex_to_latex("$\\left(\\frac{T}{T_0}\\right)^2 \\le \\infty$"),
               "$\\left(\\frac{T}{T_0}\\right)^2\\le \\infty $");

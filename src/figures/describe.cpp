@@ -6,6 +6,7 @@
 #include "figures/panel_support.hpp"
 #include "figures/spec_build.hpp"
 #include "figures/themes.hpp"
+#include "plot/math_layout.hpp"
 #include "plot/geometry.hpp"
 #include "plot/render.hpp"
 
@@ -84,7 +85,7 @@ std::string spoken(double v, plot::tick_kind kind) {
 }
 
 std::string spoken_label(const std::string& markup) {
-    std::string out = plain_text(flat_scripts(markup));
+    std::string out = plain_text(flat_scripts(plot::inline_fractions(markup)));
     const std::pair<const char*, const char*> words[] = {
         {"\u03d1", "theta"}, {"\u03b8", "theta"}, {"\u03c0", "pi"}, {"\u03c9", "omega"}, {"\u02b9", "'"},
         {"\u2032", "'"},     {"\u2212", "-"},     {"\u00b0", " degrees"}};

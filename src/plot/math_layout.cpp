@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/math_layout.hpp"
 
+#include <string_view>
+
 namespace plot {
 
 namespace {
@@ -200,6 +202,174 @@ private:
 }  // namespace
 
 std::vector<accent_piece> split_accents(const std::string& markup) { return accent_splitter().run(markup); }
+
+namespace {
+
+/// The end of the element whose start tag ends just before `from`: the position of the end
+/// tag that closes it, past the elements nested in it; npos if it is not closed.
+std::size_t element_end(const std::string& s, std::size_t from) {
+    int depth = 0;
+    for (std::size_t i = s.find('<', from); i != std::string::npos; i = s.find('<', i + 1)) {
+        const std::size_t end = s.find('>', i);
+        if (end == std::string::npos) return std::string::npos;
+        if (s[i + 1] == '/') {
+            if (depth == 0) return i;
+            --depth;
+        } else if (s[end - 1] != '/') {
+            ++depth;
+        }
+        i = end;
+    }
+    return std::string::npos;
+}
+
+/// A fraction's parts as tex_to_markup writes them: <frac> or <dfrac>, then <num> (<pnum>
+/// for a part that needs parentheses in line) and <den> (<pden>).
+struct fraction_element {
+    std::string num, den;
+    bool num_paren = false, den_paren = false, display = false;
+    std::size_t end = std::string::npos;  // past the closing tag; npos: not a fraction
+};
+
+/// One part of a fraction starting at s[i]: its tag's name is `name` or "p" + `name`.
+bool fraction_part(const std::string& s, std::size_t& i, const std::string& name, std::string& text, bool& paren) {
+    paren = s.compare(i, name.size() + 3, "<p" + name + ">") == 0;
+    const std::string open = paren ? "<p" + name + ">" : "<" + name + ">";
+    if (s.compare(i, open.size(), open) != 0) return false;
+    const std::size_t close = element_end(s, i + open.size());
+    if (close == std::string::npos || s.compare(close, open.size() + 1, "</" + open.substr(1)) != 0) return false;
+    text = s.substr(i + open.size(), close - i - open.size());
+    i = close + open.size() + 1;
+    return true;
+}
+
+fraction_element fraction_at(const std::string& s, std::size_t i) {
+    fraction_element f;
+    f.display = s.compare(i, 7, "<dfrac>") == 0;
+    if (!f.display && s.compare(i, 6, "<frac>") != 0) return f;
+    const std::string close = f.display ? "</dfrac>" : "</frac>";
+    std::size_t at = i + close.size() - 1;
+    if (!fraction_part(s, at, "num", f.num, f.num_paren) || !fraction_part(s, at, "den", f.den, f.den_paren) ||
+        s.compare(at, close.size(), close) != 0) {
+        return f;
+    }
+    f.end = at + close.size();
+    return f;
+}
+
+constexpr std::string_view overline_tag = "<span overline=\"single\">";
+constexpr std::string_view root_sign = "\u221a";
+
+/// A radical (\u221a and an overlined span) or an overline alone at markup[i]: the piece,
+/// and the position past it; npos if there is none.
+std::size_t radical_at(const std::string& markup, std::size_t i, box_piece& piece) {
+    const bool sign = markup.compare(i, root_sign.size(), root_sign) == 0;
+    const std::size_t tag = sign ? i + root_sign.size() : i;
+    if (markup.compare(tag, overline_tag.size(), overline_tag) != 0) return std::string::npos;
+    const std::size_t from = tag + overline_tag.size();
+    const std::size_t close = element_end(markup, from);
+    if (close == std::string::npos) return std::string::npos;
+    piece = box_piece{};
+    piece.type = box_piece::kind::radical;
+    piece.text = markup.substr(from, close - from);
+    piece.sign = sign;
+    return close + std::string_view("</span>").size();
+}
+
+}  // namespace
+
+std::vector<box_piece> split_boxes(const std::string& markup) {
+    std::vector<box_piece> out;
+    std::string run;
+    box_piece radical;
+    int depth = 0;
+    const auto flush = [&] {
+        if (run.empty()) return;
+        box_piece p;
+        p.text = run;
+        out.push_back(std::move(p));
+        run.clear();
+    };
+    for (std::size_t i = 0; i < markup.size();) {
+        if (depth == 0) {
+            if (const fraction_element f = fraction_at(markup, i); f.end != std::string::npos) {
+                flush();
+                box_piece p;
+                p.type = box_piece::kind::fraction;
+                p.num = f.num;
+                p.den = f.den;
+                p.display = f.display;
+                out.push_back(std::move(p));
+                i = f.end;
+                continue;
+            }
+            if (const std::size_t end = radical_at(markup, i, radical); end != std::string::npos) {
+                flush();
+                out.push_back(std::move(radical));
+                i = end;
+                continue;
+            }
+        }
+        if (markup[i] == '<') {
+            const std::size_t end = markup.find('>', i);
+            if (end == std::string::npos) {  // not markup; Pango reports it
+                run += markup.substr(i);
+                break;
+            }
+            if (markup[i + 1] == '/') {
+                --depth;
+            } else if (markup[end - 1] != '/') {
+                ++depth;
+            }
+            run += markup.substr(i, end - i + 1);
+            i = end + 1;
+            continue;
+        }
+        run += markup[i++];
+    }
+    flush();
+    return out;
+}
+
+std::string inline_fractions(const std::string& markup) {
+    if (markup.find("frac>") == std::string::npos) return markup;
+    std::string out;
+    for (std::size_t i = 0; i < markup.size();) {
+        const fraction_element f = markup[i] == '<' ? fraction_at(markup, i) : fraction_element{};
+        if (f.end == std::string::npos) {
+            out += markup[i++];
+            continue;
+        }
+        const auto part = [](const std::string& s, bool paren) {
+            const std::string in = inline_fractions(s);
+            return paren ? "(" + in + ")" : in;
+        };
+        out += part(f.num, f.num_paren) + "/" + part(f.den, f.den_paren);
+        i = f.end;
+    }
+    return out;
+}
+
+std::size_t italic_after_slash(const std::string& markup) {
+    int depth = 0;
+    for (std::size_t i = 0; i < markup.size(); ++i) {
+        if (markup[i] == '/' && depth == 0 && markup.compare(i + 1, 3, "<i>") == 0) return i + 1;
+        if (markup[i] != '<') continue;
+        const std::size_t end = markup.find('>', i);
+        if (end == std::string::npos) return std::string::npos;
+        if (markup[i + 1] == '/') {
+            --depth;
+        } else if (markup[end - 1] != '/') {
+            ++depth;
+        }
+        i = end;
+    }
+    return std::string::npos;
+}
+
+bool has_boxes(const std::string& markup) {
+    return markup.find("frac>") != std::string::npos || markup.find(overline_tag) != std::string::npos;
+}
 
 bool only_primes(const std::string& markup) {
     if (markup.empty()) return false;

@@ -42,6 +42,52 @@ std::size_t combining_marks_at(const std::string& s, std::size_t pos);
 /// glyph stands on the baseline, while the Unicode glyph is drawn already raised.
 bool only_primes(const std::string& markup);
 
+/// A piece of a run of markup for the layout: a run Pango sets as it is, a fraction the
+/// layout stacks (<frac>, <dfrac>), or a radical (\u221a then <span overline="single">)
+/// whose sign and line the layout draws over its radicand.
+struct box_piece {
+    enum class kind { run, fraction, radical } type = kind::run;
+    std::string text;      ///< a run's markup, or a radical's radicand
+    std::string num;       ///< a fraction's numerator
+    std::string den;       ///< a fraction's denominator
+    bool display = false;  ///< \dfrac: its parts at the size of the text around it
+    bool sign = false;     ///< a radical's \u221a (without it, \\overline's line alone)
+};
+
+/// Cuts markup at its top-level fractions and radicals; the rest is left in runs.
+std::vector<box_piece> split_boxes(const std::string& markup);
+
+/// The markup with every fraction written in line as a/b, a part in parentheses where the
+/// TeX marked it (a sum, a relation, a quotient or product), and every other element as
+/// it is: what Pango, plain text and the SVG's text elements get.
+std::string inline_fractions(const std::string& markup);
+
+/// Where a run of markup is cut before an italic letter that follows a slash (t/T, T_N/T),
+/// outside other elements: the position after the slash, or npos. The layout sets that
+/// letter no farther from the slash than TeX does (text italic letters stand farther right
+/// in their advance than math italic ones).
+std::size_t italic_after_slash(const std::string& markup);
+
+/// The ink gap TeX sets between a slash and the math italic letter after it, in ems
+/// (measured on $t/T$ set by pdfTeX in Computer Modern: 0.08 em).
+inline constexpr double slash_gap = 0.08;
+
+/// True if the markup holds a fraction or radical the layout draws.
+bool has_boxes(const std::string& markup);
+
+/// How TeX stacks a fraction, in ems of the text's size: cmsy10's axis height, num2 and
+/// denom2 (num1 and denom1 in display style), cmex10's rule thickness, and
+/// \nulldelimiterspace each side.
+struct fraction_metrics {
+    double axis = 0.25;             ///< the rule's middle above the baseline
+    double rule = 0.04;             ///< the rule's thickness
+    double num_shift = 0.394;       ///< numerator's baseline raised (text style)
+    double den_shift = 0.344;       ///< denominator's baseline lowered (text style)
+    double num_shift_display = 0.677;  ///< numerator's baseline raised (\dfrac)
+    double den_shift_display = 0.686;  ///< denominator's baseline lowered (\dfrac)
+    double side = 0.12;             ///< space each side of the rule
+};
+
 /// Where scripts go, in ems of the base font: TeX's parameters of Computer Modern
 /// (cmsy10's sup1, sub1 and sub2) and its script size.
 struct script_metrics {

@@ -139,7 +139,7 @@ public:
     /// The label's markup, its scripts placed as the drawing places them.
     void write(const std::string& markup) {
         const script_metrics m;
-        for (const auto& piece : split_scripts(engine_.drawn(markup))) {
+        for (const auto& piece : split_scripts(engine_.drawn(inline_fractions(markup)))) {
             if (!piece.base.empty() || (!piece.has_sup && !piece.has_sub)) add(piece.base, size_, 0);
             double sup_width = 0;
             if (piece.has_sup) {

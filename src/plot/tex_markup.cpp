@@ -4,6 +4,7 @@
 #include "common/suggest.hpp"
 #include "plot/errors.hpp"
 #include "plot/figure.hpp"
+#include "plot/math_layout.hpp"
 
 #include <glib.h>
 
@@ -79,9 +80,9 @@ constexpr tex_macro macro_table[] = {
     {"&", "&", "\\&", symbol},  {"#", "#", "\\#", symbol},  {"_", "_", "\\_", symbol},  {"|", "\u2016", "\\|", symbol},
     // Layout: the markup column says what the drawing shows
     {"sqrt", "\u221a and a line over x; [n]: n raised before", "\\sqrt", function},
-    {"frac", "a/b in line, parts in parentheses", "\\frac", function},
+    {"frac", "a over a rule over b", "\\frac", function},
     {"tfrac", "as \\frac", "\\tfrac", function},
-    {"dfrac", "as \\frac", "\\dfrac", function},
+    {"dfrac", "as \\frac, parts at text size", "\\dfrac", function},
     {"left", "a delimiter: ( ) [ ] \\{ \\} | \\| . (none)", "\\left", function},
     {"right", "the delimiter closing \\left", "\\right", function},
     {"big", "its delimiter, at the text's size", "", function},
@@ -192,12 +193,23 @@ public:
             } else if (static_cast<unsigned char>(c) >= 0x80) {
                 const std::string ch = utf8_character();
                 out += latex_ ? text_latex(ch) : ch;
+            } else if (markup_ && (c == '\'' || c == '`')) {
+                out += quote(c);
             } else {
                 out += text(std::string(1, c));
                 ++pos_;
             }
         }
         return out;
+    }
+
+    /// TeX's quotes in text as it sets them: ' and ` as ’ and ‘, '' and `` as
+    /// ” and “ (LaTeX is given them as written, and sets the same).
+    std::string quote(char c) {
+        const bool doubled = pos_ + 1 < tex_.size() && tex_[pos_ + 1] == c;
+        pos_ += doubled ? 2 : 1;
+        if (c == '\'') return doubled ? "\u201d" : "\u2019";
+        return doubled ? "\u201c" : "\u2018";
     }
 
 private:
@@ -267,6 +279,7 @@ private:
         bool sum = false;                           ///< a group with a binary operator, relation, / or * at its top
         bool prime = false;                         ///< a lone ' (LaTeX: a prime on an empty base)
         bool operator_name = false;                 ///< \sin, \log, ...: a thin space before an operand after it
+        bool fraction = false;                      ///< \frac, \tfrac, \dfrac: a quotient, in line a/b
     };
 
     /// True at "\right" (a whole macro name).
@@ -338,7 +351,7 @@ private:
         if (c == ',' && script_depth_ == 0 && !latex_) out += "\u2009";
         state.after_operand = !(c == '(' || c == '/' || c == '*' || c == ',' || c == '+' || c == '-');
         // a/b/c reads as (a/b)/c: a quotient or product in a fraction's part is one too
-        if (sum && state.parens == 0 && (c == '/' || c == '*')) *sum = true;
+        if (sum && state.parens == 0 && (c == '/' || c == '*' || last_.fraction)) *sum = true;
     }
 
     /// One atom and the primes and scripts that follow it; last_ keeps the atom's facts.
@@ -507,6 +520,7 @@ private:
             case macro_kind::font: return face(*m);
             case macro_kind::function: break;
         }
+        facts.fraction = m->name.ends_with("frac");
         return function(*m);
     }
 
@@ -577,14 +591,24 @@ private:
         return raised + "\u221a" + (last_.group ? "(" + body + ")" : body);
     }
 
-    /// \frac{a}{b} inline as a/b, a or b in parentheses where it is a sum, a relation, or a
-    /// quotient or product written with / or * (\frac{1}{x/2} is 1/(x/2)).
+    /// \frac{a}{b}: as markup a <frac> (\dfrac: <dfrac>) the layout stacks, its parts
+    /// <num> and <den>, or <pnum> and <pden> where a part written in line needs parentheses;
+    /// as plain text in line as a/b, a or b in parentheses where it is a sum, a relation, or
+    /// a quotient or product written with / or * (\frac{1}{x/2} is 1/(x/2)).
     std::string fraction(const tex_macro& m) {
         const std::string num = atom();
         const atom_facts top = last_;
         const std::string num_latex = braced_latex(num);
         const std::string den = atom();
         if (latex_) return std::string(m.latex) + num_latex + braced_latex(den);
+        if (markup_) {
+            const std::string kind = m.name == "dfrac" ? "dfrac" : "frac";
+            const auto part = [](const std::string& name, const std::string& s, bool sum) {
+                const std::string tag = sum ? "p" + name : name;
+                return "<" + tag + ">" + s + "</" + tag + ">";
+            };
+            return "<" + kind + ">" + part("num", num, top.sum) + part("den", den, last_.sum) + "</" + kind + ">";
+        }
         const auto part = [](const std::string& s, bool sum) { return sum ? "(" + s + ")" : s; };
         return part(num, top.sum) + "/" + part(den, last_.sum);
     }
@@ -999,7 +1023,7 @@ std::string markup_to_latex(std::string_view markup) {
     // Words (split at spaces) with a plain letter are text; the others, and runs of them,
     // are one piece of math, so that TeX spaces "T - 1" and "= pi/2" as math.
     std::vector<std::vector<markup_node>> words(1);
-    for (auto& n : markup_parser(markup).parse()) {
+    for (auto& n : markup_parser(inline_fractions(whole)).parse()) {
         if (n.type == markup_node::kind::character && n.text == " ") {
             words.emplace_back();
         } else {

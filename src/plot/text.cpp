@@ -4,6 +4,7 @@
 #include "plot/theme.hpp"
 
 #include "plot/errors.hpp"
+#include "plot/math_layout.hpp"
 #include "plot/tex_markup.hpp"
 
 #include <fontconfig/fontconfig.h>
@@ -163,6 +164,18 @@ std::vector<letter_form> distinct_letter_forms(PangoContext* context, const std:
     return {{"\u03b8", "<span style=\"normal\">\U0001d703</span>"}};
 }
 
+std::vector<letter_form> text_font_primes(PangoContext* context, const std::string& font_family) {
+    const std::string first = font_family.substr(0, font_family.find(','));
+    font_description_ptr font(pango_font_description_new());
+    pango_font_description_set_family(font.get(), first.c_str());
+    pango_font_description_set_size(font.get(), 10 * PANGO_SCALE);
+    gobject_ptr<PangoFont> loaded(pango_context_load_font(context, font.get()));
+    hb_font_t* hb = loaded.get() ? pango_font_get_hb_font(loaded.get()) : nullptr;
+    hb_codepoint_t glyph = 0;
+    if (!hb || hb_font_get_nominal_glyph(hb, 0x2032, &glyph) || !hb_font_get_nominal_glyph(hb, 0x2b9, &glyph)) return {};
+    return {{"\u2032", "\u02b9"}, {"\u2033", "\u02b9\u02b9"}, {"\u2034", "\u02b9\u02b9\u02b9"}};
+}
+
 namespace {
 
 /// The length of the combining marks (U+0300..U+036F, U+20D0..U+20FF) at markup[pos].
@@ -238,7 +251,8 @@ bool font_family_installed(const std::string& font_family) {
 
 std::string markup_text(const std::string& markup) {
     char* text = nullptr;
-    if (!pango_parse_markup(markup.c_str(), -1, 0, nullptr, &text, nullptr, nullptr) || !text) return markup;
+    const std::string in_line = inline_fractions(markup);
+    if (!pango_parse_markup(in_line.c_str(), -1, 0, nullptr, &text, nullptr, nullptr) || !text) return in_line;
     std::string out(text);
     g_free(text);
     return out;

@@ -42,6 +42,11 @@ struct letter_form {
 /// since its glyph leans already, from the family or a font fontconfig finds for it.
 std::vector<letter_form> distinct_letter_forms(PangoContext* context, const std::string& font_family);
 
+/// The primes (′ ″ ‴) as the first family of `font_family` draws them: where it has no
+/// U+2032 but the modifier letter prime U+02B9 (Computer Modern Unicode), that, so that a
+/// prime has the weight of the letters beside it and not a fallback font's; else none.
+std::vector<letter_form> text_font_primes(PangoContext* context, const std::string& font_family);
+
 /// Markup with each letter of `forms` replaced by its form.
 std::string with_letter_forms(std::string markup, const std::vector<letter_form>& forms);
 
@@ -92,6 +97,7 @@ public:
         pango_cairo_context_set_font_options(context_.get(), options.get());
         check_font_installed();
         forms_ = distinct_letter_forms(context_.get(), family_);
+        for (letter_form& f : text_font_primes(context_.get(), family_)) forms_.push_back(std::move(f));
     }
 
     /// The markup as this family draws it: letters it would draw alike kept apart.
@@ -105,8 +111,14 @@ public:
             double x = 0;         // left end of the part's baseline
             double y = 0;         // the part's baseline, below the box's (y down)
             double baseline = 0;  // the layout's own baseline below its top
+            double stretch = 1;   // drawn stretched upright by this (a radical's sign)
+        };
+        /// A filled rectangle: a fraction's rule, a radical's line.
+        struct rule {
+            double x = 0, y = 0, w = 0, h = 0;
         };
         std::vector<part> parts;
+        std::vector<rule> rules;
         double width = 0;
         double ascent = 0;   // logical, above the baseline
         double descent = 0;  // logical, below the baseline
@@ -144,14 +156,21 @@ private:
     /// Adds a part: markup at pt with the left end of its baseline at (x, y); returns its
     /// advance. The box's ascent grows by the part's logical extent, or (for an accent,
     /// `logical` false) by its ink alone.
-    double add_part(text_box& b, const std::string& text, double pt, double x, double y, bool logical = true) const {
+    double add_part(text_box& b, const std::string& text, double pt, double x, double y, bool logical = true,
+                    double stretch = 1) const {
         text_box::part p;
         p.layout = make(text, pt, text);
         p.x = x;
         p.y = y;
+        p.stretch = stretch;
         p.baseline = pango_layout_get_baseline(p.layout.get()) / double(PANGO_SCALE);
         PangoRectangle ink, extent;
         pango_layout_get_extents(p.layout.get(), &ink, &extent);
+        for (PangoRectangle* r : {&ink, &extent}) {
+            const int baseline_units = pango_layout_get_baseline(p.layout.get());
+            r->y = static_cast<int>(std::lround(baseline_units + (r->y - baseline_units) * stretch));
+            r->height = static_cast<int>(std::lround(r->height * stretch));
+        }
         const double top = y - p.baseline;
         if (logical) {
             b.ascent = std::max(b.ascent, -(top + extent.y / double(PANGO_SCALE)));
@@ -173,8 +192,23 @@ private:
         return extent.width / double(PANGO_SCALE);
     }
 
-    /// Adds a run of markup, its accents placed as TeX places them; returns its advance.
+    /// Adds a run of markup, its accents placed as TeX places them and an italic letter
+    /// after a slash no farther from it than TeX sets it; returns its advance.
     double add_run(text_box& b, const std::string& markup, double pt, double x, double y) const {
+        const std::size_t cut = italic_after_slash(markup);
+        if (cut == std::string::npos) return add_accented(b, markup, pt, x, y);
+        const std::string left = markup.substr(0, cut);
+        const std::string right = markup.substr(cut);
+        const double advance = add_accented(b, left, pt, x, y);
+        const text_ink l = ink_of(left, pt);
+        const text_ink r = ink_of(right, pt);
+        const double gap = advance + r.x - (l.x + l.w);
+        const double pull = l.w > 0 && r.w > 0 ? std::max(0.0, gap - slash_gap * pt) : 0.0;
+        return advance - pull + add_run(b, right, pt, x + advance - pull, y);
+    }
+
+    /// Adds a run of markup, its accents placed as TeX places them; returns its advance.
+    double add_accented(text_box& b, const std::string& markup, double pt, double x, double y) const {
         const std::vector<accent_piece> pieces = split_accents(markup);
         // Nothing but tags, or nothing: one part all the same, which has the font's height.
         if (pieces.empty()) return add_part(b, markup, pt, x, y);
@@ -214,47 +248,191 @@ private:
     }
 
     text_box make_box(const std::string& markup, double size) const {
-        const script_metrics m;
         text_box b;
+        b.width = add_math(b, markup, size, script_metrics{}.size * script_metrics{}.size * size, 0, 0);
+        return b;
+    }
+
+    /// Lays out markup at `size` with the left end of its baseline at (x, y): runs on the
+    /// baseline, fractions and radicals stacked, and the scripts after them, at every level
+    /// of scripts (none smaller than `least`); returns its advance.
+    double add_math(text_box& b, const std::string& markup, double size, double least, double x, double y) const {
+        double width = 0;
         for (const auto& piece : split_scripts(markup)) {
-            const double start = b.width;
+            const double start = width;
             std::string base_markup;
             if (!piece.base.empty() || (!piece.has_sup && !piece.has_sub)) {
-                b.width += add_run(b, piece.base, size, start, 0);
+                width += add_boxes(b, piece.base, size, least, x + start, y);
                 base_markup = piece.base;
             }
-            // A script starts after the base's advance, or clear of the base's ink beside
-            // it if an italic letter leans out that far (the bowl of ϑ), as a math italic
-            // font's wider advance would; under an overhang above it (the arm of T) it tucks in.
-            auto script_x = [&](const std::string& script, double pt, double y) {
-                if (base_markup.empty()) return b.width;
-                const text_ink j = ink_of(script, pt);
-                const double right = ink_right_in_band(base_markup, size, y + j.y, y + j.y + j.h);
-                return std::max(b.width, start + right + 0.04 * size - j.x);
-            };
-            double script_w = 0;
-            if (piece.has_sup) {
-                double pt = m.size * size;
-                double y = -m.sup_shift * size;
-                if (only_primes(piece.sup)) {
-                    // Sized and raised by its ink to where TeX's prime, standing on the
-                    // superscript's baseline, would be.
-                    const text_ink i = ink_of(piece.sup, pt);
-                    if (i.h > 0) pt *= m.prime_height * size / i.h;
-                    const text_ink j = ink_of(piece.sup, pt);
-                    y -= j.y + j.h;
-                }
-                const double x = script_x(piece.sup, pt, y);
-                script_w = std::max(script_w, add_run(b, piece.sup, pt, x, y) + x - b.width);
-            }
-            if (piece.has_sub) {
-                const double y = (piece.has_sup ? m.sub_shift_with_sup : m.sub_shift) * size;
-                const double x = script_x(piece.sub, m.size * size, y);
-                script_w = std::max(script_w, add_run(b, piece.sub, m.size * size, x, y) + x - b.width);
-            }
-            b.width += script_w;
+            const script_place at{base_markup, size, least, x, y, start, width};
+            width += add_scripts(b, piece, at);
         }
-        return b;
+        return width;
+    }
+
+    /// Where a piece's scripts go: after its base (`base`, from `start` to `end` along the
+    /// baseline at (x, y)), set at `size`.
+    struct script_place {
+        const std::string& base;
+        double size, least, x, y, start, end;
+    };
+
+    /// A script starts after the base's advance, or clear of the base's ink beside it if an
+    /// italic letter leans out that far (the bowl of ϑ), as a math italic font's wider
+    /// advance would; under an overhang above it (the arm of T) it tucks in.
+    double script_x(const script_place& at, const std::string& script, double pt, double dy) const {
+        if (at.base.empty() || has_boxes(script)) return at.end;
+        // After a fraction or radical, the run that ends the base (none: the box's advance).
+        std::string base = at.base;
+        double start = at.start;
+        if (has_boxes(base)) {
+            const std::vector<box_piece> pieces = split_boxes(base);
+            if (pieces.back().type != box_piece::kind::run) return at.end;
+            base = pieces.back().text;
+            PangoRectangle extent;
+            pango_layout_get_extents(make(base, at.size, base).get(), nullptr, &extent);
+            start = at.end - extent.width / double(PANGO_SCALE);
+        }
+        const text_ink j = ink_of(script, pt);
+        const double right = ink_right_in_band(base, at.size, dy + j.y, dy + j.y + j.h);
+        return std::max(at.end, start + right + 0.04 * at.size - j.x);
+    }
+
+    /// Adds a piece's superscript and subscript, stacked; returns their advance.
+    double add_scripts(text_box& b, const math_piece& piece, const script_place& at) const {
+        const script_metrics m;
+        const double script_pt = std::max(m.size * at.size, at.least);
+        double script_w = 0;
+        if (piece.has_sup) {
+            double pt = script_pt;
+            double dy = -m.sup_shift * at.size;
+            if (only_primes(piece.sup)) {
+                // Sized and raised by its ink to where TeX's prime, standing on the
+                // superscript's baseline, would be.
+                const text_ink i = ink_of(piece.sup, pt);
+                if (i.h > 0) pt *= m.prime_height * at.size / i.h;
+                const text_ink j = ink_of(piece.sup, pt);
+                dy -= j.y + j.h;
+            }
+            const double sx = script_x(at, piece.sup, pt, dy);
+            script_w = std::max(script_w, add_math(b, piece.sup, pt, at.least, at.x + sx, at.y + dy) + sx - at.end);
+        }
+        if (piece.has_sub) {
+            const double dy = (piece.has_sup ? m.sub_shift_with_sup : m.sub_shift) * at.size;
+            const double sx = script_x(at, piece.sub, script_pt, dy);
+            script_w = std::max(script_w, add_math(b, piece.sub, script_pt, at.least, at.x + sx, at.y + dy) + sx - at.end);
+        }
+        return script_w;
+    }
+
+    /// Adds a base: its runs, and its fractions and radicals laid out; returns its advance.
+    double add_boxes(text_box& b, const std::string& markup, double size, double least, double x, double y) const {
+        if (!has_boxes(markup)) return add_run(b, markup, size, x, y);
+        double advance = 0;
+        for (const box_piece& p : split_boxes(markup)) {
+            switch (p.type) {
+                case box_piece::kind::run: advance += add_run(b, p.text, size, x + advance, y); break;
+                case box_piece::kind::fraction: advance += add_fraction(b, p, size, least, x + advance, y); break;
+                case box_piece::kind::radical: advance += add_radical(b, p, size, least, x + advance, y); break;
+            }
+        }
+        return advance;
+    }
+
+    /// Markup laid out on its own, its baseline's left end at (0, 0).
+    text_box sub_box(const std::string& markup, double size, double least) const {
+        text_box t;
+        t.width = add_math(t, markup, size, least, 0, 0);
+        return t;
+    }
+
+    /// Moves a box laid out on its own into b, its baseline's left end at (x, y): each part
+    /// is shaped once however deep fractions and radicals nest.
+    static void add_box(text_box& b, text_box&& t, double x, double y) {
+        for (auto& p : t.parts) {
+            p.x += x;
+            p.y += y;
+            b.parts.push_back(std::move(p));
+        }
+        for (const auto& r : t.rules) b.rules.push_back({r.x + x, r.y + y, r.w, r.h});
+        b.ascent = std::max(b.ascent, t.ascent - y);
+        b.descent = std::max(b.descent, t.descent + y);
+        if (!t.inked) return;
+        b.ink_x0 = b.inked ? std::min(b.ink_x0, t.ink_x0 + x) : t.ink_x0 + x;
+        b.ink_y0 = b.inked ? std::min(b.ink_y0, t.ink_y0 + y) : t.ink_y0 + y;
+        b.ink_x1 = b.inked ? std::max(b.ink_x1, t.ink_x1 + x) : t.ink_x1 + x;
+        b.ink_y1 = b.inked ? std::max(b.ink_y1, t.ink_y1 + y) : t.ink_y1 + y;
+        b.inked = true;
+    }
+
+    /// Adds a filled rectangle (a fraction's rule, a radical's line) to the box.
+    static void add_rule(text_box& b, double x, double y, double w, double h) {
+        b.rules.push_back({x, y, w, h});
+        b.ascent = std::max(b.ascent, -y);
+        b.descent = std::max(b.descent, y + h);
+        b.ink_x0 = b.inked ? std::min(b.ink_x0, x) : x;
+        b.ink_y0 = b.inked ? std::min(b.ink_y0, y) : y;
+        b.ink_x1 = b.inked ? std::max(b.ink_x1, x + w) : x + w;
+        b.ink_y1 = b.inked ? std::max(b.ink_y1, y + h) : y + h;
+        b.inked = true;
+    }
+
+    /// The left end at which a part's ink (or, without ink, its advance) is centred on cx.
+    static double centred(const text_box& part, double cx) {
+        return part.inked ? cx - (part.ink_x0 + part.ink_x1) / 2 : cx - part.width / 2;
+    }
+
+    /// A fraction as TeX stacks it in text style (\dfrac: display style): the numerator
+    /// over a rule on the math axis over the denominator, each part centred on the rule,
+    /// clear of it by the rule's thickness (three in display style); returns its advance.
+    double add_fraction(text_box& b, const box_piece& p, double size, double least, double x, double y) const {
+        const fraction_metrics f;
+        const double pt = p.display ? size : std::max(script_metrics{}.size * size, least);
+        text_box num = sub_box(p.num, pt, least);
+        text_box den = sub_box(p.den, pt, least);
+        const double theta = f.rule * size;
+        const double clear = (p.display ? 3 : 1) * theta;
+        const double axis = f.axis * size;
+        double up = (p.display ? f.num_shift_display : f.num_shift) * size;
+        double down = (p.display ? f.den_shift_display : f.den_shift) * size;
+        if (num.inked) up += std::max(0.0, clear - (up - num.ink_y1 - axis - theta / 2));
+        if (den.inked) down += std::max(0.0, clear - (down + den.ink_y0 + axis - theta / 2));
+        const double w = std::max(num.width, den.width);
+        const double side = f.side * size;
+        const double cx = x + side + w / 2;
+        const double num_x = centred(num, cx);
+        const double den_x = centred(den, cx);
+        add_box(b, std::move(num), num_x, y - up);
+        add_box(b, std::move(den), den_x, y + down);
+        add_rule(b, x + side, y - axis - theta / 2, w, theta);
+        return w + 2 * side;
+    }
+
+    /// A radical (or \overline's line alone): the radicand at the text's size under a rule
+    /// clear of its ink as TeX's is (1.25 rules' thickness; \overline: 3), the sign at its
+    /// own size where it reaches the rule and the radicand's foot, else stretched to them.
+    double add_radical(text_box& b, const box_piece& p, double size, double least, double x, double y) const {
+        const fraction_metrics f;
+        text_box body = sub_box(p.text, size, least);
+        const double theta = f.rule * size;
+        const double body_top = body.inked ? std::min(body.ink_y0, -0.43 * size) : -0.43 * size;
+        double rule_top = body_top - (p.sign ? 1.25 : 3) * theta - theta;
+        double advance = 0;
+        double rule_x = x;
+        if (p.sign) {
+            const std::string sign = "\u221a";
+            const text_ink s = ink_of(sign, size);
+            const double foot = std::max(s.y + s.h, body.inked ? body.ink_y1 : 0.0);
+            rule_top = std::min(rule_top, s.y);
+            const double stretch = s.h > 0 ? (foot - rule_top) / s.h : 1;
+            advance = add_part(b, sign, size, x, y + rule_top - stretch * s.y, true, stretch);
+            rule_x = x + s.x + s.w - theta / 2;
+        }
+        const double width = body.width;
+        add_box(b, std::move(body), x + advance, y);
+        add_rule(b, rule_x, y + rule_top, x + advance + width - rule_x, theta);
+        return advance + width;
     }
 
     /// The rightmost ink of plain markup between heights y0 and y1 (relative to its
@@ -324,7 +502,7 @@ private:
         pango_font_description_set_family(font.get(), family_.c_str());
         pango_font_description_set_size(font.get(), static_cast<gint>(std::lround(size * PANGO_SCALE)));
         pango_layout_set_font_description(layout.get(), font.get());
-        const std::string spans = scripts_as_spans(drawn(markup), size);
+        const std::string spans = scripts_as_spans(drawn(inline_fractions(markup)), size);
         // Checked first: Pango would only print a warning and show nothing.
         GError* error = nullptr;
         if (!pango_parse_markup(spans.c_str(), -1, 0, nullptr, nullptr, nullptr, &error)) {
@@ -439,10 +617,22 @@ private:
 
     void show(const text_box& b, double x, double y) const {
         for (const auto& p : b.parts) {
+            if (p.stretch != 1) {
+                cairo_save(cr_);
+                cairo_translate(cr_, x + p.x, y + p.y);
+                cairo_scale(cr_, 1, p.stretch);
+                cairo_move_to(cr_, 0, -p.baseline);
+                pango_cairo_show_layout(cr_, p.layout.get());
+                cairo_restore(cr_);
+                continue;
+            }
             cairo_move_to(cr_, x + p.x, y + p.y - p.baseline);
             // Metrics are unhinted, so the layout made for measuring draws unchanged here.
             pango_cairo_show_layout(cr_, p.layout.get());
         }
+        if (!b.rules.empty()) cairo_new_path(cr_);
+        for (const auto& r : b.rules) cairo_rectangle(cr_, x + r.x, y + r.y, r.w, r.h);
+        if (!b.rules.empty()) cairo_fill(cr_);
     }
 
     cairo_t* cr_;

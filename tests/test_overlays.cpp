@@ -333,7 +333,7 @@ timer = true
     const auto clocked = entry_of("[animation]\nclock = true\n[[panel]]\nplot = \"pendulum\"\ntheta0 = [\"90deg\"]\nmethods = [\"exact\"]\ntimer = true\n");
     const auto b = build_animated(clocked, "paper");
     const auto last = figures::animation_frame(clocked, b.options, b.plan, b.base, b.plan.time(b.plan.frames - 1));
-    EXPECT_NE(last.panels[0].overlay_label.markup.find("\n<i>T</i> = 1.1803"), std::string::npos)
+    EXPECT_NE(last.panels[0].overlay_label.markup.find("<i>T</i>     <i>T</i> = 1.1803"), std::string::npos)
         << last.panels[0].overlay_label.markup;
 }
 

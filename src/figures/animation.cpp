@@ -82,7 +82,7 @@ plot::figure animation_frame(const entry& e, const build_options& options, const
         }
         // Above what the panel shows there already (a pendulum panel's period timer).
         plot::label& shown = f.panels[at].overlay_label;
-        shown = plot::label(clock_text(plan, w0_t) + (shown.empty() ? "" : "\n" + shown.markup));
+        shown = plot::label(clock_text(plan, w0_t) + (shown.empty() ? "" : "     " + shown.markup));
     }
     return f;
 }

@@ -116,7 +116,7 @@ constexpr bar_look bar_looks[] = {
     {"kinetic", 2, 0.55, ""},
     {"potential", 1, 0.25, ""},
     // One legend entry for the three, in their order from the left.
-    {"total", 0, 0.0, "energy in <i>m g L</i>: kinetic, potential, total"},
+    {"total", 0, 0.0, "bars: <i>E</i><sub>kin</sub>, <i>E</i><sub>pot</sub>, <i>E</i> in <i>m g L</i>"},
 };
 
 /// Adds bar `kind` of start i (of n) with height `value` of `largest`: an outline, filled by
@@ -248,9 +248,29 @@ std::string timer_time(const figure_spec& spec, double w0_t) {
     return buf;
 }
 
+/// The top of the drawing with a timer (rod lengths): room for its line above the circle.
+constexpr double timer_top = 1.9;
+
+/// Keeps the legend off the timer's line: an invisible stroke across it, which the legend's
+/// placement avoids as it avoids data.
+void reserve_timer_line(plot::panel& panel, double right) {
+    plot::series room;
+    room.id = "timer-room";
+    room.alpha = 0;
+    room.autoscale = false;
+    room.x = {-1.2, right, std::nan(""), -1.2, right};
+    room.y = {timer_top - 0.15, timer_top - 0.15, std::nan(""), timer_top - 0.5, timer_top - 0.5};
+    panel.data.push_back(std::move(room));
+}
+
 }  // namespace
 
 void add_overlays_still(plot::panel& panel, const panel_spec& p, const std::vector<overlay_start>& starts) {
+    // The timer's line or lines above the circle, not over a bob near the top.
+    if (p.timer) {
+        panel.y.max = timer_top;
+        reserve_timer_line(panel, p.energy_bars ? energy_bars_right : 1.2);
+    }
     if (!p.energy_bars || starts.empty()) return;
     panel.x.max = energy_bars_right;
     const double largest = largest_energy(starts);
@@ -277,9 +297,10 @@ void add_overlays_at(plot::panel& panel, const panel_context& c, const panel_spe
 
 std::string timer_text(const figure_spec& spec, const std::vector<overlay_start>& starts, double w0_t,
                        double frame_step) {
+    // One line, the first start's: several starts are told apart by their label.
     std::string out;
     for (const auto& s : starts) {
-        if (!out.empty()) out += "\n";
+        if (!out.empty()) break;
         if (starts.size() > 1) out += s.label + ": ";
         const auto period = measured_period(s.motion);
         // The frame nearest the completion shows it: an animation of one period ends there.

@@ -76,7 +76,8 @@ void add_overlays_still(plot::panel& panel, const panel_spec& p, const std::vect
 void add_overlays_at(plot::panel& panel, const panel_context& c, const panel_spec& p,
                      const std::vector<overlay_start>& starts, double w0_t);
 
-/// The period timer's text at time w0 t: the time running, then the measured period from
+/// The period timer's text at time w0 t, of the panel's first start (named when there are
+/// several): the time running, then the measured period from
 /// the frame nearest its completion on (frame_step: w0 t between frames; seconds with a
 /// [pendulum] table, else T0 = 2 pi / w0).
 std::string timer_text(const figure_spec& spec, const std::vector<overlay_start>& starts, double w0_t,

@@ -449,3 +449,31 @@ TEST(Overlays, ListsFromFilesEverywhereAndInEveryHelp) {
     EXPECT_EQ(missing.status, 2);
     EXPECT_NE(missing.err.find("none.txt"), std::string::npos) << missing.err;
 }
+
+TEST(Overlays, RenderAtTakesSecondsWithAPendulumTable) {
+    // swing has [pendulum] length_m = 1: --at 1s is the frame at t/T = 1 s / T.
+    const auto dir = temp_dir("overlays-render-at");
+    const auto& swing = figures::find("swing");
+    const auto plan = figures::plan_animation(swing, {});
+    const double t_over_T = 1.0 / (plan.seconds_per_unit * plan.reference_period);
+    char at[64];
+    std::snprintf(at, sizeof at, "%.17g", t_over_T);
+    const auto s = run_cli("render swing --at 1s -f svg -o " + dir.string());
+    ASSERT_EQ(s.status, 0) << s.err;
+    const std::string by_seconds = slurp(dir / "swing.svg");
+    const auto p = run_cli(std::string("render swing --force --at ") + at + " -f svg -o " + dir.string());
+    ASSERT_EQ(p.status, 0) << p.err;
+    EXPECT_EQ(slurp(dir / "swing.svg"), by_seconds);
+    // separatrix has no [pendulum]: seconds are refused, naming it.
+    const auto none = run_cli("render separatrix --at 1s -f svg -o " + dir.string());
+    EXPECT_EQ(none.status, 2);
+    EXPECT_NE(none.err.find("--at 1s: a time in seconds needs the animation's [pendulum] table"), std::string::npos)
+        << none.err;
+    const auto two = run_cli("render swing over-the-top --at 1s -f svg -o " + dir.string());
+    EXPECT_EQ(two.status, 2);
+    EXPECT_NE(two.err.find("goes with one animation"), std::string::npos) << two.err;
+    // The bound of t/T holds for seconds too: 1e6 T accepted is the limit, more refused.
+    const auto far = run_cli("render swing --at 1e12s -f svg -o " + dir.string());
+    EXPECT_EQ(far.status, 2);
+    EXPECT_NE(far.err.find("at most 1e6"), std::string::npos) << far.err;
+}

@@ -552,7 +552,7 @@ void read_trail(key_reading& k) {
 
 namespace {
 
-/// The arrows a pendulum panel may draw on each bob.
+/// The arrows that may be drawn on each bob.
 enum class arrow_kind { velocity, acceleration };
 
 constexpr std::array<std::pair<std::string_view, arrow_kind>, 2> arrow_kinds = {{

@@ -400,6 +400,12 @@ TEST(Overlays, Omega0InRadiansPerSecondNeedsALength) {
     EXPECT_EQ(stray.status, 2);
     EXPECT_NE(stray.err.find("--length goes with --time t/s, --at in seconds"), std::string::npos) << stray.err;
 
+    // eval: the same conversion; its omega0 column is in units of w0.
+    const auto ev = run_cli("eval --theta0 0 --omega0 2rad/s --length 1");
+    ASSERT_EQ(ev.status, 0) << ev.err;
+    EXPECT_NE(ev.out.find("\n0,0.6386599135621175,"), std::string::npos) << ev.out;
+    EXPECT_EQ(run_cli("eval --theta0 0 --omega0 2rad/s").status, 2);
+
     // plot: the same conversion, into the panel's title as units of w0.
     const auto dir = temp_dir("overlays-omega0");
     const auto p = run_cli("plot pendulum --theta0 0 --omega0 2rad/s --length 1 -f svg -o " + dir.string());
@@ -436,7 +442,7 @@ TEST(Overlays, ListsFromFilesEverywhereAndInEveryHelp) {
         EXPECT_NE(help.out.find("--theta0 @FILE"), std::string::npos) << command;
         EXPECT_NE(help.out.find("--theta0 - from standard input"), std::string::npos) << command;
     }
-    for (const char* command : {"plot", "trajectory"}) {
+    for (const char* command : {"plot", "trajectory", "eval"}) {
         const auto help = run_cli(std::string(command) + " --help");
         EXPECT_NE(help.out.find("w0 = sqrt(g/L)"), std::string::npos) << command;
     }

@@ -76,7 +76,7 @@ command add_data_command(CLI::App& app) {
         ->check(CLI::IsMember({"csv", "json"}));
     cmd->add_option("--layout", o->layout, "CSV layout: long (a row per point) or wide (columns per series)")
         ->type_name("LAYOUT")->check(CLI::IsMember({"long", "wide"}));
-    cmd->footer("\nWhat is drawn: the samples of every curve as the figure's PNG draws it (within 0.05 pt),\n"
+    cmd->footer(std::string("\n") + angle_help + "\n\nWhat is drawn: the samples of every curve as the figure's PNG draws it (within 0.05 pt),\n"
                 "the points of other series, and reference lines as their two ends within the panel.\n"
                 "Panels are a, b, c, ... as in the paper's captions; each series has an id (exact,\n"
                 "order:6, theta0:2, line:1, ...) that stays when its label changes.\n\n"

@@ -223,7 +223,7 @@ std::vector<field> start_row(const start_option& start, const eval_options& o, c
 void eval_starts(std::ostream& out, const eval_options& o, const std::vector<int>& orders,
                  const std::vector<method_choice>& all_methods, long double small_period_s) {
     const auto format = parse_table_format(o.format);
-    const auto starts = parse_starts(o.theta0, o.omega0, o.energy);
+    const auto starts = parse_starts(o.theta0, omega0_in_w0(o.omega0, o.length, o.g), o.energy);
     std::vector<std::string> columns(std::begin(start_columns), std::end(start_columns));
     const auto methods = without_fixed(all_methods, columns);
     check_starts(o, starts, orders, methods);
@@ -340,7 +340,8 @@ command add_eval_command(CLI::App& app) {
                     "Amplitudes, a comma-separated LIST of angles; with --omega0 the start angles of states")
         ->type_name("LIST")->check(non_empty);
     cmd->add_option("--omega0", ev->omega0,
-                    "Initial velocities theta'/w0 of states started at --theta0, a LIST (any sign)")
+                    "Launch velocities theta'(0) of states started at --theta0, a LIST (any sign), in units of "
+                    "w0 = sqrt(g/L); in rad/s with --length (2.5rad/s)")
         ->type_name("LIST")->check(non_empty);
     cmd->add_option("--energy", ev->energy,
                     "Energies E/(m g L) of launches from the bottom, a LIST (2 is the separatrix)")
@@ -367,7 +368,7 @@ command add_eval_command(CLI::App& app) {
                      "columns follow them, then err:METHOD columns (T_m/T - 1 of any method of 'list', right to "
                      "1e-12: err:lowest, err:order:6; below_limit under 1e-300, not_computed where it could not be resolved, empty where the method has no period)")
         ->type_name("LIST")->check(non_empty);
-    cmd->footer(std::string("\n") + angle_help + "\n\nColumns: " + cli::eval_columns_help() +
+    cmd->footer(std::string("\n") + angle_help + "\n\n" + omega0_help + "\n\nColumns: " + cli::eval_columns_help() +
                  "; then period_orderN for each --order N, period_NAME for each --method NAME, and T_s with "
                  "--length. Periods are T/T0. Numbers round-trip a double.\n\n"
                  "Close to pi (from pi - 6.995e-4) some levels of the iteration have lambda = (w/w0)^2 < 0, "

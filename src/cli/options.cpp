@@ -5,6 +5,7 @@
 #include "plot/tex_markup.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -15,7 +16,9 @@ namespace pendulum::cli {
 
 const char* const angle_help =
     "Angles are expressions in radians: 1.2, pi/2, 9pi/10, 9*pi/10, 0.9pi, pi-1e-6, or degrees "
-    "with deg: 162deg. A LIST is comma-separated: --theta0 'pi/3,pi/2,162deg'.";
+    "with deg: 162deg. A LIST is comma-separated: --theta0 'pi/3,pi/2,162deg'; --theta0 @FILE reads it from a "
+    "file and --theta0 - from standard input (values comma-separated or one a line, # comments), and so do "
+    "--omega0 and --energy.";
 
 const CLI::Validator non_empty(
     [](std::string& value) { return value.empty() ? std::string("empty value") : std::string(); }, "", "NON-EMPTY");
@@ -116,6 +119,59 @@ const char* const start_help =
     "from those exact numbers, so 2pi/3 with omega0 = 1 is the separatrix and 2-1e-20 a libration; a start whose "
     "2 - E vanishes at 1280 and 2560 bits is the separatrix, one that only 2560 bits can tell from it is refused. "
     "A state at rest at an angle in (0, pi] is that amplitude (pi itself is refused).";
+
+const char* const omega0_help =
+    "The launch velocity --omega0 is theta'(0) in units of w0 = sqrt(g/L), the natural frequency (the "
+    "small-amplitude angular frequency, the same w0 as on a phase portrait's axis): --omega0 2 at the bottom "
+    "reaches the top (E = 2). With --length (and --g) it may be given in rad/s, --omega0 2.5rad/s.";
+
+namespace {
+
+/// The text without `suffix` and the blanks before it, or empty if it does not end so.
+std::string without_suffix(const std::string& text, std::string_view suffix) {
+    if (text.size() <= suffix.size() || !text.ends_with(suffix)) return "";
+    std::string rest = text.substr(0, text.size() - suffix.size());
+    while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.pop_back();
+    return rest;
+}
+
+}  // namespace
+
+given_time parse_time(const std::string& option, const std::string& text) {
+    const std::string seconds = without_suffix(text, "s");
+    try {
+        if (!seconds.empty()) return {parse_expression(seconds), true};
+        return {parse_expression(text), false};
+    } catch (const std::invalid_argument& e) {
+        throw usage_error(option + " '" + shown_text(text.substr(0, 80)) + "': " + e.what() +
+                          " (a time is a number in the option's unit, or seconds such as 10s)");
+    }
+}
+
+std::string omega0_in_w0(const std::string& text, const std::optional<double>& length, double g) {
+    if (text == "-" || text.starts_with("@")) return text;
+    std::string out;
+    for (const auto& item : split_list(text)) {
+        std::string value = item;
+        if (const std::string number = without_suffix(item, "rad/s"); !number.empty()) {
+            if (!length) {
+                throw usage_error("--omega0 '" + shown_text(item.substr(0, 80)) +
+                                  "': a velocity in rad/s needs the pendulum's --length in metres (and --g, default "
+                                  "9.80665); without them give it in units of w0 = sqrt(g/L), e.g. --omega0 1.9");
+            }
+            double v = 0;
+            try {
+                v = parse_expression(number);
+            } catch (const std::invalid_argument& e) {
+                throw usage_error("--omega0 '" + shown_text(item.substr(0, 80)) + "': " + e.what());
+            }
+            if (!(*length > 0) || !(g > 0)) throw usage_error("--omega0 '" + item + "': --length and --g must be above 0");
+            value = format_double(v / std::sqrt(g / *length));
+        }
+        out += (out.empty() ? "" : ",") + value;
+    }
+    return out;
+}
 
 namespace {
 

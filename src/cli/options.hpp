@@ -138,6 +138,25 @@ extern const char* const start_help;
 /// bad input, both or neither of --theta0 and --energy, is a usage_error saying what works.
 std::vector<start_option> parse_starts(const std::string& theta0, const std::string& omega0, const std::string& energy);
 
+/// What the help of --omega0 says: its unit, the natural frequency, and rad/s.
+extern const char* const omega0_help;
+
+/// A time as given: a number in the option's unit of time, or of seconds ("10s", "2.5 s").
+struct given_time {
+    double value = 0;      ///< the number
+    bool seconds = false;  ///< true: seconds, which need the pendulum's length and g
+};
+
+/// Reads a time of `option`: an expression ("1/3", "0.25") in the option's unit, or one
+/// followed by s in seconds; bad input names the option and the text.
+given_time parse_time(const std::string& option, const std::string& text);
+
+/// The items of --omega0 in units of w0 = sqrt(g/L): an item as given, or one in rad/s
+/// ("2.5rad/s") divided by w0 of `length` (metres) and `g` (m/s^2), rounded once; rad/s
+/// without a length is a usage_error that says to give --length. A list from @FILE or -
+/// is returned as it is.
+std::string omega0_in_w0(const std::string& text, const std::optional<double>& length, double g);
+
 /// Throws a usage_error unless `method` applies to the start: the paper's approximants and
 /// the iteration describe librations only (E < 2).
 void check_method_applies(const method_choice& method, const start_option& start);

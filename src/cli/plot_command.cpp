@@ -26,7 +26,7 @@ namespace pendulum::cli {
 namespace {
 
 /// How an option's text becomes a TOML value of its key.
-enum class value_kind { text, list, number, integer, pair, integer_pair, boolean, range };
+enum class value_kind { text, list, number, integer, pair, integer_pair, boolean, range, flag };
 
 /// The table of the spec an option's key goes into.
 enum class spec_table { panel, figure, animation, pendulum };
@@ -48,7 +48,8 @@ constexpr key_option key_options[] = {
     {"energy", spec_table::panel, "--energy", "LIST", value_kind::list,
      "Phase, trajectory and pendulum plots: energies E/(m g L) of launches from the bottom (2 is the separatrix)"},
     {"omega0", spec_table::panel, "--omega0", "LIST", value_kind::list,
-     "Phase, trajectory and pendulum plots: initial velocities theta'/w0 of states started at --theta0"},
+     "Phase, trajectory and pendulum plots: launch velocities theta'(0) of states started at --theta0, in units "
+     "of w0 = sqrt(g/L), the natural frequency; in rad/s with --length (2.5rad/s)"},
     {"methods", spec_table::panel, "--methods", "LIST", value_kind::list, "Methods, a comma-separated LIST (see 'list')"},
     {"range", spec_table::panel, "--range", "A,B", value_kind::range, "x range a,b: times, or amplitudes as angles"},
     {"time", spec_table::panel, "--time", "UNIT", value_kind::text, "Time axis of a trajectory: t/T (default), t/T0 or t/s"},
@@ -61,6 +62,13 @@ constexpr key_option key_options[] = {
     {"angle_unit", spec_table::panel, "--angle-unit", "UNIT", value_kind::text, "Angles on the axes in rad (default) or deg"},
     {"separatrix", spec_table::panel, "--separatrix", "BOOL", value_kind::boolean, "Phase plots: draw the separatrix, true or false"},
     {"trail", spec_table::panel, "--trail", "T", value_kind::number, "Pendulum drawings: a fading trail of T periods"},
+    {"energy_bars", spec_table::panel, "--energy-bars", "", value_kind::flag,
+     "Pendulum drawings: kinetic, potential and total energy bars, in units of m g L, from the exact motion"},
+    {"arrows", spec_table::panel, "--arrows", "LIST", value_kind::list,
+     "Pendulum drawings: arrows on each bob, velocity and/or acceleration (comma-separated), the longest of the "
+     "motion 0.6 rod lengths (its value in the legend)"},
+    {"timer", spec_table::panel, "--timer", "", value_kind::flag,
+     "Pendulum drawings: a period timer, the measured period once the bob has completed one"},
     {"y_range", spec_table::panel, "--y-range", "A,B", value_kind::pair, "y axis limits a,b (default: from the data)"},
     {"x_label", spec_table::panel, "--x-label", "TEXT", value_kind::text, "x axis label, text with TeX math in $...$"},
     {"y_label", spec_table::panel, "--y-label", "TEXT", value_kind::text, "y axis label, text with TeX math in $...$"},
@@ -140,6 +148,7 @@ std::string toml_value(const key_option& k, const std::string& text, const std::
         case value_kind::list: return toml_list(text);
         case value_kind::number: return number_text(k, text, false);
         case value_kind::integer: return number_text(k, text, true);
+        case value_kind::flag: return "true";
         case value_kind::boolean:
             if (text != "true" && text != "false") throw usage_error(std::string(k.option) + " '" + text + "': true or false");
             return text;
@@ -288,11 +297,34 @@ std::vector<std::map<std::string_view, std::string>> panel_values(const plot_opt
     return panels;
 }
 
+/// The options with their start lists read (@FILE, -) and --omega0 in units of
+/// w0 = sqrt(g/L): items in rad/s converted with --length and --g (checked as the
+/// [pendulum] table checks them).
+plot_options in_w0(const plot_options& given) {
+    plot_options o = given;
+    // A start list from @FILE or standard input (-), read as the other commands read it.
+    for (const std::string_view option : {"--theta0", "--energy", "--omega0"}) {
+        const auto list = o.values.find(option);
+        if (list == o.values.end() || (list->second != "-" && !list->second.starts_with("@"))) continue;
+        std::string items;
+        for_each_item(list->second, std::string(option),
+                      [&](const std::string& item) { items += (items.empty() ? "" : ",") + item; });
+        list->second = items;
+    }
+    const auto it = o.values.find("--omega0");
+    if (it == o.values.end()) return o;
+    (void)pendulum_table(o);  // numbers, and --g only with --length
+    const std::optional<double> length = o.length.empty() ? std::nullopt : std::optional<double>(std::stod(o.length));
+    it->second = omega0_in_w0(it->second, length, o.g.empty() ? 9.80665 : std::stod(o.g));
+    return o;
+}
+
 /// The plot command: a spec made from the options (one panel, or one per start with
 /// --apart), checked like a spec file.
-int run_plot(const plot_options& o) {
+int run_plot(const plot_options& given) {
     std::map<spec_table, std::string> tables;
     std::string toml;
+    const plot_options o = in_w0(given);
     const auto panels = panel_values(o);
     for (const auto& values : panels) {
         std::string panel = "[[panel]]\nplot = " + toml_string(o.kind) + "\n";
@@ -351,6 +383,12 @@ command add_plot_command(CLI::App& app) {
         ->required()
         ->type_name("KIND");
     for (const auto& k : key_options) {
+        if (k.kind == value_kind::flag) {
+            cmd->add_flag_function(
+                std::string(k.option), [po, option = k.option](std::int64_t) { po->values[option] = "true"; },
+                std::string(k.help));
+            continue;
+        }
         auto* opt = cmd->add_option_function<std::string>(
             std::string(k.option), [po, option = k.option](const std::string& v) { po->values[option] = v; },
             std::string(k.help));
@@ -387,7 +425,7 @@ command add_plot_command(CLI::App& app) {
     cmd->add_flag("--apart", po->apart,
                   "One panel per amplitude, energy or state, side by side (default: all in one panel)");
     cmd->add_option("--g", po->g, "Gravity in m/s^2 with --length (default 9.80665)")->type_name("G")->check(non_empty);
-    cmd->footer(std::string("\n") + angle_help +
+    cmd->footer(std::string("\n") + angle_help + "\n\n" + omega0_help +
                      "\n\nThe same as a spec with one [[panel]] of these keys; 'show' prints specs to start from.\n\n"
                      "Examples:\n"
                      "  pendulum-figures plot trajectory --theta0 170deg --methods exact,harmonic,order:6 --range 0,3\n"

@@ -6,6 +6,7 @@
 #include "cli/options.hpp"
 #include "cli/render_figures.hpp"
 #include "cli/report.hpp"
+#include "figures/animation.hpp"
 #include "figures/plots.hpp"
 #include "figures/render_plan.hpp"
 #include "figures/themes.hpp"
@@ -259,20 +260,36 @@ figures::build_options build_options_of(const std::vector<const figures::entry*>
     return build;
 }
 
-/// --at: one frame at time t/T, or nothing; --frames and --at for animations only, not both.
-std::optional<double> frame_time(const std::vector<const figures::entry*>& chosen, const render_options& o) {
+/// --at in seconds (10s) as t/T of the one animation chosen, whose [pendulum] table gives
+/// the seconds; with several animations or none with a length, a usage_error says what works.
+double seconds_as_periods(const std::vector<const figures::entry*>& chosen, const render_options& o,
+                          const figures::build_options& build, double seconds) {
+    const figures::entry* moving = nullptr;
+    for (const auto* e : chosen) {
+        if (!e->spec.animation) continue;
+        if (moving) throw usage_error("--at " + o.at + ": a time in seconds goes with one animation; give t/T for several");
+        moving = e;
+    }
+    if (!moving->spec.pendulum) {
+        throw usage_error("--at " + o.at + ": a time in seconds needs the animation's [pendulum] table (length_m, g); "
+                          "'" + moving->id + "' has none: give t/T (e.g. --at 0.25)");
+    }
+    const figures::animation_plan plan = figures::plan_animation(*moving, build);
+    return seconds / (plan.seconds_per_unit * plan.reference_period);
+}
+
+/// --at: one frame at time t/T, or in seconds (10s) with a [pendulum] table, or nothing;
+/// --frames and --at for animations only, not both.
+std::optional<double> frame_time(const std::vector<const figures::entry*>& chosen, const render_options& o,
+                                 const figures::build_options& build) {
     if ((!o.frames.empty() || !o.at.empty()) &&
         std::none_of(chosen.begin(), chosen.end(), [](const auto* e) { return e->spec.animation.has_value(); })) {
         throw usage_error("--frames and --at apply to animations, and none was chosen (see 'list')");
     }
     if (!o.frames.empty() && !o.at.empty()) throw usage_error("give --frames or --at, not both");
     if (o.at.empty()) return std::nullopt;
-    double at = 0;
-    try {
-        at = parse_expression(o.at);
-    } catch (const std::invalid_argument& e) {
-        throw usage_error(std::string("--at: ") + e.what());
-    }
+    const given_time t = parse_time("--at", o.at);
+    const double at = t.seconds && std::isfinite(t.value) ? seconds_as_periods(chosen, o, build, t.value) : t.value;
     // t/T is multiplied by the period: a huge one would be no time at all.
     if (!(std::fabs(at) <= 1e6)) {
         throw usage_error("--at " + o.at + ": a time t/T must be finite and at most 1e6 in size");
@@ -411,7 +428,7 @@ int render_figures(const std::vector<const figures::entry*>& chosen, const rende
     if (journal) return check_figures(chosen, groups, styles, build, o, *journal);
     if (o.dir == "-") return render_to_stdout(chosen, formats, o, build, styles.front());
     check_output_dir(o.dir);
-    const std::optional<double> at = frame_time(chosen, o);
+    const std::optional<double> at = frame_time(chosen, o, build);
 
     // Every group's files, checked together before any work.
     render_jobs jobs{std::vector<std::vector<figures::figure_file>>(groups.size()),
@@ -464,7 +481,7 @@ command add_render_command(CLI::App& app) {
     cmd->add_option("--frames", ro->frames, "Animations: only frames A..B (from 1; A.. or ..B for the rest)")
         ->type_name("A..B")->check(non_empty);
     cmd->add_option("--at", ro->at, "Animations: one frame at time t/T (T the exact period of the first "
-                                      "amplitude), in every format")
+                                      "amplitude), or in seconds (10s) with the spec's [pendulum], in every format")
         ->type_name("T")->check(non_empty);
     cmd->add_flag("--force", ro->force, "Rewrite files that would not change (by default they are left alone, "
                                           "so their time stays and make does not rebuild)");

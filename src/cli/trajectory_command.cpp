@@ -114,17 +114,29 @@ std::vector<method_choice> trajectory_methods(const trajectory_options& o, bool 
     return methods;
 }
 
-/// The times of --at, in the unit of --time; each finite.
-std::vector<double> times_at(const trajectory_options& o, const time_unit_row& unit, bool periods_given) {
+/// True where --at gives a time in seconds (10s) or --omega0 a velocity in rad/s: values
+/// that the pendulum's --length (and --g) convert.
+bool physical_values(const trajectory_options& o) {
+    if (!o.at.empty()) {
+        for (const auto& item : split_list(o.at)) {
+            if (parse_time("--at", item).seconds) return true;
+        }
+    }
+    if (o.omega0.empty() || o.omega0 == "-" || o.omega0.starts_with("@")) return false;
+    const auto items = split_list(o.omega0);
+    return std::any_of(items.begin(), items.end(), [](const std::string& item) { return item.ends_with("rad/s"); });
+}
+
+/// The times of --at, in the unit of --time, each finite: an item in seconds (10s) is
+/// converted with w0 (from --length and --g) and the unit's scale.
+std::vector<double> times_at(const trajectory_options& o, const time_unit_row& unit, bool periods_given, long double w0,
+                             long double scale) {
     std::vector<double> times;
     if (o.at.empty()) return times;
     if (periods_given) throw usage_error("--periods goes with --samples, not with --at");
     for (const auto& item : split_list(o.at)) {
-        try {
-            times.push_back(parse_expression(item));
-        } catch (const std::invalid_argument& e) {
-            throw usage_error(std::string("--at '") + item + "': " + e.what());
-        }
+        const given_time t = parse_time("--at", item);
+        times.push_back(t.seconds && unit.name != "t/s" ? static_cast<double>(t.value * w0 / scale) : t.value);
         // Any finite time: it is reduced modulo the period exactly.
         if (!std::isfinite(times.back())) {
             throw usage_error("--at '" + item + "': a time " + std::string(unit.name) + " must be finite");
@@ -133,13 +145,23 @@ std::vector<double> times_at(const trajectory_options& o, const time_unit_row& u
     return times;
 }
 
-/// w0 per second for --time t/s (--length and --g checked), 0 for the other units.
+/// w0 per second for --time t/s, --at in seconds or --omega0 in rad/s (--length and --g
+/// checked), 0 otherwise.
 long double checked_w0(const trajectory_options& o, const time_unit_row& unit) {
-    if (unit.name != "t/s") {
-        if (o.length) throw usage_error("--length goes with --time t/s, not --time " + std::string(unit.name));
+    const bool physical = physical_values(o);
+    if (unit.name != "t/s" && !physical) {
+        if (o.length) {
+            throw usage_error("--length goes with --time t/s, --at in seconds (10s) or --omega0 in rad/s, not --time " +
+                              std::string(unit.name));
+        }
         return 0;
     }
-    if (!o.length) throw usage_error("--time t/s needs the pendulum's --length L in metres (and --g, default 9.80665)");
+    if (!o.length) {
+        throw usage_error(unit.name == "t/s"
+                              ? "--time t/s needs the pendulum's --length L in metres (and --g, default 9.80665)"
+                              : "--at in seconds (10s) needs the pendulum's --length L in metres (and --g, default "
+                                "9.80665); or give the times in the unit of --time (" + std::string(unit.name) + ")");
+    }
     if (!(*o.length > 0 && *o.length <= 1e6)) {
         throw usage_error("--length " + format_double(*o.length) + ": a length in metres above 0 and at most 1e6");
     }
@@ -377,7 +399,7 @@ const start_option& single_start(const std::vector<start_option>& starts, const 
 /// Writes trajectory's table row by row; every input is checked before the first row.
 void trajectory_stream(std::ostream& out, const trajectory_options& o, bool order_given, bool periods_given) {
     const auto format = parse_table_format(o.format);
-    const auto starts = parse_starts(o.theta0, o.omega0, o.energy);
+    const auto starts = parse_starts(o.theta0, omega0_in_w0(o.omega0, o.length, o.g), o.energy);
     const time_unit_row& unit = parse_time_unit(o.time.empty() ? "t/T" : o.time);
     const start_option& start = single_start(starts, unit);
     const motion& m = start.motion;
@@ -386,7 +408,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& o, bool orde
     const long double w0 = checked_w0(o, unit);
     const std::vector<method_choice> methods = trajectory_methods(o, order_given, start);
     check_sampling(o);
-    const std::vector<double> times = times_at(o, unit, periods_given);
+    const std::vector<double> times = times_at(o, unit, periods_given, w0, unit.scale(m, w0));
     if (methods.front().user) return write_formula_trajectory(out, format, methods.front(), start, state, unit, w0, o, times);
     const bool paper_table = !state && unit.name == "t/T";
     const trajectory_context c{m, state, paper_table, unit.scale(m, w0),
@@ -413,7 +435,9 @@ command add_trajectory_command(CLI::App& app) {
         "trajectory", "Print theta(t) for one start (amplitude, state or energy), exact or approximate.");
     cmd->add_option("--theta0", tr->theta0, "Amplitude, one angle; with --omega0 the start angle of a state")
         ->type_name("ANGLE")->check(non_empty);
-    cmd->add_option("--omega0", tr->omega0, "Initial velocity theta'/w0 of a state started at --theta0 (any sign)")
+    cmd->add_option("--omega0", tr->omega0,
+                    "Launch velocity theta'(0) of a state started at --theta0 (any sign), in units of w0 = "
+                    "sqrt(g/L); in rad/s with --length (2.5rad/s)")
         ->type_name("W")->check(non_empty);
     cmd->add_option("--energy", tr->energy, "Energy E/(m g L) of a launch from the bottom (2 is the separatrix)")
         ->type_name("E")->check(non_empty);
@@ -434,7 +458,9 @@ command add_trajectory_command(CLI::App& app) {
     auto* order_opt = cmd->add_option("--order", tr->order, "Order N of --method order (0.." +
                                                                 std::to_string(max_order) + ")")
                           ->type_name("N");
-    cmd->add_option("--at", tr->at, "Times in the unit of --time (default t/T, T the exact period), a comma-separated list")
+    cmd->add_option("--at", tr->at,
+                    "Times in the unit of --time (default t/T, T the exact period), or in seconds with --length "
+                    "(10s), a comma-separated list")
         ->type_name("LIST")->check(non_empty);
     cmd->add_option("--samples", tr->samples, "Number of equally spaced times from 0 to --periods")
         ->type_name("N");
@@ -444,7 +470,7 @@ command add_trajectory_command(CLI::App& app) {
     cmd->add_option("--format", tr->format, "Output format: csv (default) or json")
         ->type_name("csv|json");
     cmd->footer(std::string("\n") + angle_help +
-                 "\n\n" + start_help +
+                 "\n\n" + start_help + "\n\n" + omega0_help +
                  "\n\nColumns: t_over_T, theta (radians). Every method is evaluated at the same "
                  "physical time t = (t/T) T, with T the exact period. With --time the first column is t_over_T0 "
                  "or t_s; a state or energy adds omega (theta'/w0), and theta is unwrapped: a rotation's angle "

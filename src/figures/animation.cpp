@@ -80,7 +80,9 @@ plot::figure animation_frame(const entry& e, const build_options& options, const
                 break;
             }
         }
-        f.panels[at].overlay_label = clock_text(plan, w0_t);
+        // Above what the panel shows there already (a pendulum panel's period timer).
+        plot::label& shown = f.panels[at].overlay_label;
+        shown = plot::label(clock_text(plan, w0_t) + (shown.empty() ? "" : "     " + shown.markup));
     }
     return f;
 }

@@ -91,6 +91,19 @@ std::string describe_pendulum_drawing(const panel_spec& spec, bool animated) {
         std::snprintf(buf, sizeof buf, "%g", spec.trail);
         out += " Each bob leaves a fading trail of its last " + std::string(buf) + " periods.";
     }
+    // The teaching overlays (pendulum_overlays.cpp), in words.
+    if (spec.energy_bars) {
+        out += " Bars on the right show each pendulum's kinetic, potential and total energy in units of m g L; "
+               "the first two trade places as it swings and always add up to the total.";
+    }
+    if (spec.velocity_arrows || spec.acceleration_arrows) {
+        out += std::string(" Arrows on each bob show its ") +
+               (spec.velocity_arrows && spec.acceleration_arrows ? "velocity and acceleration"
+                : spec.velocity_arrows                             ? "velocity"
+                                                                   : "acceleration") +
+               ".";
+    }
+    if (spec.timer) out += " A period timer at the top left shows the measured period once a swing is complete.";
     out += start_motions(spec);
     if (animated && spec.methods.size() > 1) {
         out += " They swing side by side, the approximations drifting from the exact pendulum.";

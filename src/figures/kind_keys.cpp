@@ -55,6 +55,7 @@ void pendulum_keys(key_reading& k) {
     read_amplitudes(k);
     read_methods(k);
     read_trail(k);
+    read_overlays(k);
 }
 
 }  // namespace figures

@@ -296,8 +296,10 @@ void read_state_starts(key_reading& k, const toml::node& theta0, const toml::nod
         const auto& [angle_text, angle] = angles[angles.size() == 1 ? 0 : i];
         const auto& [speed_text, speed] = speeds[speeds.size() == 1 ? 0 : i];
         add_start(k, omega0,
-                  std::string(theta0_markup) + " = " + typeset_angle(angle_text) + ", <i>\u03c9</i><sub>0</sub> = " +
-                      typeset_angle(speed_text),
+                  // omega0 is the launch velocity in units of the natural frequency w0 = sqrt(g/L), which
+                  // the phase axis calls w0 too: the title says so, theta'(0) = 1.9 w0.
+                  std::string(theta0_markup) + " = " + typeset_angle(angle_text) + ", <i>\u03d1</i>\u2032(0) = " +
+                      typeset_angle(speed_text) + " <i>\u03c9</i><sub>0</sub>",
                   false, [&angle_text = angle_text, &speed_text = speed_text] {
                       // As written, as the command line reads them: pi-1e-9 keeps its distance from pi,
                       // 2pi/3 with 1 is the separatrix.
@@ -551,6 +553,42 @@ void read_separatrix(key_reading& k) {
 
 void read_trail(key_reading& k) {
     if (auto v = k.r.number(k.t, "trail", 0.0, 10.0)) k.p.trail = *v;
+}
+
+namespace {
+
+/// The arrows that may be drawn on each bob.
+enum class arrow_kind { velocity, acceleration };
+
+constexpr std::array<std::pair<std::string_view, arrow_kind>, 2> arrow_kinds = {{
+    {"velocity", arrow_kind::velocity},
+    {"acceleration", arrow_kind::acceleration},
+}};
+
+/// arrows = ["velocity", "acceleration"]: each at most once.
+void read_arrows(key_reading& k) {
+    const toml::node* n = k.t.get("arrows");
+    if (!n) return;
+    const auto* a = n->as_array();
+    if (!a) {
+        k.r.problem(*n, "'arrows' must be a list, e.g. [\"velocity\", \"acceleration\"]");
+        return;
+    }
+    for (const auto& item : *a) {
+        const auto v = k.r.choice_of(item, "arrows", arrow_kinds);
+        if (!v) continue;
+        bool& on = *v == arrow_kind::velocity ? k.p.velocity_arrows : k.p.acceleration_arrows;
+        if (on) k.r.problem(item, "'arrows' names \"" + std::string(arrow_kinds[static_cast<int>(*v)].first) + "\" twice");
+        on = true;
+    }
+}
+
+}  // namespace
+
+void read_overlays(key_reading& k) {
+    if (auto v = k.r.boolean(k.t, "energy_bars")) k.p.energy_bars = *v;
+    if (auto v = k.r.boolean(k.t, "timer")) k.p.timer = *v;
+    read_arrows(k);
 }
 
 void read_angle_unit(key_reading& k) {

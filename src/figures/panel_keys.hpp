@@ -50,6 +50,9 @@ void read_orders(key_reading& k);
 void read_separatrix(key_reading& k);
 /// trail = periods, 0 to 10.
 void read_trail(key_reading& k);
+/// energy_bars = true | false, arrows = ["velocity", "acceleration"], timer = true | false:
+/// the pendulum panel's teaching overlays.
+void read_overlays(key_reading& k);
 /// angle_unit = "rad" | "deg".
 void read_angle_unit(key_reading& k);
 /// [[panel.data]]: measured data.

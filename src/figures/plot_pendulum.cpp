@@ -5,6 +5,7 @@
 #include "figures/plot_builders.hpp"
 
 #include "figures/panel_support.hpp"
+#include "figures/pendulum_overlays.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
@@ -25,10 +26,7 @@ using std::numbers::pi;
 namespace {
 
 /// One start of a drawing: its exact motion and its legend text.
-struct bob_start {
-    pendulum::motion motion;  ///< the exact motion
-    std::string label;        ///< "ϑ0 = 170°", "E = 2.6"
-};
+using bob_start = overlay_start;
 
 /// The panel's starts: its amplitudes (released at rest), then its energies or states.
 std::vector<bob_start> starts_of(const panel_spec& p) {
@@ -111,7 +109,12 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
             panel.data.push_back(std::move(mark));
         }
     }
-    if (!c.animated) add_pendulum_state(panel, p, 0.0, 0.0);
+    // The teaching overlays' parts that stay (the total energy), then, when still, the rest.
+    add_overlays_still(panel, p, starts);
+    if (!c.animated) {
+        add_pendulum_state(panel, p, 0.0, 0.0);
+        add_overlays_at(panel, c, p, starts, 0.0);
+    }
     return panel;
 }
 
@@ -244,6 +247,7 @@ std::vector<streak_bob> motion_streak(const std::function<double(double)>& theta
 
 void add_pendulum_frame(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t) {
     add_pendulum_state(panel, p, w0_t, c.frame_step);
+    add_overlays_at(panel, c, p, starts_of(p), w0_t);
 }
 
 }  // namespace figures

@@ -45,7 +45,7 @@ constexpr std::array<plot_row, 7> plots = {{
      .range = range_kind::none, .needs_motion = true, .drawing = false, .formulas = formula_kind::none,
      .read_keys = spectrum_keys, .build = spectrum_panel, .add_frame = nullptr, .describe_drawing = nullptr,
      .describe_curves = nullptr},
-    {.name = "pendulum", .x = "", .y = "", .keys = "theta0 energy omega0 methods trail",
+    {.name = "pendulum", .x = "", .y = "", .keys = "theta0 energy omega0 methods trail energy_bars arrows timer",
      .description = "rod and bob of each start and method at the frame's time, swinging or over the top, for "
                     "animations",
      .amplitudes = amplitude_policy::list, .range = range_kind::none, .needs_motion = true, .drawing = true,

@@ -113,6 +113,10 @@ struct panel_spec {
     int harmonic = 1;                            ///< coefficient panels: 2k + 1
     int harmonics = 15;                          ///< spectrum panels: how many odd harmonics
     double trail = 0;                            ///< pendulum panels: fading trace, in exact periods
+    bool energy_bars = false;                    ///< pendulum panels: kinetic, potential and total energy bars
+    bool velocity_arrows = false;                ///< pendulum panels: the bob's velocity as an arrow
+    bool acceleration_arrows = false;            ///< pendulum panels: the bob's acceleration as an arrow
+    bool timer = false;                          ///< pendulum panels: a period timer
     std::array<int, 2> orders{0, 40};            ///< convergence panels: first and last N
     bool separatrix = false;                     ///< phase panels: draw the separatrix
     bool degrees = false;                        ///< angle axes in degrees

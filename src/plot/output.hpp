@@ -95,6 +95,9 @@ struct format_row {
     /// Throws plot::bad_input, naming fps and the rates that play, if an animation at `fps`
     /// frames per second cannot be played as the format holds it; null: any rate plays.
     void (*check_frame_rate)(double fps);
+    /// The frame rate the format plays for a spec's `fps` (a GIF's of whole hundredths of a
+    /// second); null: the spec's rate.
+    double (*playback_rate)(double fps);
 };
 
 /// A LaTeX overlay's two files: the drawing without text, and the picture that sets the text.

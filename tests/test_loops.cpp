@@ -375,4 +375,32 @@ TEST(Loops, HostileLoopValueIsRefusedWithItsText) {
     fs::remove_all(dir);
 }
 
+TEST(Loops, OneLegendPerAnimation) {
+    // over-the-top: the pendulum and the phase portrait draw the same three starts in the same
+    // colours and lines; the legend shows each once, with the fuller label, and the rays.
+    const auto& e = figures::find("over-the-top");
+    figures::build_options o;
+    o.animated = true;
+    const auto plan = figures::plan_animation(e, o);
+    const auto base = figures::build(e, o);
+    std::vector<double> unfaded;
+    for (const int i : {0, plan.motion_frames - 1, plan.frames - 1}) {
+        const auto f = figures::planned_frame(e, o, plan, base, i);
+        std::vector<std::string> first;
+        std::vector<double> alphas;
+        for (const auto& s : f.panels[0].data) {
+            if (s.label.empty()) continue;
+            first.push_back(s.label.markup);
+            alphas.push_back(s.alpha);
+        }
+        EXPECT_EQ(first, (std::vector<std::string>{"turning points", "<i>E</i> = 1.6, libration",
+                                                   "<i>E</i> = 2, separatrix", "<i>E</i> = 2.6, rotation"}))
+            << "frame " << i;
+        // A cross-fade fades the drawing, not its legend: its glyphs as in the first frame.
+        if (unfaded.empty()) unfaded = alphas;
+        EXPECT_EQ(alphas, unfaded) << "frame " << i;
+        for (const auto& s : f.panels[1].data) EXPECT_TRUE(s.label.empty()) << s.label.markup << " in (b), frame " << i;
+    }
+}
+
 }  // namespace

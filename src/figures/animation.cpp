@@ -118,7 +118,7 @@ bool same_entry(const std::string& a, const std::string& b) {
     return a == b || b.starts_with(a + ", ") || a.starts_with(b + ", ");
 }
 
-/// One legend for the animation: an entry (colour and label) that an earlier panel shows is
+/// One legend for the animation: an entry (glyph and label) that an earlier panel shows is
 /// left out of the later ones, the earlier taking the fuller label; a drawing's dotted rays
 /// to its turning points get an entry of their own.
 void one_legend(plot::figure& f) {
@@ -132,7 +132,8 @@ void one_legend(plot::figure& f) {
             }
             if (s.label.empty()) continue;
             const auto same = std::find_if(shown.begin(), shown.end(), [&](const plot::series* k) {
-                return k->color == s.color && same_entry(k->label.markup, s.label.markup);
+                return k->color == s.color && k->line == s.line && k->marker == s.marker && k->style_key == s.style_key &&
+                       same_entry(k->label.markup, s.label.markup);
             });
             if (same == shown.end()) {
                 shown.push_back(&s);
@@ -237,9 +238,25 @@ plot::figure animation_frame(const entry& e, const build_options& options, const
 plot::figure blend_frames(plot::figure a, const plot::figure& b, double w) {
     for (std::size_t k = 0; k < a.panels.size() && k < b.panels.size(); ++k) {
         auto& panel = a.panels[k];
+        // The legend does not fade: each entry moves to a copy of its series at full
+        // opacity, shrunk to its first point and drawn before what moves (a rod: under the
+        // pivot), where the legend's order keeps it.
+        std::vector<plot::series> entries;
         for (auto& s : panel.data) {
-            if (s.overlay) s.alpha *= 1 - w;
+            if (!s.overlay) continue;
+            if (!s.label.empty() && !s.x.empty()) {
+                plot::series entry = s;
+                entry.x = {s.x.front(), s.x.front()};
+                entry.y = {s.y.front(), s.y.front()};
+                entry.curve = {};
+                entry.id += ":legend";
+                entries.push_back(std::move(entry));
+                s.label = {};
+            }
+            s.alpha *= 1 - w;
         }
+        const auto moving = std::find_if(panel.data.begin(), panel.data.end(), [](const plot::series& s) { return s.overlay; });
+        panel.data.insert(moving, entries.begin(), entries.end());
         for (const auto& s : b.panels[k].data) {
             if (!s.overlay) continue;
             panel.data.push_back(s);

@@ -211,8 +211,8 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
             const marker_style bob_marker =
                 m.marker.value_or(is_exact(m) ? marker_style::filled_circle : marker_style::open_circle);
             add_streak(panel, st, theta, w0_t, frame_step, bob_marker);
-            // The rod in the method's line, as its curve in a plot beside it (none: solid).
-            add_rod_and_bob(panel, st, m.style.value_or(st.line), bob_marker, theta(w0_t));
+            add_rod_and_bob(panel, st, m.style.value_or(starts.size() > 1 ? st.line : line_style::solid), bob_marker,
+                            theta(w0_t));
         }
     }
     add_pivot(panel);

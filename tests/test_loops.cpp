@@ -51,7 +51,7 @@ struct bob {
 std::vector<bob> bobs_of(const figures::entry& e) {
     std::vector<bob> out;
     for (const auto& p : figures::panels_of(e)) {
-        if (!p.plot->add_frame) continue;
+        if (!p.plot->add_frame || p.plot->range == figures::range_kind::times) continue;
         std::vector<std::pair<std::string, pendulum::motion>> motions;
         for (const auto& a : p.theta0) motions.emplace_back(a.text, pendulum::motion::from_amplitude(a.theta0()));
         for (const auto& s : p.starts) motions.emplace_back(s.label, s.motion);
@@ -401,6 +401,22 @@ TEST(Loops, OneLegendPerAnimation) {
         EXPECT_EQ(alphas, unfaded) << "frame " << i;
         for (const auto& s : f.panels[1].data) EXPECT_TRUE(s.label.empty()) << s.label.markup << " in (b), frame " << i;
     }
+}
+
+TEST(Loops, PlotsAgainstTimeStartTheirCursorAgain) {
+    // A trajectory alone: its cursor runs along its range and starts again; the length stays
+    // one period (no loop of 5000 frames in which the cursor leaves the plot), with no note.
+    const auto e = entry_of("[animation]\n[[panel]]\nplot = \"trajectory\"\ntheta0 = \"170deg\"\n"
+                            "methods = [\"exact\", \"harmonic\"]\n",
+                            "t");
+    std::string why;
+    EXPECT_TRUE(figures::drawn_periods(figures::panels_of(e), why).empty());
+    EXPECT_TRUE(why.empty()) << why;
+    const auto plan = figures::plan_animation(e, {});
+    EXPECT_EQ(plan.loop, figures::loop_mode::periods);
+    EXPECT_TRUE(plan.note.empty()) << plan.note;
+    EXPECT_EQ(plan.motion_frames, static_cast<int>(std::ceil(plan.reference_period / plan.step - 1e-9)));
+    EXPECT_EQ(plan.frames, plan.motion_frames);
 }
 
 }  // namespace

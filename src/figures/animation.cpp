@@ -98,6 +98,11 @@ void plan_length(animation_plan& plan, const animation_spec& a, const std::vecto
     }
     plan.motion_frames = static_cast<int>(n);
     plan.seamless = !periods.empty() && loop_fits(periods, plan.step, plan.motion_frames);
+    if (periods.empty() && why.empty()) {
+        // Nothing but plots against time: their cursors start again, whatever the length.
+        plan.loop = a.loop.value_or(loop_mode::periods);
+        return;
+    }
     if (why.empty() && !plan.seamless) {
         why = explicit_length ? "its length is not a whole number of periods of every drawn motion"
                                 : "the drawn motions' periods meet within a frame in no loop of up to " +
@@ -155,7 +160,8 @@ double animation_plan::fade_in(int i) const {
 std::vector<double> drawn_periods(const std::vector<panel_spec>& panels, std::string& why) {
     std::vector<double> out;
     for (const auto& p : panels) {
-        if (!p.plot->add_frame) continue;
+        // A plot against time moves its cursor along its range and starts it again at the seam.
+        if (!p.plot->add_frame || p.plot->range == range_kind::times) continue;
         for (const auto& motion : motions_of(p)) {
             for (const auto& m : p.methods) {
                 if (!m.method.has_motion()) continue;

@@ -34,8 +34,9 @@ struct animation_plan {
     double fade_in(int i) const;
 };
 
-/// The periods w0 T of every motion the panels draw (each method of each start, deduplicated),
-/// or, where one has none, an empty list and why in `why` (the separatrix, a formula).
+/// The periods w0 T of every motion the panels draw (each method of each start in a drawing
+/// or a phase portrait, deduplicated; a plot against time starts its cursor again at the
+/// seam), or, where one has none, an empty list and why in `why` (the separatrix, a formula).
 std::vector<double> drawn_periods(const std::vector<panel_spec>& panels, std::string& why);
 
 /// The smallest number of frames n, 1 to `most`, after which every period in `periods` has

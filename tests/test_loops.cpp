@@ -324,6 +324,9 @@ TEST(Loops, GifDelaysReadBackAreEqual) {
         << r.err;
     EXPECT_EQ(r.err.find("even.gif: 25"), std::string::npos) << r.err;
     // A video keeps the spec's rate: no note for it.
+    r = run_cli("render thirty.toml -f mp4 --dpi 10", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.find("plays at"), std::string::npos) << r.err;
     fs::remove_all(dir);
 }
 

@@ -422,4 +422,18 @@ TEST(Loops, PlotsAgainstTimeStartTheirCursorAgain) {
     EXPECT_EQ(plan.frames, plan.motion_frames);
 }
 
+TEST(Loops, AnIterationsPeriodIsNotSolvedToPlan) {
+    // Planning solves nothing: an iteration's period is its solution (order:200 near pi takes
+    // minutes, which the render's cost check refuses first), so it counts as none known.
+    const auto e = entry_of("[animation]\n[[panel]]\nplot = \"pendulum\"\ntheta0 = \"0.999pi\"\n"
+                            "methods = [\"exact\", \"order:200\"]\n",
+                            "it");
+    std::string why;
+    EXPECT_TRUE(figures::drawn_periods(figures::panels_of(e), why).empty());
+    EXPECT_EQ(why, "the motion of order:200 has no period known before it is solved");
+    const auto plan = figures::plan_animation(e, {});
+    EXPECT_EQ(plan.loop, figures::loop_mode::crossfade);
+    EXPECT_NE(plan.note.find(why), std::string::npos) << plan.note;
+}
+
 }  // namespace

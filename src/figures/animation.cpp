@@ -43,11 +43,18 @@ std::string clock_text(const animation_plan& plan, double w0_t) {
     return buf;
 }
 
-/// The period w0 T of method m from a start, or NaN where it has none.
+/// True for a method whose period is known without solving it: the exact motion and the
+/// closed-form approximants (an iteration's period is its solution, which the render's cost
+/// check weighs before any is solved; a formula's motion has none known in advance).
+bool period_known(const method_spec& m) {
+    return m.method.is_exact() || (!m.method.user && m.method.row->role == pendulum::method_role::approximant);
+}
+
+/// The period w0 T of method m from a start, or NaN where it has none (or none known).
 double period_of(const method_spec& m, const pendulum::motion& motion) {
     if (m.method.is_exact()) return motion.has_period() ? motion.period() : std::nan("");
-    if (m.method.user || motion.kind() != pendulum::regime::libration) return std::nan("");
-    return 2 * std::numbers::pi * pendulum::method_solution(m.method, motion.amplitude()).period_ratio();
+    if (!period_known(m) || motion.kind() != pendulum::regime::libration) return std::nan("");
+    return 2 * std::numbers::pi * pendulum::method_period(m.method, motion.amplitude());
 }
 
 /// Every start of a panel as a motion: its amplitudes released at rest, then its other starts.
@@ -60,7 +67,7 @@ std::vector<pendulum::motion> motions_of(const panel_spec& p) {
 
 /// Why a method's motion from a start has no period, for a note.
 std::string no_period(const method_spec& m, const pendulum::motion& motion) {
-    if (m.method.user) return "the motion of " + m.method.text() + " has no period known in advance";
+    if (!period_known(m)) return "the motion of " + m.method.text() + " has no period known before it is solved";
     if (motion.kind() == pendulum::regime::separatrix) return "the separatrix (E = 2 m g L) has no period";
     return "the " + m.method.text() + " motion has no period here";
 }

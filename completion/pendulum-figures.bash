@@ -66,6 +66,7 @@ _pendulum_figures() {
         --separatrix|--clock) COMPREPLY=($(compgen -W "true false" -- "$cur")); return ;;
         --arrows) COMPREPLY=($(compgen -W "velocity acceleration velocity,acceleration" -- "$cur")); return ;;
         --legend) COMPREPLY=($(compgen -W "each first none" -- "$cur")); return ;;
+        --loop) COMPREPLY=($(compgen -W "periods crossfade hold" -- "$cur")); return ;;
         --harmonics|--orders|--trail|--fps|--duration|--speed|--y-range|--x-label|--y-label|--panel-title|--title|--size) return ;;
         --theta0|--omega0|--energy|--at|--order|--dpi|--samples|--periods|--range|--frames|--name|--harmonic|--length|--g|--tex-font-size|--jobs|--columns) return ;;
     esac
@@ -77,7 +78,7 @@ _pendulum_figures() {
         list) options="--markdown --help --help-all" ;;
         show) options="--theme --help --help-all" ;;
         render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --jobs --check --help --help-all" ;;
-        plot) options="--theta0 --energy --omega0 --methods --range --time --harmonic --harmonics --orders --y --x --angle-unit --separatrix --trail --energy-bars --arrows --timer --apart --fps --periods --duration --speed --clock --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --data --length --g --help --help-all" ;;
+        plot) options="--theta0 --energy --omega0 --methods --range --time --harmonic --harmonics --orders --y --x --angle-unit --separatrix --trail --energy-bars --arrows --timer --apart --fps --periods --duration --speed --clock --loop --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --data --length --g --help --help-all" ;;
         data) options="-o --output --theta0 -f --format --layout --help --help-all" ;;
         describe) options="--alt --help --help-all" ;;
     esac

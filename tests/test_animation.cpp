@@ -98,12 +98,15 @@ TEST(Animation, FramesOfTheSwing) {
     const auto& swing = figures::find("swing");
     ASSERT_TRUE(swing.spec.animation);
     const auto plan = figures::plan_animation(swing, {});
-    // Three exact periods of a 1 m pendulum at 170 degrees, 30 frames per second.
+    // Three exact periods of a 1 m pendulum at 170 degrees, 25 frames per second (the
+    // default), the last frame within a step before their end; then half a second of cross-fade.
     const double period_s = 2 * std::numbers::pi * std::sqrt(1.0 / 9.80665) *
                             pendulum::period_ratio(170 * std::numbers::pi / 180);
-    EXPECT_EQ(plan.frames, static_cast<int>(std::floor(3 * period_s * 30)) + 1);
-    EXPECT_NEAR(plan.time(plan.frames - 1), 3 * plan.reference_period, plan.step);
-    EXPECT_NEAR(plan.step * plan.seconds_per_unit, 1.0 / 30, 1e-15);
+    EXPECT_EQ(plan.motion_frames, static_cast<int>(std::ceil(3 * period_s * 25)));
+    EXPECT_EQ(plan.frames, plan.motion_frames + 13);
+    EXPECT_NEAR(plan.time(plan.motion_frames - 1), 3 * plan.reference_period, plan.step);
+    EXPECT_LT(plan.time(plan.motion_frames - 1), 3 * plan.reference_period);
+    EXPECT_NEAR(plan.step * plan.seconds_per_unit, 1.0 / 25, 1e-15);
     // The separatrix has no [pendulum]: a 1 m pendulum's time.
     EXPECT_NEAR(figures::plan_animation(figures::find("separatrix"), {}).seconds_per_unit,
                 std::sqrt(1.0 / 9.80665), 1e-15);
@@ -126,8 +129,8 @@ TEST(Animation, GifPdfAndPngSequence) {
     EXPECT_EQ(facts.width, 160);  // 25.4 cm at 16 dpi
     EXPECT_EQ(facts.height, 90);
     EXPECT_TRUE(facts.loops);
-    // 30 frames per second: delays that add up to the true 0.4 s.
-    EXPECT_EQ(facts.total_delay, 40);
+    // 25 frames per second: 12 delays of 4 hundredths, the true 0.48 s.
+    EXPECT_EQ(facts.total_delay, 48);
     const auto pages = run_command("pdfinfo '" + (dir / "swing.pdf").string() + "'");
     EXPECT_NE(pages.out.find("Pages:           12"), std::string::npos) << pages.out;
     // The same frames again: the same bytes.
@@ -431,7 +434,8 @@ TEST(Animation, OverTheTopSwingsCreepsAndRotates) {
     // Two periods of the libration at E = 1.6, T/T0 = 2 K(0.8)/pi, in a 1 m pendulum's time.
     const double period = pendulum::motion::from_energy(1.6).period();
     EXPECT_NEAR(plan.reference_period, period, 1e-12);
-    EXPECT_EQ(plan.frames, static_cast<int>(std::floor(2 * period * std::sqrt(1.0 / 9.80665) * 30 + 1e-9)) + 1);
+    EXPECT_EQ(plan.motion_frames, static_cast<int>(std::ceil(2 * period * std::sqrt(1.0 / 9.80665) * 25 - 1e-9)));
+    EXPECT_EQ(plan.frames, plan.motion_frames + 13);  // a cross-fade of half a second
     const auto base = figures::build(e, options);
     double highest[3] = {-2, -2, -2};
     double lowest_after_top[3] = {2, 2, 2};

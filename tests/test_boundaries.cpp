@@ -457,10 +457,11 @@ std::string trajectory(const std::string& range) {
     return "[[panel]]\nplot = \"trajectory\"\ntheta0 = 1\nmethods = [\"exact\"]\nrange = " + range + "\n";
 }
 
-/// An animation of `frames` frames: one frame a second for frames - 1 seconds, and frame 0.
+/// An animation of `frames` frames: one frame a second for `frames` seconds (the last frame
+/// a second before the end, where the first follows), cut there without frames added.
 std::string animation(int frames, const std::string& fps = "1") {
-    return "[pendulum]\nlength_m = 1\n[animation]\nfps = " + fps + "\nduration_s = " + std::to_string(frames - 1) +
-           "\n[[panel]]\nplot = \"pendulum\"\ntheta0 = 1\nmethods = [\"exact\"]\n";
+    return "[pendulum]\nlength_m = 1\n[animation]\nfps = " + fps + "\nduration_s = " + std::to_string(frames) +
+           "\nloop = \"periods\"\n[[panel]]\nplot = \"pendulum\"\ntheta0 = 1\nmethods = [\"exact\"]\n";
 }
 
 /// One limit: the spec (and its file's stem) at the limit and just beyond it, the command

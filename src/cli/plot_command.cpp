@@ -76,15 +76,17 @@ constexpr key_option key_options[] = {
     {"title", spec_table::figure, "--title", "TEXT", value_kind::text, "The figure's title, drawn above it and kept in PDF and SVG metadata"},
     {"legend", spec_table::figure, "--legend", "WHERE", value_kind::text, "Legend: each (default), first or none"},
     {"fps", spec_table::animation, "--fps", "N", value_kind::number,
-     "Animations: frames per second, 1..120 (default 30; GIF plays evenly at 25 or 50)"},
+     "Animations: frames per second, 1..120 (default 25; a GIF plays the nearest of 100/k: 50, 33.33, 25, ...)"},
     {"periods", spec_table::animation, "--periods", "P", value_kind::number,
-     "Animations: length in exact periods of the first start (default 1)"},
+     "Animations: length in exact periods of the first start (default: whole periods of every drawn motion)"},
     {"duration_s", spec_table::animation, "--duration", "S", value_kind::number,
      "Animations: length in seconds, with --length (instead of --periods)"},
     {"speed", spec_table::animation, "--speed", "X", value_kind::number,
      "Animations: playback speed against real time (default 1; 0.25 is slow motion)"},
     {"clock", spec_table::animation, "--clock", "BOOL", value_kind::boolean,
      "Animations: show the time in the first panel's title, true or false"},
+    {"loop", spec_table::animation, "--loop", "MODE", value_kind::text,
+     "Animations: how the end meets the start: periods (default where the motions' periods meet), crossfade or hold"},
 };
 
 /// The options of plot.

@@ -532,8 +532,8 @@ command add_render_command(CLI::App& app) {
                    "  pendulum-figures render fig7 -f eps_tex --tex-sizes absolute --set tick_font_pt=8\n"
                    "\nAnimations (a spec with [animation]; built in: swing, separatrix, over-the-top) are written as " +
                    animation_help() + ". In Beamer: \\usepackage{animate} and "
-                   "\\animategraphics[loop,autoplay]{30}{swing}{}{} (30: the spec's fps). A video: ffmpeg -framerate "
-                   "30 -i swing-%04d.png -pix_fmt yuv420p swing.mp4\n"
+                   "\\animategraphics[loop,autoplay]{25}{swing}{}{} (25: the spec's fps). A video: ffmpeg -framerate "
+                   "25 -i swing-%04d.png -pix_fmt yuv420p swing.mp4\n"
                    "  pendulum-figures render swing --theme slides -f gif,pdf\n"
                    "  pendulum-figures render swing --at 0.25 -f svg");
     return {cmd, [ro] {

@@ -447,8 +447,12 @@ figure_description describe(const figure_spec& spec, const plot::figure& unstyle
         char buf[160];
         if (a.duration_s) {
             std::snprintf(buf, sizeof buf, "An animation of %g s at %g frames per second.", *a.duration_s, a.fps);
+        } else if (!a.periods) {
+            std::snprintf(buf, sizeof buf,
+                          "An animation over whole periods of every drawn motion where they meet, at %g frames per second.",
+                          a.fps);
         } else {
-            const double periods = a.periods.value_or(1.0);
+            const double periods = *a.periods;
             std::snprintf(buf, sizeof buf, "An animation over %g period%s of the exact motion, at %g frames per second.",
                           periods, periods == 1 ? "" : "s", a.fps);
         }

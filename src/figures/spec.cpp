@@ -48,7 +48,7 @@ constexpr std::string_view common_panel_keys = "plot title x_label y_label y_ran
 constexpr std::string_view figure_keys = "columns panel_width_cm panel_aspect legend title description style";
 constexpr std::string_view pendulum_keys = "length_m g";
 constexpr std::string_view top_keys = "figure pendulum animation panel";
-constexpr std::string_view animation_keys = "fps periods duration_s speed clock";
+constexpr std::string_view animation_keys = "fps periods duration_s speed clock loop";
 constexpr std::string_view line_keys = "x y label style span";
 
 constexpr std::array<std::pair<std::string_view, legend_mode>, 3> legend_modes = {{
@@ -56,6 +56,13 @@ constexpr std::array<std::pair<std::string_view, legend_mode>, 3> legend_modes =
     {"each", legend_mode::each},
     {"none", legend_mode::none},
 }};
+
+/// The names of loop_rows, as the reader's choice takes them.
+constexpr std::array<std::pair<std::string_view, loop_mode>, loop_rows.size()> loop_choices() {
+    std::array<std::pair<std::string_view, loop_mode>, loop_rows.size()> out{};
+    for (std::size_t i = 0; i < loop_rows.size(); ++i) out[i] = {loop_rows[i].name, loop_rows[i].mode};
+    return out;
+}
 
 /// A reference line's span: two numbers or expressions ("pi/2"), the first below the second.
 std::optional<std::array<double, 2>> read_span(reader& r, const toml::node& n) {
@@ -322,7 +329,7 @@ void read_pendulum_table(reader& r, const toml::node& n, figure_spec& f) {
     f.pendulum = p;
 }
 
-/// [animation]: frame rate, length (periods or seconds), speed, clock.
+/// [animation]: frame rate, length (periods or seconds), speed, clock, loop.
 void read_animation_table(reader& r, const toml::node& n, figure_spec& f) {
     const auto* t = n.as_table();
     if (!t) {
@@ -336,6 +343,7 @@ void read_animation_table(reader& r, const toml::node& n, figure_spec& f) {
     a.duration_s = r.number(*t, "duration_s", 0.0, 1e5, true);
     if (auto v = r.number(*t, "speed", 0.0, 1e4, true)) a.speed = *v;
     if (auto v = r.boolean(*t, "clock")) a.clock = *v;
+    a.loop = r.choice(*t, "loop", loop_choices());
     const bool periods = t->contains("periods");
     const bool duration = t->contains("duration_s");
     if (periods && duration) {
@@ -343,7 +351,6 @@ void read_animation_table(reader& r, const toml::node& n, figure_spec& f) {
     } else if (duration && !f.pendulum) {
         r.problem(*t->get("duration_s"), "duration_s needs a [pendulum] table with length_m");
     }
-    if (!a.periods && !a.duration_s && !periods && !duration) a.periods = 1.0;
     f.animation = a;
 }
 

@@ -134,13 +134,36 @@ struct pendulum_spec {
 /// The largest number of frames of an animation.
 inline constexpr int max_frames = 10000;
 
+/// How an animation's end meets its start when it loops.
+enum class loop_mode {
+    periods,    ///< whole periods of every drawn motion: the end runs on into the start
+    crossfade,  ///< the motion runs on while its start fades in over it
+    hold,       ///< the last frame is held, then the animation starts again
+};
+
+/// One choice of [animation] loop: its name, what it does, for help, man and messages.
+struct loop_row {
+    std::string_view name;         ///< as written in a spec
+    loop_mode mode;                ///< what it means
+    std::string_view description;  ///< one line
+};
+
+/// Every choice of [animation] loop, the default first.
+inline constexpr std::array<loop_row, 3> loop_rows = {{
+    {"periods", loop_mode::periods,
+     "a whole number of periods of every drawn motion, so that the last frame runs on into the first"},
+    {"crossfade", loop_mode::crossfade, "the motion runs on for half a second while the first frame fades in over it"},
+    {"hold", loop_mode::hold, "the last frame stays for a second, then the animation starts again"},
+}};
+
 /// How an animation plays: every panel is drawn once per frame at time t.
 struct animation_spec {
-    double fps = 30;                 ///< frames per second, 1 to 120
-    std::optional<double> periods;   ///< length in exact periods of the first amplitude
+    double fps = 25;                 ///< frames per second, 1 to 120
+    std::optional<double> periods;   ///< length in exact periods of the first amplitude; neither: a common loop
     std::optional<double> duration_s;  ///< or length in seconds (with [pendulum])
     double speed = 1.0;              ///< playback speed relative to real time
     bool clock = false;              ///< show "t = 1.25 T" (or seconds) in the first panel's title
+    std::optional<loop_mode> loop;   ///< how the end meets the start; default: periods where they fit, else crossfade
 };
 
 /// A figure described as data.

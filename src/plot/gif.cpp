@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -289,6 +290,21 @@ struct gif_encoder::state {
         }
     }
 };
+
+double gif_playback_rate(double fps) {
+    if (!(fps > 0)) throw std::invalid_argument("a frame rate is above 0");
+    const long k = std::max(2L, std::lround(100.0 / fps));
+    return 100.0 / static_cast<double>(k);
+}
+
+std::string rate_text(double fps) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", fps);
+    std::string s = text;
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s;
+}
 
 gif_encoder::gif_encoder(int width, int height, std::vector<rgb8> palette, double fps, int first_frame)
     : state_(std::make_unique<state>()), first_frame_(first_frame) {

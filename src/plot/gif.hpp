@@ -10,6 +10,14 @@
 
 namespace plot {
 
+/// The frame rate nearest `fps` that a GIF plays evenly: 100/k frames per second for the whole
+/// number k of hundredths of a second nearest its frame's time (a GIF counts delays in them),
+/// k at least 2 (browsers slow shorter delays): 25 stays 25, 30 plays at 33.33.
+double gif_playback_rate(double fps);
+
+/// A frame rate as text, to the hundredth without trailing zeros: "25", "33.33".
+std::string rate_text(double fps);
+
 /// An 8-bit RGB colour of a GIF palette.
 struct rgb8 {
     std::uint8_t r = 0;  ///< red

@@ -516,18 +516,11 @@ std::string render_raster(const figure& fig, const theme& th, const output_optio
 }
 
 /// A GIF's frame delays are whole hundredths of a second, and browsers play a delay below
-/// 2/100 s as 1/10 s: above 50 frames per second some frames would crawl. Below it, delays
-/// that alternate (3, 3, 4 at 30 fps) keep the true time.
+/// 2/100 s as 1/10 s: above 50 frames per second some frames would crawl. Below it, a rate
+/// is played at the nearest that gives every frame the same delay (gif_playback_rate).
 void check_gif_frame_rate(double fps) {
     if (fps <= 50) return;
-    const auto rate = [](int k) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.2f", 100.0 / k);
-        std::string s = text;
-        while (s.back() == '0') s.pop_back();
-        if (s.back() == '.') s.pop_back();
-        return s;
-    };
+    const auto rate = [](int k) { return rate_text(100.0 / k); };
     const int k = std::max(2, static_cast<int>(std::floor(100 / fps)));
     char given[32];
     std::snprintf(given, sizeof given, "%g", fps);
@@ -540,28 +533,28 @@ void check_gif_frame_rate(double fps) {
 // by its row's functions, so a format without a writer cannot be listed.
 //  name, description,
 //  still writer, overlay's graphics format, writer under an overlay, raster, animation writer, what it animates as,
-//  the file of an animation's frame, the check of its frame rate
+//  the file of an animation's frame, the check of its frame rate, the rate it plays
 // Videos play at any rate the specs allow (1 to 120 frames per second): the frame rate is
 // a fraction that H.264 and MP4 keep exactly, and WebM's millisecond times within 0.5 ms.
 constexpr format_row formats[] = {
     {"png", "raster at --dpi",
-     render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)", png_frame_file, nullptr, false},
+     render_raster, {}, nullptr, true, write_png_animation, "numbered PNG frames (ID-0001.png, ...)", png_frame_file, nullptr, false, nullptr},
     {"pdf", "vector, fonts embedded",
-     write_pdf, {}, render_pdf, false, write_pdf_animation, "a PDF of one page per frame", pdf_animation_file, nullptr, false},
+     write_pdf, {}, render_pdf, false, write_pdf_animation, "a PDF of one page per frame", pdf_animation_file, nullptr, false, nullptr},
     {"svg", "vector, for the web",
-     write_svg, {}, nullptr, false, nullptr, {}, nullptr, nullptr, false},
+     write_svg, {}, nullptr, false, nullptr, {}, nullptr, nullptr, false, nullptr},
     {"eps", "vector, for latex and dvips",
-     write_eps, {}, render_eps, false, nullptr, {}, nullptr, nullptr, false},
+     write_eps, {}, render_eps, false, nullptr, {}, nullptr, nullptr, false, nullptr},
     {"gif", "animation that loops; one frame for a still figure",
-     render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF", gif_animation_file, check_gif_frame_rate, true},
+     render_gif, {}, nullptr, true, write_gif_animation, "a looping GIF", gif_animation_file, check_gif_frame_rate, true, gif_playback_rate},
     {"mp4", "video (H.264) for slides and browsers; animations only",
-     nullptr, {}, nullptr, true, write_mp4_animation, "an MP4 video (H.264)", mp4_animation_file, nullptr, true},
+     nullptr, {}, nullptr, true, write_mp4_animation, "an MP4 video (H.264)", mp4_animation_file, nullptr, true, nullptr},
     {"webm", "video (VP9) for browsers; animations only",
-     nullptr, {}, nullptr, true, write_webm_animation, "a WebM video (VP9)", webm_animation_file, nullptr, true},
+     nullptr, {}, nullptr, true, write_webm_animation, "a WebM video (VP9)", webm_animation_file, nullptr, true, nullptr},
     {"pdf_tex", "ID.pdf without text and ID.pdf_tex setting the text in the document's fonts (pdflatex)",
-     refuse_one_stream, "pdf", nullptr, false, nullptr, {}, nullptr, nullptr, false},
+     refuse_one_stream, "pdf", nullptr, false, nullptr, {}, nullptr, nullptr, false, nullptr},
     {"eps_tex", "ID.eps without text and ID.eps_tex setting the text in the document's fonts (latex, dvips)",
-     refuse_one_stream, "eps", nullptr, false, nullptr, {}, nullptr, nullptr, false},
+     refuse_one_stream, "eps", nullptr, false, nullptr, {}, nullptr, nullptr, false, nullptr},
 };
 
 }  // namespace

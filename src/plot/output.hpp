@@ -98,6 +98,9 @@ struct format_row {
     /// Whether an animation in this format plays its motion: every frame in one file that
     /// plays them in time (GIF, video), not a sequence of PNGs nor a PDF of pages.
     bool plays_motion;
+    /// The frame rate the format plays for a spec's `fps` (a GIF's of whole hundredths of a
+    /// second); null: the spec's rate.
+    double (*playback_rate)(double fps);
 };
 
 /// A LaTeX overlay's two files: the drawing without text, and the picture that sets the text.

@@ -39,11 +39,13 @@ inline std::size_t edit_distance(std::string_view a, std::string_view b) {
     return previous[b.size()];
 }
 
-/// The first of `names` nearest to `word` at an edit distance below `below`, or empty.
+/// The first of `names` nearest to `word` at an edit distance below `below`, or empty (always
+/// for a word longer than max_suggest_length, whatever `below`).
 /// Names is any range of things a std::string_view can be made from.
 template <class Names>
 std::string nearest_name(std::string_view word, const Names& names, std::size_t below) {
     std::string best;
+    if (word.size() > max_suggest_length) return best;
     for (const auto& name : names) {
         const std::string_view n(name);
         const std::size_t d = edit_distance(word, n);

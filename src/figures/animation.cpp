@@ -230,8 +230,8 @@ plot::figure animation_frame(const entry& e, const build_options& options, const
                              const plot::figure& base, double w0_t) {
     plot::figure f = base;
     const auto panels = panels_of(e, options);
-    // The drawings run a whole loop ahead, which shows the same state, so that a trail
-    // reaches back across the seam; the plots' cursors keep the clock's time.
+    // In a seamless loop the round before the seam is the motion's past: a trail at the first
+    // frames reaches back across the seam, and every frame shows its own time exactly.
     add_frame_state(f, e.spec, panels, w0_t, plan.step, plan.lead);
     one_legend(f);
     if (e.spec.animation && e.spec.animation->clock && !f.panels.empty()) {

@@ -62,7 +62,7 @@ void add_pendulum_frame(plot::panel& panel, const panel_context& c, const panel_
 
 /// Adds the rods, bobs, trails and pivot of a pendulum panel at time w0 t, each bob with its
 /// motion streak over the `frame_step` before (none for 0).
-void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, double frame_step);
+void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, double frame_step, double history = 0);
 
 /// A bob's radius in units of the theme's marker radius.
 inline constexpr double bob_marker_scale = 3.0;

@@ -200,7 +200,7 @@ void add_pivot(plot::panel& panel) {
 
 }  // namespace
 
-void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, double frame_step) {
+void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, double frame_step, double history) {
     const auto starts = starts_of(p);
     for (std::size_t i = 0; i < starts.size(); ++i) {
         const auto& motion = starts[i].motion;
@@ -210,7 +210,7 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
             const auto& m = p.methods[j];
             const auto theta = angle_of(m, motion);
             const series_style st = bob_style(p, starts, i, j);
-            if (p.trail > 0) add_trail(panel, st, theta, w0_t, std::min(p.trail * period, w0_t));
+            if (p.trail > 0) add_trail(panel, st, theta, w0_t, std::min(p.trail * period, w0_t + history));
             const marker_style bob_marker =
                 m.marker.value_or(is_exact(m) ? marker_style::filled_circle : marker_style::open_circle);
             add_streak(panel, st, theta, w0_t, frame_step, bob_marker);
@@ -246,7 +246,7 @@ std::vector<streak_bob> motion_streak(const std::function<double(double)>& theta
 }
 
 void add_pendulum_frame(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t) {
-    add_pendulum_state(panel, p, w0_t, c.frame_step);
+    add_pendulum_state(panel, p, w0_t, c.frame_step, c.history);
     add_overlays_at(panel, c, p, starts_of(p), w0_t);
 }
 

@@ -20,6 +20,7 @@ struct panel_context {
     double width_cm;          ///< the panel's width
     bool animated;            ///< leave out what moves: each frame adds it (plot_row::add_frame)
     double frame_step;        ///< w0 t from the previous frame of an animation to this one; 0 when still
+    double history = 0;       ///< w0 t before 0 that is the motion's past (a seamless loop's round before)
 };
 
 /// How a plot kind takes amplitudes, and what the command line's --theta0 does to it.

@@ -82,14 +82,14 @@ std::vector<panel_spec> panels_with(const figure_spec& spec, const build_options
 }
 
 void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector<panel_spec>& panels, double w0_t,
-                     double frame_step, double drawing_lead) {
-    const panel_context c{spec, f.panel_width_cm, true, frame_step};
+                     double frame_step, double history) {
+    const panel_context c{spec, f.panel_width_cm, true, frame_step, history};
     for (std::size_t i = 0; i < panels.size() && i < f.panels.size(); ++i) {
         const panel_spec& p = panels[i];
         if (!p.plot->add_frame) continue;
         plot::panel& panel = f.panels[i];
         const std::size_t still = panel.data.size();
-        p.plot->add_frame(panel, c, p, p.plot->drawing ? w0_t + drawing_lead : w0_t);
+        p.plot->add_frame(panel, c, p, w0_t);
         // Everything added here moves: the overlay pass of a frame draws it.
         for (std::size_t k = still; k < panel.data.size(); ++k) panel.data[k].overlay = true;
     }

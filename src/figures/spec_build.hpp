@@ -27,10 +27,10 @@ plot::figure build_figure(const figure_spec& spec, const build_options& options 
 /// Adds what moves at time w0 t: the pendulums, a time cursor and a dot per method on
 /// trajectories, a dot per orbit on phase panels. `panels` are the specs f was built from;
 /// `frame_step` is the time w0 t since the previous frame (0: none), over which a pendulum's
-/// bob leaves its motion streak. The drawings (pendulums) are drawn at w0 t + drawing_lead:
-/// a whole loop ahead shows the same state with the trail of the loop before it.
+/// bob leaves its motion streak. `history` is the w0 t before 0 that is the motion's past (a
+/// seamless loop's round before the seam), which a trail may reach back into.
 void add_frame_state(plot::figure& f, const figure_spec& spec, const std::vector<panel_spec>& panels, double w0_t,
-                     double frame_step = 0, double drawing_lead = 0);
+                     double frame_step = 0, double history = 0);
 
 /// The name of the i-th panel (from 0): a, b, ..., z, aa, ab, ...
 std::string panel_name(std::size_t i);

@@ -133,7 +133,7 @@ std::unique_ptr<time_reducer::state> reducer_setup::make(const std::function<rea
     const long double ratio_extended = exact ? extended(ratio) : static_cast<long double>(frequency_ratio);
     auto s = std::make_unique<time_reducer::state>(time_reducer::state{
         per_unit, period, std::move(ratio), 2.0 * mp::pi(bits), extended(per_unit), extended(period),
-        ratio_extended, real(bits + 64), real(bits), real(bits), real(0.0, bits), exact});
+        ratio_extended, real(bits + 64), real(bits), real(bits), real(0.0, bits), 0.0, exact});
     return s;
 }
 

@@ -113,10 +113,10 @@ struct bar_look {
 };
 
 constexpr bar_look bar_looks[] = {
-    {"kinetic", 2, 0.55, ""},
-    {"potential", 1, 0.25, ""},
-    // One legend entry for the three, in their order from the left.
-    {"total", 0, 0.0, "bars: <i>E</i><sub>kin</sub>, <i>E</i><sub>pot</sub>, <i>E</i> in <i>m g L</i>"},
+    // A legend entry each, in the bar's colour, in their order from the left.
+    {"kinetic", 2, 0.55, "kinetic <i>E</i><sub>kin</sub>"},
+    {"potential", 1, 0.25, "potential <i>E</i><sub>pot</sub>"},
+    {"total", 0, 0.0, "total <i>E</i> (unit <i>m g L</i>)"},
 };
 
 /// Adds bar `kind` of start i (of n) with height `value` of `largest`: an outline, filled by

@@ -84,6 +84,18 @@ TEST(CheckAps, EveryBuiltinInPaperPasses) {
     fs::remove_all(dir);
 }
 
+// In every theme, no two series of a built-in figure merge in greyscale print (slides figures
+// are wider than a journal's column, which is the only other thing --check may say of them).
+TEST(CheckAps, NoBuiltinMergesInGreyscaleInAnyTheme) {
+    for (const char* theme : {"paper", "slides", "slides-dark"}) {
+        const fs::path dir = temp_dir("preflight-grey");
+        const run_result r = run_cli(std::string("render --all --check aps --theme ") + theme, dir);
+        EXPECT_EQ(r.out.find("greyscale"), std::string::npos) << theme << ":\n" << r.out;
+        EXPECT_TRUE(files_in(dir).empty());
+        fs::remove_all(dir);
+    }
+}
+
 // A deliberately bad spec: 7-pt ticks, 0.3-pt lines and a 10-cm width, each its own message
 // naming the measured value, the rule and the key to change; exit status 1; nothing written.
 TEST(CheckAps, BadSpecEachItsOwnMessage) {

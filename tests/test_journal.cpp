@@ -304,7 +304,8 @@ TEST(JournalLayout, SeparatrixOverTheOrbits) {
     ASSERT_LT(first_separatrix, data.size());
     int orbits = 0;
     for (std::size_t i = 0; i < data.size(); ++i) {
-        const bool separatrix = data[i].rgb_color && data[i].rgb_color->r == 0.5 && i >= first_separatrix;
+        const bool separatrix = i >= first_separatrix && data[i].rgb_color && data[first_separatrix].rgb_color &&
+                                data[i].rgb_color->r == data[first_separatrix].rgb_color->r;
         if (separatrix || !data[i].curve) continue;
         ++orbits;
         EXPECT_LT(i, first_separatrix) << "orbit " << i << " drawn over the separatrix";

@@ -10,11 +10,10 @@ XObjects (Do) are followed from the pages, with the reader of pdf_text_sizes.py.
 Usage: pdf_line_widths.py FILE.pdf
 """
 import os
-import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pdf_text_sizes import TOKEN, mul, names_of, objects, resources, scale  # noqa: E402
+from pdf_text_sizes import TOKEN, form_of, mul, names_of, objects, page_contents, resources, scale  # noqa: E402
 
 STROKES = {b"S", b"s", b"B", b"B*", b"b", b"b*"}
 
@@ -40,29 +39,17 @@ def run(objs, content, head, ctm, width, out, depth=0):
         elif op in STROKES:
             out.append(width * scale(ctm))
         elif op == b"Do" and operands and depth < 8:
-            ref = xobjects.get(operands[-1][1:])
-            if ref is not None:
-                fhead, fdata = objs[int(ref)]
-                if fdata is not None and b"/Form" in fhead:
-                    m = re.search(rb"/Matrix\s*\[([^\]]*)\]", fhead)
-                    fm = [float(x) for x in m.group(1).split()] if m else [1, 0, 0, 1, 0, 0]
-                    run(objs, fdata, fhead, mul(fm, ctm), width, out, depth + 1)
+            form = form_of(objs, xobjects, operands[-1])
+            if form:
+                run(objs, form[1], form[0], mul(form[2], ctm), width, out, depth + 1)
         operands = []
 
 
 def main():
-    data = open(sys.argv[1], "rb").read()
-    objs = objects(data)
+    objs = objects(open(sys.argv[1], "rb").read())
     found = []
-    for head, _ in objs.values():
-        if not re.search(rb"/Type\s*/Page\b", head):
-            continue
-        refs = re.search(rb"/Contents\s+(?:\[([^\]]*)\]|(\d+)\s+0\s+R)", head)
-        if not refs:
-            continue
-        numbers = re.findall(rb"(\d+)\s+0\s+R", refs.group(1)) if refs.group(1) else [refs.group(2)]
-        for n in numbers:
-            run(objs, objs[int(n)][1] or b"", head, [1, 0, 0, 1, 0, 0], 1.0, found)
+    for head, content in page_contents(objs):
+        run(objs, content, head, [1, 0, 0, 1, 0, 0], 1.0, found)
     for width in found:
         print("%.3f" % width)
 

@@ -88,20 +88,26 @@ def run(objs, content, head, ctm, out, depth=0):
             text = b"".join(x for x in operands if x[:1] in b"<(")
             out.append((font_size * scale(tm) * scale(ctm), text))
         elif op == b"Do" and operands and depth < 8:
-            ref = xobjects.get(operands[-1][1:])
-            if ref is not None:
-                fhead, fdata = objs[int(ref)]
-                if fdata is not None and b"/Form" in fhead:
-                    m = re.search(rb"/Matrix\s*\[([^\]]*)\]", fhead)
-                    fm = [float(x) for x in m.group(1).split()] if m else [1, 0, 0, 1, 0, 0]
-                    run(objs, fdata, fhead, mul(fm, ctm), out, depth + 1)
+            form = form_of(objs, xobjects, operands[-1])
+            if form:
+                run(objs, form[1], form[0], mul(form[2], ctm), out, depth + 1)
         operands = []
 
 
-def main():
-    data = open(sys.argv[1], "rb").read()
-    objs = objects(data)
-    found = []
+def form_of(objs, xobjects, name):
+    """(dictionary, content, matrix) of the form XObject /name of a Do, or None."""
+    ref = xobjects.get(name[1:])
+    if ref is None:
+        return None
+    fhead, fdata = objs[int(ref)]
+    if fdata is None or b"/Form" not in fhead:
+        return None
+    m = re.search(rb"/Matrix\s*\[([^\]]*)\]", fhead)
+    return fhead, fdata, [float(x) for x in m.group(1).split()] if m else [1, 0, 0, 1, 0, 0]
+
+
+def page_contents(objs):
+    """(page dictionary, content stream) of every content stream of every page."""
     for head, _ in objs.values():
         if not re.search(rb"/Type\s*/Page\b", head):
             continue
@@ -110,7 +116,14 @@ def main():
             continue
         numbers = re.findall(rb"(\d+)\s+0\s+R", refs.group(1)) if refs.group(1) else [refs.group(2)]
         for n in numbers:
-            run(objs, objs[int(n)][1] or b"", head, [1, 0, 0, 1, 0, 0], found)
+            yield head, objs[int(n)][1] or b""
+
+
+def main():
+    objs = objects(open(sys.argv[1], "rb").read())
+    found = []
+    for head, content in page_contents(objs):
+        run(objs, content, head, [1, 0, 0, 1, 0, 0], found)
     for size, text in found:
         print("%.3f %s" % (size, text.hex()))
 

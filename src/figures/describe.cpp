@@ -211,6 +211,7 @@ struct panel_words {
     std::vector<const plot::series*> shown;     ///< its curves with a legend label
     std::string x, y;                           ///< the axes' names as spoken
     double x0 = 0, x1 = 0, y0 = 0, y1 = 0;      ///< the data's ranges as the axes show them
+    double axis_y0 = 0, axis_y1 = 0;            ///< the y axis' limits (the data's range without a layout)
 };
 
 /// "Panel (a), theta0 = pi/3," or "Panel 2 (title)" or "The plot".
@@ -262,6 +263,8 @@ std::string axes_words(panel_words& w, const plot::panel_frame* frame) {
         if (std::fabs(w.y0) < 1e-6 * (w.y1 - w.y0)) w.y0 = 0;
         if (std::fabs(w.y1) < 1e-6 * (w.y1 - w.y0)) w.y1 = 0;
     }
+    w.axis_y0 = frame ? frame->y_lo : w.y0;
+    w.axis_y1 = frame ? frame->y_hi : w.y1;
     const std::string& x = w.x;
     const std::string& y = w.y;
     return " shows " + y + " against " + x + ", " + x + " from " + spoken(w.x0, p.x.ticks) + " to " +
@@ -280,16 +283,48 @@ std::string curves_words(const panel_words& w) {
 
 /// Where a series first leaves the sorted reference by more than `visible`: its x, or
 /// nothing; `covered` tells whether they share any x at all.
-std::optional<double> departure(const std::vector<std::pair<double, double>>& reference, const plot::series& s,
-                                double visible, bool& covered) {
+/// y of a series at x: its function's value where it is a function y = f(x) defined at x,
+/// else between its points (sorted by x); none outside them.
+std::optional<double> y_of(const plot::series& s, const std::vector<std::pair<double, double>>& sorted, double x) {
+    if (s.curve && x >= s.curve->u0 && x <= s.curve->u1) {
+        const auto [cx, cy] = s.curve->at(x);
+        if (cx == x && std::isfinite(cy)) return cy;
+    }
+    return value_at(sorted, x);
+}
+
+/// Where series s first leaves the reference by more than `visible` (none if it never does):
+/// the first of its points past it, then the crossing between it and the point before, by
+/// bisection on the functions where both curves are functions of x. `covered`: whether any
+/// point of s lies within the reference's x range.
+std::optional<double> departure(const plot::series& reference, const std::vector<std::pair<double, double>>& sorted,
+                                const plot::series& s, double visible, bool& covered) {
     auto points = dense(s);
     std::sort(points.begin(), points.end());
     covered = false;
+    const auto gap = [&](double x) -> std::optional<double> {
+        const auto e = y_of(reference, sorted, x);
+        const auto y = y_of(s, points, x);
+        if (!e || !y) return std::nullopt;
+        return std::fabs(*y - *e);
+    };
+    std::optional<double> inside;
     for (const auto& [px, py] : points) {
-        const auto e = value_at(reference, px);
-        if (!e) continue;
+        const auto g = gap(px);
+        if (!g) continue;
         covered = true;
-        if (std::fabs(py - *e) > visible) return px;
+        if (*g <= visible) {
+            inside = px;
+            continue;
+        }
+        if (!inside) return px;
+        double lo = *inside, hi = px;
+        for (int k = 0; k < 80 && hi - lo > 1e-15 * std::fabs(hi); ++k) {
+            const double mid = lo + (hi - lo) / 2;
+            const auto gm = gap(mid);
+            (gm && *gm > visible ? hi : lo) = mid;
+        }
+        return hi;
     }
     return std::nullopt;
 }
@@ -298,12 +333,13 @@ std::optional<double> departure(const std::vector<std::pair<double, double>>& re
 std::string departures_words(const panel_words& w, const plot::series& exact, const std::string& reference_name) {
     auto reference = dense(exact);
     std::sort(reference.begin(), reference.end());
-    const double visible = visible_fraction * (w.y1 - w.y0);
+    // A fraction of the axis, as the sentence says (the axis reaches past the data).
+    const double visible = visible_fraction * (w.axis_y1 - w.axis_y0);
     std::vector<std::string> leaves, stays;
     for (const auto* s : w.shown) {
         if (s == &exact) continue;
         bool covered = false;
-        const auto at = departure(reference, *s, visible, covered);
+        const auto at = departure(exact, reference, *s, visible, covered);
         const std::string name = spoken_label(s->label.markup);
         if (at) {
             leaves.push_back(name + " at " + w.x + " = " + spoken(*at, w.p.x.ticks));

@@ -241,28 +241,33 @@ std::pair<double, double> limits_clear_of(const std::vector<extent>& data, doubl
     return {lo, hi};
 }
 
+/// One round of keep_axis_off_frame: widens t's free limits so that every extent stands
+/// clear at the axis' present length; false where nothing moved (or the axis has no length).
+bool widen_axis_once(const axis& a, tick_set& t, double length, const std::vector<extent>& data) {
+    const bool log = a.kind == scale::log;
+    double lo = log ? std::log10(t.lo) : t.lo;
+    double hi = log ? std::log10(t.hi) : t.hi;
+    if (!(length > 0) || !(hi > lo)) return false;
+    const auto [need_lo, need_hi] = limits_clear_of(data, lo, hi, (hi - lo) / length);
+    const bool lo_free = !a.min || !a.exact_range;
+    const bool hi_free = !a.max || !a.exact_range;
+    if (!((lo_free && need_lo < lo) || (hi_free && need_hi > hi))) return false;
+    if (lo_free) lo = std::min(lo, need_lo);
+    if (hi_free) hi = std::max(hi, need_hi);
+    t.lo = log ? std::pow(10.0, lo) : lo;
+    t.hi = log ? std::pow(10.0, hi) : hi;
+    return true;
+}
+
 /// Moves one free axis's limits out until every extent stands clear of the frame. The
 /// length in points depends on the limits where the aspect is equal: a few rounds settle it.
 void keep_axis_off_frame(const panel& p, panel_plan& plan, const rect& cell, const std::vector<extent>& data,
                          bool horizontal) {
     const axis& a = horizontal ? p.x : p.y;
-    const bool log = a.kind == scale::log;
     tick_set& t = horizontal ? plan.xt : plan.yt;
     for (int round = 0; round < 4; ++round) {
         const rect area = panel_area(p, plan, cell);
-        const double length = horizontal ? area.w : area.h;
-        double lo = log ? std::log10(t.lo) : t.lo;
-        double hi = log ? std::log10(t.hi) : t.hi;
-        if (!(length > 0) || !(hi > lo)) return;
-        const auto [need_lo, need_hi] = limits_clear_of(data, lo, hi, (hi - lo) / length);
-        const bool lo_free = !a.min || !a.exact_range;
-        const bool hi_free = !a.max || !a.exact_range;
-        const bool moved = (lo_free && need_lo < lo) || (hi_free && need_hi > hi);
-        if (!moved) return;
-        if (lo_free) lo = std::min(lo, need_lo);
-        if (hi_free) hi = std::max(hi, need_hi);
-        t.lo = log ? std::pow(10.0, lo) : lo;
-        t.hi = log ? std::pow(10.0, hi) : hi;
+        if (!widen_axis_once(a, t, horizontal ? area.w : area.h, data)) return;
     }
 }
 

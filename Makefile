@@ -104,7 +104,7 @@ SANITIZE := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-r
 # the leak check: in a process that has loaded FFmpeg's codec libraries (the video module),
 # LeakSanitizer's stop-the-world tracer at exit was seen to crash now and then (SIGSEGV in
 # the tracer, not a leak), under load.
-VIDEO_TESTS := ^(Video|Browser|PlotAnimates)\.|^Animation\.OverTheTopInEveryThemeAndFormat$$
+VIDEO_TESTS := ^(Video|Browser|PlotAnimates)\.|^Animation\.OverTheTopInEveryThemeAndFormat$$|^Loops\.GifDelaysReadBackAreEqual$$
 check-sanitizers: deps
 	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_BUILD_BENCH=OFF \
 	  -DCMAKE_CXX_FLAGS="$(SANITIZE) -O1" -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE)" \

@@ -13,21 +13,15 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pdf_text_sizes import TOKEN, form_of, mul, names_of, objects, page_contents, resources, scale  # noqa: E402
+from pdf_text_sizes import form_of, mul, names_of, objects, operators, page_contents, resources, scale  # noqa: E402
 
 STROKES = {b"S", b"s", b"B", b"B*", b"b", b"b*"}
 
 
 def run(objs, content, head, ctm, width, out, depth=0):
     xobjects = names_of(resources(objs, head), b"XObject")
-    stack, operands = [], []
-    for t in TOKEN.findall(content):
-        c = t[:1]
-        if c in b"0123456789.-+" or c in b"</([]":
-            operands.append(t)
-            continue
-        op = t
-        nums = [float(x) for x in operands if x[:1] in b"0123456789.-+"]
+    stack = []
+    for op, operands, nums in operators(content):
         if op == b"q":
             stack.append((ctm, width))
         elif op == b"Q" and stack:
@@ -42,7 +36,6 @@ def run(objs, content, head, ctm, width, out, depth=0):
             form = form_of(objs, xobjects, operands[-1])
             if form:
                 run(objs, form[1], form[0], mul(form[2], ctm), width, out, depth + 1)
-        operands = []
 
 
 def main():

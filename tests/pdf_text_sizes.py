@@ -61,17 +61,22 @@ def resources(objs, head):
     return objs[int(m.group(1))][0] if m else head
 
 
-def run(objs, content, head, ctm, out, depth=0):
-    xobjects = names_of(resources(objs, head), b"XObject")
-    stack, operands = [], []
-    font_size, tm = 0.0, [1, 0, 0, 1, 0, 0]
+def operators(content):
+    """(operator, its operand tokens, their numbers) of each operator of a content stream."""
+    operands = []
     for t in TOKEN.findall(content):
-        c = t[:1]
-        if c in b"0123456789.-+" or c in b"</([]":
+        if t[:1] in b"0123456789.-+" or t[:1] in b"</([]":
             operands.append(t)
             continue
-        op = t
-        nums = [float(x) for x in operands if x[:1] in b"0123456789.-+"]
+        yield t, operands, [float(x) for x in operands if x[:1] in b"0123456789.-+"]
+        operands = []
+
+
+def run(objs, content, head, ctm, out, depth=0):
+    xobjects = names_of(resources(objs, head), b"XObject")
+    stack = []
+    font_size, tm = 0.0, [1, 0, 0, 1, 0, 0]
+    for op, operands, nums in operators(content):
         if op == b"q":
             stack.append(ctm)
         elif op == b"Q" and stack:
@@ -91,7 +96,6 @@ def run(objs, content, head, ctm, out, depth=0):
             form = form_of(objs, xobjects, operands[-1])
             if form:
                 run(objs, form[1], form[0], mul(form[2], ctm), out, depth + 1)
-        operands = []
 
 
 def form_of(objs, xobjects, name):

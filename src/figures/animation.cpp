@@ -121,7 +121,7 @@ void plan_length(animation_plan& plan, const animation_spec& a, const std::vecto
                     (a.loop ? "it jumps back to its start (loop = \"crossfade\" or \"hold\" softens the seam)"
                             : "it ends on a cross-fade (loop = \"crossfade\"; or choose loop = \"hold\")");
     }
-    if (plan.seamless && plan.loop == loop_mode::periods) plan.lead = plan.motion_frames * plan.step;
+    if (plan.seamless && plan.loop == loop_mode::periods) plan.history = plan.motion_frames * plan.step;
 }
 
 /// True if two legend labels name one thing, the second maybe said more fully
@@ -232,7 +232,7 @@ plot::figure animation_frame(const entry& e, const build_options& options, const
     const auto panels = panels_of(e, options);
     // In a seamless loop the round before the seam is the motion's past: a trail at the first
     // frames reaches back across the seam, and every frame shows its own time exactly.
-    add_frame_state(f, e.spec, panels, w0_t, plan.step, plan.lead);
+    add_frame_state(f, e.spec, panels, w0_t, plan.step, plan.history);
     one_legend(f);
     if (e.spec.animation && e.spec.animation->clock && !f.panels.empty()) {
         // The clock goes on the first drawing (the pendulum), or on the first panel.

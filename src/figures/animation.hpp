@@ -25,7 +25,7 @@ struct animation_plan {
     bool physical = false;          ///< the spec gives a [pendulum]: clocks in seconds
     loop_mode loop = loop_mode::periods;  ///< what happens at the seam
     bool seamless = false;          ///< every drawn motion's end runs on into its start within a frame
-    double lead = 0;                ///< w0 t before 0 that is the motion's past (a whole loop), so that trails cross the seam
+    double history = 0;             ///< w0 t before 0 that is the motion's past (a whole loop), so that trails cross the seam
     std::string note;               ///< why the loop ends as it does where the spec did not say; empty otherwise
 
     /// The time w0 t of frame i: the motion's, running on under a cross-fade, held under a hold.

@@ -197,7 +197,7 @@ TEST(Structure, AnAngleAndAFormulaReadTheSameNumbers) {
     EXPECT_EQ(thrown<pendulum::domain_error>([] { (void)pendulum::parse_expression(".e5"); }).rfind(
                   "invalid value '.e5': '.e5' is not a number;", 0),
               0u);
-    EXPECT_EQ(thrown<pendulum::domain_error>([] { pendulum::formula f(".e5"); }), "formula:1:1: '.' is not a number");
+    EXPECT_EQ(thrown<pendulum::domain_error>([] { pendulum::formula f(".e5"); }), "formula:1:1: '.e5' is not a number");
     EXPECT_EQ(thrown<pendulum::domain_error>([] { pendulum::formula f("1e400"); }),
               "formula:1:1: number 1e400 is beyond a double's range");
 }

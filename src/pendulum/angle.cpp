@@ -3,6 +3,7 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/expression_lexer.hpp"
+#include "pendulum/expression_parser.hpp"
 #include "pendulum/mp_real.hpp"
 #include "pendulum/written_mp.hpp"
 
@@ -10,6 +11,8 @@
 #include <cfloat>
 #include <cmath>
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <charconv>
 #include <cstdlib>
 #include <optional>
@@ -38,183 +41,110 @@ std::string message_text(std::string_view text) {
 
 namespace {
 
-
 const std::string_view allowed =
     "expected a number, pi, or an expression such as 1.2, pi/2, 9pi/10, 0.9pi or 162deg";
 
 using mp::real;
+using op = formula_node::op;
 
-/// Recursive-descent evaluator with `bits` of precision, correctly rounded; `pos` walks the text.
-class parser {
+/// A text for a message: control characters and bytes that are not UTF-8 as \xNN.
+std::string shown_text(std::string_view text) {
+    std::string out;
+    while (!text.empty()) {
+        const std::size_t bad = grammar::invalid_utf8(text);
+        out += message_text(text.substr(0, bad));
+        if (bad == text.size()) break;
+        constexpr char hex[] = "0123456789abcdef";
+        const auto u = static_cast<unsigned char>(text[bad]);
+        out += std::string("\\x") + hex[u >> 4] + hex[u & 15];
+        text.remove_prefix(bad + 1);
+    }
+    return out;
+}
+
+/// "invalid value 'TEXT': why; what is allowed" (a long value shown by its ends).
+[[noreturn]] void angle_fail(std::string_view text, std::size_t /*at*/, const std::string& why) {
+    const std::string shown = text.size() <= 80 ? shown_text(text)
+                                                : shown_text(text.substr(0, 40)) + "..." + shown_text(text.substr(text.size() - 20));
+    throw domain_error("invalid value '" + shown + "': " + why + "; " + std::string(allowed));
+}
+
+constexpr std::array<grammar::name_row, 2> angle_names = {{{"pi", op::pi}, {"\u03c0", op::pi}}};
+
+constexpr std::array<grammar::operator_row, 4> angle_operators = {{
+    {'+', op::add, 1, false}, {'-', op::sub, 1, false}, {'*', op::mul, 2, false}, {'/', op::div, 2, false},
+}};
+
+constexpr std::array<grammar::unit_row, 3> angle_units = {{
+    {"deg", grammar::unit::degrees}, {"\u00b0", grammar::unit::degrees}, {"rad", grammar::unit::radians},
+}};
+
+/// An expression: numbers, pi, + - * / and parentheses.
+constexpr grammar::language number_language{
+    .names = angle_names,
+    .functions = {},
+    .operators = angle_operators,
+    .units = {},
+    .max_bytes = std::numeric_limits<std::size_t>::max(),
+    .max_depth = grammar::max_angle_depth,
+    .max_nodes = std::numeric_limits<std::size_t>::max(),
+    .max_order = 0,
+    .noun = "expression",
+    .a_noun = "an expression",
+    .nesting = "parentheses and signs",
+    .empty = "empty value",
+    .functions_note = "",
+    .fail = angle_fail,
+    .constant = nullptr,
+};
+
+/// An angle: an expression and a unit at its end.
+constexpr grammar::language angle_language = [] {
+    grammar::language l = number_language;
+    l.units = angle_units;
+    return l;
+}();
+
+const grammar::language& language_of(bool units) { return units ? angle_language : number_language; }
+
+/// The value of a tree with `bits`, correctly rounded; children come before their parents,
+/// so one pass with a stack evaluates it without recursion, however long the text.
+real evaluate_tree(std::string_view text, const grammar::tree& t, mpfr_prec_t bits) {
+    std::vector<real> stack;
+    for (const auto& n : t.nodes) {
+        if (n.what == op::number || n.what == op::pi) {
+            real v(bits);
+            if (n.what == op::pi) v = mp::pi(bits);
+            else mpfr_strtofr(v.get(), n.digits.c_str(), nullptr, 10, MPFR_RNDN);
+            stack.push_back(std::move(v));
+            continue;
+        }
+        if (n.what == op::neg) {
+            stack.back() = -stack.back();
+            continue;
+        }
+        real b = std::move(stack.back());
+        stack.pop_back();
+        real& a = stack.back();
+        if (n.what == op::div && b.is_zero()) angle_fail(text, 0, "division by zero");
+        a = n.what == op::add ? a + b : n.what == op::sub ? a - b : n.what == op::mul ? a * b : a / b;
+    }
+    real v = std::move(stack.back());
+    if (t.what == grammar::unit::degrees) v = v / 180.0 * mp::pi(bits);
+    if (!std::isfinite(v.to_double())) angle_fail(text, 0, "value is not finite");
+    return v;
+}
+
+/// A text read once, evaluated at any precision.
+class reading {
 public:
-    explicit parser(std::string_view text, mpfr_prec_t bits, std::vector<angle_token>* tokens = nullptr)
-        : text_(text), tokens_(tokens), bits_(bits) {}
-
-    real parse_all(bool allow_units) {
-        skip_space();
-        if (pos_ == text_.size()) fail("empty value");
-        real v = sum();
-        skip_space();
-        if (allow_units) {
-            if (take("deg") || take("\u00b0")) {
-                v = v / 180.0 * mp::pi(bits_);
-                emit(angle_token::kind::degrees);
-            } else if (take("rad")) {
-                emit(angle_token::kind::radians);
-            }
-            skip_space();
-        }
-        if (pos_ != text_.size()) fail("unexpected '" + std::string(text_.substr(pos_)) + "'");
-        if (!std::isfinite(v.to_double())) fail("value is not finite");
-        return v;
-    }
-
-    [[noreturn]] void fail(const std::string& why) const {
-        // A long value is shown by its ends.
-        const std::string shown = text_.size() <= 80 ? std::string(text_)
-                                                      : std::string(text_.substr(0, 40)) + "..." +
-                                                            std::string(text_.substr(text_.size() - 20));
-        throw domain_error("invalid value '" + message_text(shown) + "': " + message_text(why) + "; " + std::string(allowed));
-    }
-
-    /// Records a piece for angle_tokens.
-    void emit(angle_token::kind k) {
-        if (tokens_) tokens_->push_back({k, {}, {}, false});
-    }
-
-    void skip_space() { pos_ = lexer::skip_space(text_, pos_); }
-
-    bool take(std::string_view word) {
-        skip_space();
-        if (text_.substr(pos_, word.size()) == word) {
-            pos_ += word.size();
-            return true;
-        }
-        return false;
-    }
-
-    bool starts_primary() {
-        skip_space();
-        if (pos_ >= text_.size()) return false;
-        const std::string_view rest = text_.substr(pos_);
-        return rest.starts_with("(") || rest.starts_with("pi") || rest.starts_with("\u03c0");
-    }
+    reading(std::string_view text, bool units) : text_(text), tree_(grammar::parse(text, language_of(units))) {}
+    real at(mpfr_prec_t bits) const { return evaluate_tree(text_, tree_, bits); }
+    [[noreturn]] void fail(const std::string& why) const { angle_fail(text_, 0, why); }
 
 private:
-    real sum() {
-        real v = product();
-        for (;;) {
-            if (take("+")) {
-                emit(angle_token::kind::plus);
-                v = v + product();
-            } else if (take("-")) {
-                emit(angle_token::kind::minus);
-                v = v - product();
-            } else {
-                return v;
-            }
-        }
-    }
-
-    real product() {
-        real v = unary();
-        for (;;) {
-            if (take("*")) {
-                emit(angle_token::kind::times);
-                v = v * unary();
-            } else if (take("/")) {
-                emit(angle_token::kind::divide);
-                const real d = unary();
-                if (d.is_zero()) fail("division by zero");
-                v = v / d;
-            } else if (starts_primary()) {
-                v = v * primary();
-            } else {
-                return v;
-            }
-        }
-    }
-
-    /// Parentheses and signs nest; deeper than this is no angle anyone types, and it would
-    /// exhaust the stack.
-    static constexpr int max_depth = 500;
-
-    /// Counts one level of nesting for the rest of the enclosing call.
-    struct nesting {
-        explicit nesting(parser& p) : p_(p) {
-            if (++p_.depth_ > max_depth) p_.fail("expression nested too deeply (at most " + std::to_string(max_depth) + " levels)");
-        }
-        ~nesting() { --p_.depth_; }
-        nesting(const nesting&) = delete;
-        nesting& operator=(const nesting&) = delete;
-        parser& p_;
-    };
-
-    real unary() {
-        const nesting level(*this);
-        if (take("-")) {
-            emit(angle_token::kind::sign_minus);
-            return -unary();
-        }
-        if (take("+")) {
-            emit(angle_token::kind::sign_plus);
-            return unary();
-        }
-        return primary();
-    }
-
-    real primary() {
-        skip_space();
-        if (take("(")) {
-            emit(angle_token::kind::open);
-            const nesting level(*this);
-            real v = sum();
-            if (!take(")")) fail("missing ')'");
-            emit(angle_token::kind::close);
-            return v;
-        }
-        if (take("pi") || take("\u03c0")) {
-            emit(angle_token::kind::pi);
-            return mp::pi(bits_);
-        }
-        if (pos_ < text_.size() && lexer::number_start(text_[pos_])) return number();
-        if (pos_ == text_.size()) fail("incomplete expression");
-        fail("unexpected '" + std::string(text_.substr(pos_)) + "'");
-    }
-
-    real number() {
-        const std::size_t end = lexer::number_end(text_, pos_);
-        const std::string digits(text_.substr(pos_, end - pos_));
-        // A number has a digit before its exponent: ".e5" is no number.
-        const std::string mantissa = lexer::mantissa_of(digits);
-        if (!lexer::has_digit(mantissa)) fail("'" + digits + "' is not a number");
-        errno = 0;
-        const double rounded = std::strtod(digits.c_str(), nullptr);
-        if (errno == ERANGE && std::isinf(rounded)) fail("number " + digits + " is out of range");
-        real v(bits_);
-        mpfr_strtofr(v.get(), digits.c_str(), nullptr, 10, MPFR_RNDN);
-        pos_ = end;
-        if (tokens_) {
-            angle_token t{angle_token::kind::number, mantissa, {}, false};
-            if (mantissa.size() < digits.size()) {
-                std::string e = digits.substr(mantissa.size() + 1);
-                if (!e.empty() && (e[0] == '+' || e[0] == '-')) {
-                    t.negative_exponent = e[0] == '-';
-                    e.erase(0, 1);
-                }
-                e.erase(0, std::min(e.find_first_not_of('0'), e.size() - 1));
-                t.exponent = e;
-            }
-            tokens_->push_back(std::move(t));
-        }
-        return v;
-    }
-
     std::string_view text_;
-    std::vector<angle_token>* tokens_;
-    mpfr_prec_t bits_;
-    std::size_t pos_ = 0;
-    int depth_ = 0;
+    grammar::tree tree_;
 };
 
 /// Two evaluations, the second with twice the bits: where they round to different doubles,
@@ -244,8 +174,7 @@ bool equals(const real& x, double d) { return mpfr_cmp_d(x.get(), d) == 0; }
 /// another number (the rule for every number read: never a silent 0).
 void check_held(std::string_view text, const real& value) {
     if (!value.is_zero() && value.to_double() == 0) {
-        parser(text, working_bits)
-            .fail("its size is below the smallest double, 4.9406564584124654e-324, and it is not 0: a double "
+        angle_fail(text, 0, "its size is below the smallest double, 4.9406564584124654e-324, and it is not 0: a double "
                   "cannot hold it (write 0, or a larger value)");
     }
 }
@@ -254,15 +183,14 @@ void check_held(std::string_view text, const real& value) {
 /// that double is the value itself.
 double evaluate(std::string_view text, bool allow_units, bool* exact = nullptr) {
     if (const auto v = plain_value(text)) {
-        if (exact) *exact = equals(parser(text, working_bits).parse_all(allow_units), *v);
+        if (exact) *exact = equals(reading(text, allow_units).at(working_bits), *v);
         return *v;
     }
-    const real coarse = parser(text, working_bits).parse_all(allow_units);
-    const real fine = parser(text, 2 * working_bits).parse_all(allow_units);
+    const reading r(text, allow_units);
+    const real coarse = r.at(working_bits);
+    const real fine = r.at(2 * working_bits);
     check_held(text, fine);
-    if (coarse.to_double() != fine.to_double()) {
-        parser(text, working_bits).fail("it cancels beyond " + std::to_string(2 * working_bits) + " bits");
-    }
+    if (coarse.to_double() != fine.to_double()) r.fail("it cancels beyond " + std::to_string(2 * working_bits) + " bits");
     if (exact) *exact = equals(fine, fine.to_double());
     return fine.to_double();
 }
@@ -287,7 +215,7 @@ written_number written_number::expression(std::string_view text) { return parse(
 
 mp::real evaluate_written(const written_number& x, mpfr_prec_t bits) {
     if (x.text().empty() || x.exact_double()) return real(x.value(), bits);
-    return parser(x.text(), bits).parse_all(x.angle_units());
+    return reading(x.text(), x.angle_units()).at(bits);
 }
 
 double parse_angle(std::string_view text) { return evaluate(text, true); }
@@ -301,9 +229,10 @@ amplitude parse_amplitude(std::string_view text, std::string_view name) {
     }
     // 128 bits (checked against 256) for plain numbers and most expressions, the working
     // precision where those disagree: where they cancel, as pi - 1e-300 does.
+    const reading r(text, true);
     for (const mpfr_prec_t bits : {mpfr_prec_t{128}, working_bits}) {
-        const real coarse = parser(text, bits).parse_all(true);
-        const real fine = parser(text, 2 * bits).parse_all(true);
+        const real coarse = r.at(bits);
+        const real fine = r.at(2 * bits);
         const real d_coarse = mp::pi(bits) - coarse;
         const real d_fine = mp::pi(2 * bits) - fine;
         const double theta0 = fine.to_double();
@@ -316,7 +245,7 @@ amplitude parse_amplitude(std::string_view text, std::string_view name) {
             check_amplitude(theta0, name);
             check_amplitude(fine > 0.0 ? std::numbers::pi : 0.0, name);
         }
-        if (!agree) parser(text, bits).fail("it cancels beyond " + std::to_string(2 * bits) + " bits");
+        if (!agree) r.fail("it cancels beyond " + std::to_string(2 * bits) + " bits");
         check_held(text, fine);
         // A value that is a double ("3", "+1", "2/2") is that double, read as a plain number
         // is: one amplitude, whichever way it is written.
@@ -333,9 +262,44 @@ amplitude parse_amplitude(std::string_view text, std::string_view name) {
     throw domain_error("unreachable");  // the loop returns or throws at the working precision
 }
 
+namespace {
+
+/// The piece a lexeme is, for angle_tokens.
+angle_token token_of(const grammar::lexeme& l) {
+    using kind = angle_token::kind;
+    using lk = grammar::lexeme::kind;
+    const std::string_view t = l.text;
+    switch (l.type) {
+        case lk::name: return {kind::pi, {}, {}, false};
+        case lk::unit: return {t == "rad" ? kind::radians : kind::degrees, {}, {}, false};
+        case lk::sign: return {t == "-" ? kind::sign_minus : kind::sign_plus, {}, {}, false};
+        case lk::open: return {kind::open, {}, {}, false};
+        case lk::close: return {kind::close, {}, {}, false};
+        case lk::binary: return {t == "+" ? kind::plus : t == "-" ? kind::minus : t == "*" ? kind::times : kind::divide, {}, {}, false};
+        default: break;
+    }
+    angle_token n{kind::number, lexer::mantissa_of(t), {}, false};
+    if (n.mantissa.size() < t.size()) {
+        std::string e(t.substr(n.mantissa.size() + 1));
+        if (!e.empty() && (e[0] == '+' || e[0] == '-')) {
+            n.negative_exponent = e[0] == '-';
+            e.erase(0, 1);
+        }
+        e.erase(0, std::min(e.find_first_not_of('0'), e.size() - 1));
+        n.exponent = e;
+    }
+    return n;
+}
+
+}  // namespace
+
 std::vector<angle_token> angle_tokens(std::string_view text) {
+    std::vector<grammar::lexeme> lexemes;
+    const reading checked(text, true);
+    (void)checked.at(working_bits);  // refused as parse_angle refuses it
+    grammar::parse(text, angle_language, &lexemes);
     std::vector<angle_token> tokens;
-    parser(text, working_bits, &tokens).parse_all(true);
+    for (const auto& l : lexemes) tokens.push_back(token_of(l));
     return tokens;
 }
 

@@ -12,11 +12,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <random>
 #include <mutex>
 #include <ctime>
 #include <functional>
@@ -216,16 +218,39 @@ private:
     std::vector<descriptor> fds_;
 };
 
+/// Six characters for a temporary's name, as mkstemp's XXXXXX: letters and digits.
+std::string random_suffix() {
+    static std::atomic<std::uint64_t> counter{0};
+    constexpr std::string_view chars = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+    std::uint64_t x = (static_cast<std::uint64_t>(std::random_device{}()) << 32) ^
+                      static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+                      (counter.fetch_add(1) * 0x9e3779b97f4a7c15ULL);
+    std::string out;
+    for (int i = 0; i < 6; ++i) {
+        out += chars[x % chars.size()];
+        x /= chars.size();
+    }
+    return out;
+}
+
 /// Creates the temporary for `path`, which check_existing_output has found fit, beside it
-/// with O_EXCL (mkstemp): a new file no one else has, whatever stands at `path`. fd is the
+/// with O_EXCL: a new file no one else has, whatever stands at `path`. fd is the
 /// open descriptor.
 prepared_file open_for(const fs::path& path, int& fd, struct stat& st, bool& exists) {
     exists = check_existing_output(path, st);
     const fs::path dir = directory_of(path);
     remove_stale_temporaries(dir, path);
-    std::string temp = (dir / (temp_stem(path) + "XXXXXX")).string();
-    fd = ::mkstemp(temp.data());
-    if (fd < 0) fail(path, errno);
+    fd = -1;
+    std::string temp;
+    // As mkstemp does, but with the mode a new file gets (0666 less the umask, which the
+    // kernel applies: the umask is never read, so never set to read it); a temporary that
+    // replaces a file is private (0600) until close_written gives it the file's mode.
+    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+        temp = (dir / (temp_stem(path) + random_suffix())).string();
+        fd = ::open(temp.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, exists ? 0600 : 0666);
+        if (fd < 0 && errno != EEXIST) fail(path, errno);
+    }
+    if (fd < 0) fail(path, EEXIST);
     return {path, std::move(temp)};
 }
 
@@ -243,14 +268,9 @@ std::atomic<durable_batch*> open_batch{nullptr};
 /// Ends the writing of fd: the temporary gets the mode (and owner) of the file it replaces
 /// and is on disk (unless a batch syncs it later), closed.
 void close_written(prepared_file& f, int fd, const struct stat& st, bool exists) {
-    // An existing file keeps its mode (and owner, where we may set it); a new one gets the
-    // usual 0666 less the umask, which is read once: reading it means setting it.
-    static const mode_t mask = [] {
-        const mode_t m = ::umask(022);
-        ::umask(m);
-        return m;
-    }();
-    if (::fchmod(fd, exists ? (st.st_mode & 07777) : (0666 & ~mask)) != 0) give_up(f, fd, errno);
+    // An existing file keeps its mode (and owner, where we may set it); a new one has the
+    // mode open_for created it with.
+    if (exists && ::fchmod(fd, st.st_mode & 07777) != 0) give_up(f, fd, errno);
     if (exists && (st.st_uid != ::geteuid() || st.st_gid != ::getegid())) {
         if (::fchown(fd, st.st_uid, st.st_gid) != 0 && errno != EPERM) give_up(f, fd, errno);
     }

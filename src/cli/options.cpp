@@ -320,8 +320,6 @@ plot::theme chosen_theme(const std::string& name, const std::vector<std::string>
         return figures::load_theme(name, sets);
     } catch (const figures::spec_error& e) {
         throw usage_error(std::string("bad theme:\n") + e.what());
-    } catch (const std::runtime_error& e) {
-        throw usage_error(e.what());
     }
 }
 

@@ -4,7 +4,6 @@
 #include "figures/errors.hpp"
 
 #include <fstream>
-#include <stdexcept>
 #include <system_error>
 
 namespace figures {
@@ -24,11 +23,11 @@ std::string read_input_file(const std::filesystem::path& path, std::string_view 
                         std::to_string(max_input_file_bytes));
     }
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read " + named);
+    if (!in) throw bad_input("cannot read " + named);
     // Read one byte past the limit: a file that grew since it was measured is refused too.
     std::string text(max_input_file_bytes + 1, '\0');
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    if (in.bad()) throw std::runtime_error("cannot read " + named);
+    if (in.bad()) throw bad_input("cannot read " + named);
     text.resize(static_cast<std::size_t>(in.gcount()));
     if (text.size() > max_input_file_bytes) {
         throw bad_input(named + " has more than " + std::to_string(max_input_file_bytes) + " bytes");

@@ -22,8 +22,6 @@ entry load_input(std::string_view id_or_file) {
         e = load(id_or_file);
     } catch (const spec_error& err) {
         throw bad_input(std::string("bad figure spec:\n") + err.what());
-    } catch (const std::runtime_error& err) {
-        throw bad_input(err.what());
     }
     // Built once, as data and describe build it: refused before any work if too costly.
     check_cost({costed_figure{&e, 0, {"svg"}, 0}}, {});

@@ -63,11 +63,14 @@ std::string shown_text(std::string_view text) {
 }
 
 /// "invalid value 'TEXT': why; what is allowed" (a long value shown by its ends).
-[[noreturn]] void angle_fail(std::string_view text, std::size_t /*at*/, const std::string& why) {
+std::string angle_message(std::string_view text, std::size_t /*at*/, const std::string& why) {
     const std::string shown = text.size() <= 80 ? shown_text(text)
                                                 : shown_text(text.substr(0, 40)) + "..." + shown_text(text.substr(text.size() - 20));
-    throw domain_error("invalid value '" + shown + "': " + why + "; " + std::string(allowed));
+    return "invalid value '" + shown + "': " + why + "; " + std::string(allowed);
 }
+
+/// Refuses an angle's text with why.
+[[noreturn]] void angle_fail(std::string_view text, const std::string& why) { throw domain_error(angle_message(text, 0, why)); }
 
 constexpr std::array<grammar::name_row, 2> angle_names = {{{"pi", op::pi}, {"\u03c0", op::pi}}};
 
@@ -94,7 +97,7 @@ constexpr grammar::language number_language{
     .nesting = "parentheses and signs",
     .empty = "empty value",
     .functions_note = "",
-    .fail = angle_fail,
+    .message = angle_message,
     .constant = nullptr,
 };
 
@@ -126,12 +129,12 @@ real evaluate_tree(std::string_view text, const grammar::tree& t, mpfr_prec_t bi
         real b = std::move(stack.back());
         stack.pop_back();
         real& a = stack.back();
-        if (n.what == op::div && b.is_zero()) angle_fail(text, 0, "division by zero");
+        if (n.what == op::div && b.is_zero()) angle_fail(text, "division by zero");
         a = n.what == op::add ? a + b : n.what == op::sub ? a - b : n.what == op::mul ? a * b : a / b;
     }
     real v = std::move(stack.back());
     if (t.what == grammar::unit::degrees) v = v / 180.0 * mp::pi(bits);
-    if (!std::isfinite(v.to_double())) angle_fail(text, 0, "value is not finite");
+    if (!std::isfinite(v.to_double())) angle_fail(text, "value is not finite");
     return v;
 }
 
@@ -140,7 +143,7 @@ class reading {
 public:
     reading(std::string_view text, bool units) : text_(text), tree_(grammar::parse(text, language_of(units))) {}
     real at(mpfr_prec_t bits) const { return evaluate_tree(text_, tree_, bits); }
-    [[noreturn]] void fail(const std::string& why) const { angle_fail(text_, 0, why); }
+    [[noreturn]] void fail(const std::string& why) const { angle_fail(text_, why); }
 
 private:
     std::string_view text_;
@@ -174,7 +177,7 @@ bool equals(const real& x, double d) { return mpfr_cmp_d(x.get(), d) == 0; }
 /// another number (the rule for every number read: never a silent 0).
 void check_held(std::string_view text, const real& value) {
     if (!value.is_zero() && value.to_double() == 0) {
-        angle_fail(text, 0, "its size is below the smallest double, 4.9406564584124654e-324, and it is not 0: a double "
+        angle_fail(text, "its size is below the smallest double, 4.9406564584124654e-324, and it is not 0: a double "
                   "cannot hold it (write 0, or a larger value)");
     }
 }

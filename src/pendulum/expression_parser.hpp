@@ -79,8 +79,8 @@ struct language {
     std::string_view nesting;                 ///< what a level of nesting is, for the message
     std::string_view empty;                   ///< the message for an empty text
     std::string_view functions_note;          ///< said after the list of functions, or empty
-    /// The whole message for `why` at byte `at` of `text` (throws domain_error).
-    [[noreturn]] void (*fail)(std::string_view text, std::size_t at, const std::string& why);
+    /// The whole message for `why` at byte `at` of `text`, which the parser throws as a domain_error.
+    std::string (*message)(std::string_view text, std::size_t at, const std::string& why);
     /// The double value of a constant node (an order_first argument); null where no row needs it.
     double (*constant)(const std::vector<formula_node>& nodes, int i);
 };
@@ -100,7 +100,7 @@ struct tree {
     bool uses_t = false;              ///< a name reading as op::t occurs
 };
 
-/// Reads `text` in `lang`; throws domain_error through lang.fail. Where `lexemes` is given,
+/// Reads `text` in `lang`; throws domain_error with lang.message. Where `lexemes` is given,
 /// the pieces are recorded there in order.
 tree parse(std::string_view text, const language& lang, std::vector<lexeme>* lexemes = nullptr);
 

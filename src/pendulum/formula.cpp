@@ -39,12 +39,12 @@ constexpr std::array<grammar::operator_row, 5> operators = {{
 }};
 
 /// "formula:1:COLUMN: why": the column counts characters from 1.
-[[noreturn]] void formula_fail(std::string_view text, std::size_t at, const std::string& why) {
+std::string formula_message(std::string_view text, std::size_t at, const std::string& why) {
     std::size_t column = 1;
     for (std::size_t i = 0; i < at && i < text.size(); ++i) {
         if ((static_cast<unsigned char>(text[i]) & 0xc0) != 0x80) ++column;
     }
-    throw domain_error("formula:1:" + std::to_string(column) + ": " + why);
+    return "formula:1:" + std::to_string(column) + ": " + why;
 }
 
 double node_value(const std::vector<formula_node>& nodes, int i, double theta0, double t);
@@ -65,7 +65,7 @@ const grammar::language formula_language{
     .nesting = "parentheses, calls, signs and exponents",
     .empty = "empty formula; write T/T0 in theta0, e.g. 1/sqrt(cos(theta0/2))",
     .functions_note = "(ellipk and ellipe take the parameter m = k^2)",
-    .fail = formula_fail,
+    .message = formula_message,
     .constant = constant_value,
 };
 

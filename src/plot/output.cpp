@@ -27,6 +27,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <regex>
 #include <unordered_map>
@@ -323,8 +324,8 @@ void rgb_pass(const rgb24_pixels& im, png_rows out) {
 }
 
 /// The PNG file: signature, IHDR, PLTE (if any), pHYs, the rows deflated (a zlib stream,
-/// libdeflate's) in one IDAT chunk, IEND. The rows are deflated straight into the file's
-/// bytes: a worker holds the raster, the rows and the file (raster_bytes_per_pixel).
+/// libdeflate's) in one IDAT chunk, IEND. A worker holds the raster, the rows, and the
+/// deflated rows twice (raster_bytes_per_pixel: deflated line art is small).
 std::string png_file(const std::vector<unsigned char>& rows, int width, int height, int color_type,
                      const std::vector<unsigned char>& palette, std::uint32_t pixels_per_metre) {
     libdeflate_compressor* const compressor = thread_compressor();
@@ -340,17 +341,13 @@ std::string png_file(const std::vector<unsigned char>& rows, int width, int heig
     append_be32(phys, pixels_per_metre);
     phys += '\1';  // the metre
     append_chunk(out, "pHYs", reinterpret_cast<const unsigned char*>(phys.data()), phys.size());
-    const std::size_t at = out.size(), bound = libdeflate_zlib_compress_bound(compressor, rows.size());
-    out.resize(at + 8 + bound);
-    auto* idat = reinterpret_cast<unsigned char*>(out.data()) + at + 8;
-    const std::size_t deflated = libdeflate_zlib_compress(compressor, rows.data(), rows.size(), idat, bound);
+    const std::size_t bound = libdeflate_zlib_compress_bound(compressor, rows.size());
+    // Not zeroed: only the pages the deflated bytes reach are touched.
+    const auto idat = std::make_unique_for_overwrite<unsigned char[]>(bound);
+    const std::size_t deflated = libdeflate_zlib_compress(compressor, rows.data(), rows.size(), idat.get(), bound);
     // A chunk has less than 2^31 bytes: the largest raster (max_raster_pixels, RGB) deflates to less.
     if (deflated == 0 || deflated > max_chunk_bytes) throw std::runtime_error("cannot encode PNG");
-    out.resize(at + 8 + deflated);
-    std::string length;
-    append_be32(length, static_cast<std::uint32_t>(deflated));
-    out.replace(at, 8, length + "IDAT");
-    append_be32(out, libdeflate_crc32(0, out.data() + at + 4, 4 + deflated));
+    append_chunk(out, "IDAT", idat.get(), deflated);
     append_chunk(out, "IEND", nullptr, 0);
     return out;
 }

@@ -9,6 +9,7 @@
 #include "plot/frames.hpp"
 #include "plot/output.hpp"
 #include "plot/text.hpp"
+#include "plot/workers.hpp"
 #include "png_image.hpp"
 #include "process.hpp"
 
@@ -16,10 +17,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
 #include <set>
 #include <string>
 #include <vector>
@@ -278,4 +283,59 @@ TEST(CatalogAltText, TheSameBeforeAndAfterTheDrawing) {
     EXPECT_EQ(before.alt, after.alt);
     EXPECT_EQ(before.text, after.text);
     EXPECT_NE(before.text.find("Leaving"), std::string::npos) << before.text;
+}
+
+TEST(CatalogThreads, ParallelForRunsEachOnceWithinTheLimit) {
+    for (unsigned limit : {1u, 2u, 3u}) {
+        plot::set_thread_limit(limit);
+        std::mutex lock;
+        int running = 0, most = 0;
+        std::vector<int> runs(12, 0);
+        plot::parallel_for(runs.size(), [&](std::size_t i) {
+            {
+                const std::lock_guard hold(lock);
+                most = std::max(most, ++running);
+                ++runs[i];
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(30));
+            const std::lock_guard hold(lock);
+            --running;
+        });
+        EXPECT_EQ(runs, std::vector<int>(12, 1));
+        // The calling thread counts as one: `limit` threads at most, and here all of them.
+        EXPECT_EQ(most, static_cast<int>(limit)) << limit;
+    }
+    plot::set_thread_limit(0);
+}
+
+TEST(CatalogThreads, ParallelForRethrowsTheError) {
+    plot::set_thread_limit(2);
+    EXPECT_THROW(plot::parallel_for(8, [](std::size_t i) {
+                     if (i == 3) throw std::runtime_error("three");
+                 }),
+                 std::runtime_error);
+    plot::parallel_for(0, [](std::size_t) { ADD_FAILURE() << "no index"; });
+    plot::set_thread_limit(0);
+}
+
+TEST(CatalogThreads, ConvergenceIsTheSameOnAnyNumberOfThreads) {
+    const auto one = run_command(std::string("PENDULUM_FIGURES_JOBS=1 ") + PENDULUM_EXE + " data convergence");
+    const auto two = run_command(std::string("PENDULUM_FIGURES_JOBS=2 ") + PENDULUM_EXE + " data convergence");
+    const auto most = run_command(std::string("PENDULUM_FIGURES_JOBS=1024 ") + PENDULUM_EXE + " data convergence");
+    ASSERT_EQ(one.status, 0) << one.err;
+    EXPECT_GT(one.out.size(), 1000u);
+    EXPECT_EQ(one.out, two.out);
+    EXPECT_EQ(one.out, most.out);
+    const auto over = run_command(std::string("PENDULUM_FIGURES_JOBS=1025 ") + PENDULUM_EXE + " data convergence");
+    EXPECT_EQ(over.status, 2);
+    EXPECT_NE(over.err.find("PENDULUM_FIGURES_JOBS='1025': the number of workers, 1 to 1024"), std::string::npos) << over.err;
+    const auto dir = temp_dir("catalog-convergence");
+    for (const char* jobs : {"1", "2"}) {
+        std::filesystem::create_directories(dir / jobs);
+        const auto r = run_cli(std::string("render convergence -f pdf,png --dpi 100 --force --jobs ") + jobs + " -o " +
+                               (dir / jobs).string());
+        ASSERT_EQ(r.status, 0) << r.err;
+    }
+    EXPECT_EQ(slurp(dir / "1/convergence.pdf"), slurp(dir / "2/convergence.pdf"));
+    EXPECT_EQ(slurp(dir / "1/convergence.png"), slurp(dir / "2/convergence.png"));
 }

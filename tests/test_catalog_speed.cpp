@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -289,16 +290,19 @@ TEST(CatalogThreads, ParallelForRunsEachOnceWithinTheLimit) {
     for (unsigned limit : {1u, 2u, 3u}) {
         plot::set_thread_limit(limit);
         std::mutex lock;
+        std::condition_variable all_in;
         int running = 0, most = 0;
         std::vector<int> runs(12, 0);
         plot::parallel_for(runs.size(), [&](std::size_t i) {
-            {
-                const std::lock_guard hold(lock);
-                most = std::max(most, ++running);
-                ++runs[i];
-            }
-            std::this_thread::sleep_for(std::chrono::milliseconds(30));
-            const std::lock_guard hold(lock);
+            std::unique_lock hold(lock);
+            most = std::max(most, ++running);
+            ++runs[i];
+            all_in.notify_all();
+            // Waits a while for the other threads, so that all of them run at once.
+            all_in.wait_for(hold, std::chrono::seconds(5), [&] { return most >= static_cast<int>(limit); });
+            hold.unlock();
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            hold.lock();
             --running;
         });
         EXPECT_EQ(runs, std::vector<int>(12, 1));

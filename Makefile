@@ -36,7 +36,7 @@ endif
 # Debian packages needed to build and test. GoogleTest and Google Benchmark are listed too,
 # so that a machine without them gets them the same way.
 DEB_PACKAGES := g++ cmake make pkgconf
-DEB_PACKAGES += libgsl-dev libmpfr-dev libcairo2-dev libpango1.0-dev libcli11-dev libpng-dev
+DEB_PACKAGES += libgsl-dev libmpfr-dev libcairo2-dev libpango1.0-dev libcli11-dev libpng-dev libdeflate-dev
 DEB_PACKAGES += libgtest-dev libbenchmark-dev
 DEB_PACKAGES += libtomlplusplus-dev libgif-dev
 # FFmpeg's libraries for -f mp4 and -f webm; ffmpeg's ffprobe and ffmpeg read them in the tests.

@@ -10,12 +10,14 @@
 #include "figures/render_cost.hpp"
 #include "figures/render_plan.hpp"
 #include "plot/output.hpp"
+#include "plot/workers.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -93,6 +95,8 @@ command add_data_command(CLI::App& app) {
                 "  pendulum-figures data period -f json -o period.json");
 
     return {cmd, [o] {
+                // The threads a figure's numbers may take: PENDULUM_FIGURES_JOBS, else the CPUs.
+                plot::set_thread_limit(chosen_jobs(std::nullopt));
                 std::string file = o->file == "-" ? "" : o->file;  // - is standard output
                 if (!file.empty()) {
                     // Where the file goes is checked before the work, as render checks its outputs.

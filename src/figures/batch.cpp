@@ -141,6 +141,7 @@ public:
             std::exception_ptr error;
             std::string warnings;  // what the layout left out, said once the lock is held
             try {
+                const plot::thread_slot slot;  // the --jobs limit, shared with a figure's own threads
                 figure = run(t, warnings);
             } catch (...) {
                 error = std::current_exception();
@@ -206,6 +207,7 @@ private:
 void write_figures(const std::vector<figure_file>& files, const build_options& options, const plot::theme& theme,
                    const plot::output_options& output) {
     figure_queue queue(files, options, theme, output);
+    plot::set_thread_limit(output.jobs);
     // As many workers as there are files, or CPUs, or rasters that fit the memory budget.
     const unsigned workers = plot::workers_within_budget(plot::worker_count(output.jobs, files.size()),
                                                          largest_raster_bytes(files, options, theme, output));

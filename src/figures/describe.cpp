@@ -287,7 +287,7 @@ std::string curves_words(const panel_words& w) {
 /// else between its points (sorted by x); none outside them.
 std::optional<double> y_of(const plot::series& s, const std::vector<std::pair<double, double>>& sorted, double x) {
     if (s.curve && x >= s.curve->u0 && x <= s.curve->u1) {
-        const auto [cx, cy] = s.curve->at(x);
+        const auto [cx, cy] = plot::curve_at(*s.curve, x);  // through the memo: dense() and the drawing evaluated most
         if (cx == x && std::isfinite(cy)) return cy;
     }
     return value_at(sorted, x);

@@ -5,11 +5,13 @@
 #include "figures/panel_support.hpp"
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
+#include "plot/workers.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 namespace figures {
 
@@ -27,11 +29,16 @@ plot::panel convergence_panel(const panel_context&, const panel_spec& p) {
     // The limits follow the data: the errors are right far below the doubles' rounding.
     panel.y.round_limits = true;
     panel.y.max_ticks = 9;
+    // Every level with MPFR: each drawn error is right to 1e-12 relative; levels without a
+    // period (close to pi) and errors below the axis are gaps. The amplitudes are
+    // independent: each on a free core (--jobs), the same numbers on any.
+    std::vector<std::vector<pendulum::period_error>> errors(p.theta0.size());
+    plot::parallel_for(errors.size(), [&](std::size_t i) {
+        errors[i] = pendulum::iterated_period_errors(p.theta0[i].theta0(), p.orders[1], 1e-300);
+    });
     for (std::size_t i = 0; i < p.theta0.size(); ++i) {
         const amplitude& a = p.theta0[i];
-        // Every level with MPFR: each drawn error is right to 1e-12 relative; levels without a
-        // period (close to pi) and errors below the axis are gaps.
-        const auto levels = pendulum::iterated_period_errors(a.theta0(), p.orders[1], 1e-300);
+        const auto& levels = errors[i];
         const series_style st = amplitude_style(i, std::string(theta0_markup) + " = " + typeset_angle(a.text));
         plot::series s = series_of(st);
         for (int n = p.orders[0]; n <= p.orders[1]; ++n) {

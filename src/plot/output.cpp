@@ -14,9 +14,9 @@
 #include <cairo-pdf.h>
 #include <cairo-ps.h>
 #include <cairo-svg.h>
-#include <png.h>
-#include <zlib.h>
+#include <libdeflate.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -27,6 +27,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <regex>
 #include <unordered_map>
@@ -200,53 +201,40 @@ std::string fix_eps_date(const std::string& eps) {
     return eps.substr(0, start) + line + (end == std::string::npos ? "" : eps.substr(end + 1));
 }
 
-struct png_sink {
-    std::string bytes;
-    bool out_of_memory = false;
+/// libdeflate's compressor, freed at the thread's end.
+struct deflate_compressor_free {
+    void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
 };
 
-void png_write_bytes(png_structp png, png_bytep data, png_size_t length) {
-    // No exception may cross libpng's C frames: a failure is libpng's own error (a longjmp).
-    // The longjmp comes after the handler has ended: jumping out of a catch handler would
-    // leave the exception alive, which is undefined behaviour.
-    auto* sink = static_cast<png_sink*>(png_get_io_ptr(png));
-    try {
-        sink->bytes.append(reinterpret_cast<const char*>(data), length);
-    } catch (const std::bad_alloc&) {
-        sink->out_of_memory = true;
-    }
-    if (sink->out_of_memory) png_error(png, "out of memory");
+/// The calling thread's compressor (made once a thread: it holds its tables). Level 1: on
+/// the figures' line art it makes PNGs 12-25 % smaller than zlib's run-length deflate did,
+/// in about half its instructions; level 6 is 4-9 % smaller again in twice level 1's
+/// instructions. Rows are not filtered: its matches find a coloured background's runs of
+/// three-byte pixels (Sub filtering them made the dark theme's PNGs 22 % larger).
+libdeflate_compressor* thread_compressor() {
+    thread_local const std::unique_ptr<libdeflate_compressor, deflate_compressor_free> c(libdeflate_alloc_compressor(1));
+    if (!c) throw std::bad_alloc();
+    return c.get();
 }
 
-void png_flush_nothing(png_structp) {}
-
-/// Encodes rows with libpng. Kept free of C++ objects with destructors because libpng reports
-/// errors by longjmp. Returns false on failure.
-bool encode_png(png_sink* sink, png_bytepp rows, png_uint_32 width, png_uint_32 height, int color_type,
-                int filter, png_colorp palette, int palette_size, png_uint_32 pixels_per_metre) {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    if (!png) return false;
-    png_infop info = png_create_info_struct(png);
-    if (!info || setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        return false;
-    }
-    png_set_write_fn(png, sink, png_write_bytes, png_flush_nothing);
-    // Line art is long runs of one value: run-length deflate is several times faster than
-    // the default settings. It finds runs of one byte only, so rows are filtered to them.
-    png_set_compression_level(png, 6);
-    png_set_compression_strategy(png, Z_RLE);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, filter);
-    png_set_IHDR(png, info, width, height, 8, color_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
-                 PNG_FILTER_TYPE_BASE);
-    if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_PLTE(png, info, palette, palette_size);
-    png_set_pHYs(png, info, pixels_per_metre, pixels_per_metre, PNG_RESOLUTION_METER);
-    png_write_info(png, info);
-    png_write_image(png, rows);
-    png_write_end(png, info);
-    png_destroy_write_struct(&png, &info);
-    return true;
+/// Appends `v` as four big-endian bytes.
+void append_be32(std::string& out, std::uint32_t v) {
+    const char b[4] = {static_cast<char>(v >> 24), static_cast<char>(v >> 16), static_cast<char>(v >> 8),
+                       static_cast<char>(v)};
+    out.append(b, 4);
 }
+
+/// Appends a PNG chunk: its length, type, data and the CRC of type and data.
+void append_chunk(std::string& out, const char (&type)[5], const unsigned char* data, std::size_t size) {
+    append_be32(out, static_cast<std::uint32_t>(size));
+    const std::size_t start = out.size();
+    out.append(type, 4);
+    if (size) out.append(reinterpret_cast<const char*>(data), size);
+    append_be32(out, libdeflate_crc32(0, out.data() + start, 4 + size));
+}
+
+/// The most bytes a PNG chunk holds.
+constexpr std::size_t max_chunk_bytes = 0x7fffffff;
 
 /// Cairo's RGB24 pixels, `stride` bytes a row, as the PNG passes read them.
 struct rgb24_pixels {
@@ -260,44 +248,57 @@ struct rgb24_pixels {
     std::uint32_t pixel(int x, int y) const { return row(y)[x] & 0xffffffu; }
 };
 
+/// PNG's rows as they are compressed: each a filter byte, then `row_bytes` of pixels.
+struct png_rows {
+    std::vector<unsigned char>& bytes;
+    std::size_t row_bytes;
+    /// Row y's pixels (its filter byte, None, is set here).
+    unsigned char* row(int y) {
+        unsigned char* r = bytes.data() + static_cast<std::size_t>(y) * (row_bytes + 1);
+        r[0] = 0;
+        return r + 1;
+    }
+};
+
 /// The grey pass: each pixel's blue byte into `out`; false at the first row with a pixel
 /// that is not grey.
-bool grey_pass(const rgb24_pixels& im, std::vector<png_byte>& out) {
+bool grey_pass(const rgb24_pixels& im, png_rows out) {
     for (int y = 0; y < im.height; ++y) {
         // A whole row at a time, without a branch per pixel (the compiler vectorises it).
         const std::uint32_t* src = im.row(y);
-        png_bytep dst = out.data() + static_cast<std::size_t>(y) * im.width;
+        unsigned char* dst = out.row(y);
         std::uint32_t off_grey = 0;
         for (int x = 0; x < im.width; ++x) {
             const std::uint32_t p = src[x] & 0xffffffu;
             const std::uint32_t b = p & 0xff;
             off_grey |= p ^ (b * 0x010101u);
-            dst[x] = static_cast<png_byte>(b);
+            dst[x] = static_cast<unsigned char>(b);
         }
         if (off_grey != 0) return false;
     }
     return true;
 }
 
-/// The palette pass: each pixel's index into `out` and its colour into `palette`; false at
-/// the first pixel past 256 colours.
-bool palette_pass(const rgb24_pixels& im, std::vector<png_byte>& out, std::vector<png_color>& palette) {
-    std::unordered_map<std::uint32_t, png_byte> index;
+/// The palette pass: each pixel's index into `out` and its colour (three bytes) into
+/// `palette`; false at the first pixel past 256 colours.
+bool palette_pass(const rgb24_pixels& im, png_rows out, std::vector<unsigned char>& palette) {
+    std::unordered_map<std::uint32_t, unsigned char> index;
     // Line art is runs of one colour: a pixel like the one before needs no lookup
     // (`last` starts as no pixel: pixels have 24 bits).
     std::uint32_t last = 0xffffffffu;
-    png_byte last_index = 0;
+    unsigned char last_index = 0;
     for (int y = 0; y < im.height; ++y) {
-        png_bytep dst = out.data() + static_cast<std::size_t>(y) * im.width;
+        unsigned char* dst = out.row(y);
         for (int x = 0; x < im.width; ++x) {
             const std::uint32_t p = im.pixel(x, y);
             if (p != last) {
                 auto it = index.find(p);
                 if (it == index.end()) {
-                    if (palette.size() == 256) return false;
-                    it = index.emplace(p, static_cast<png_byte>(palette.size())).first;
-                    palette.push_back(png_color{static_cast<png_byte>(p >> 16), static_cast<png_byte>((p >> 8) & 0xff),
-                                                static_cast<png_byte>(p & 0xff)});
+                    if (index.size() == 256) return false;
+                    it = index.emplace(p, static_cast<unsigned char>(index.size())).first;
+                    palette.insert(palette.end(), {static_cast<unsigned char>(p >> 16),
+                                                   static_cast<unsigned char>((p >> 8) & 0xff),
+                                                   static_cast<unsigned char>(p & 0xff)});
                 }
                 last = p;
                 last_index = it->second;
@@ -309,61 +310,72 @@ bool palette_pass(const rgb24_pixels& im, std::vector<png_byte>& out, std::vecto
 }
 
 /// The RGB pass: three bytes a pixel into `out`.
-void rgb_pass(const rgb24_pixels& im, std::vector<png_byte>& out) {
-    out.resize(static_cast<std::size_t>(im.width) * im.height * 3);
+void rgb_pass(const rgb24_pixels& im, png_rows out) {
+    out.bytes.resize(static_cast<std::size_t>(im.height) * (out.row_bytes + 1));
     for (int y = 0; y < im.height; ++y) {
-        png_bytep dst = out.data() + static_cast<std::size_t>(y) * im.width * 3;
+        unsigned char* dst = out.row(y);
         for (int x = 0; x < im.width; ++x) {
             const std::uint32_t p = im.pixel(x, y);
-            dst[3 * x] = static_cast<png_byte>(p >> 16);
-            dst[3 * x + 1] = static_cast<png_byte>((p >> 8) & 0xff);
-            dst[3 * x + 2] = static_cast<png_byte>(p & 0xff);
+            dst[3 * x] = static_cast<unsigned char>(p >> 16);
+            dst[3 * x + 1] = static_cast<unsigned char>((p >> 8) & 0xff);
+            dst[3 * x + 2] = static_cast<unsigned char>(p & 0xff);
         }
     }
 }
 
-/// The row filter for run-length deflate, which finds runs of one byte: none where the
-/// background is such runs already (a pixel of one byte, grey or a palette index, or RGB of
-/// three equal bytes, as white and grey are); Sub for RGB on a coloured background (the dark
-/// themes' #1e1e28), whose runs of one colour it turns into runs of zeros.
-int png_row_filter(int color_type, const rgb24_pixels& im) {
-    if (color_type != PNG_COLOR_TYPE_RGB || im.width < 1 || im.height < 1) return PNG_FILTER_NONE;
-    const std::uint32_t corner = im.pixel(0, 0);  // the page's background
-    const std::uint32_t b = corner & 0xff;
-    return corner == b * 0x010101u ? PNG_FILTER_NONE : PNG_FILTER_SUB;
+/// The PNG file: signature, IHDR, PLTE (if any), pHYs, the rows deflated (a zlib stream,
+/// libdeflate's) in one IDAT chunk, IEND. A worker holds the raster, the rows, and the
+/// deflated rows twice (raster_bytes_per_pixel: deflated line art is small).
+std::string png_file(const std::vector<unsigned char>& rows, int width, int height, int color_type,
+                     const std::vector<unsigned char>& palette, std::uint32_t pixels_per_metre) {
+    libdeflate_compressor* const compressor = thread_compressor();
+    std::string out("\x89PNG\r\n\x1a\n", 8);
+    std::string header;
+    append_be32(header, static_cast<std::uint32_t>(width));
+    append_be32(header, static_cast<std::uint32_t>(height));
+    header += {8, static_cast<char>(color_type), 0, 0, 0};  // 8 bits, deflate, adaptive filters, no interlace
+    append_chunk(out, "IHDR", reinterpret_cast<const unsigned char*>(header.data()), header.size());
+    if (!palette.empty()) append_chunk(out, "PLTE", palette.data(), palette.size());
+    std::string phys;
+    append_be32(phys, pixels_per_metre);
+    append_be32(phys, pixels_per_metre);
+    phys += '\1';  // the metre
+    append_chunk(out, "pHYs", reinterpret_cast<const unsigned char*>(phys.data()), phys.size());
+    const std::size_t bound = libdeflate_zlib_compress_bound(compressor, rows.size());
+    // Not zeroed: only the pages the deflated bytes reach are touched.
+    const auto idat = std::make_unique_for_overwrite<unsigned char[]>(bound);
+    const std::size_t deflated = libdeflate_zlib_compress(compressor, rows.data(), rows.size(), idat.get(), bound);
+    // A chunk has less than 2^31 bytes: the largest raster (max_raster_pixels, RGB) deflates to less.
+    if (deflated == 0 || deflated > max_chunk_bytes) throw std::runtime_error("cannot encode PNG");
+    append_chunk(out, "IDAT", idat.get(), deflated);
+    append_chunk(out, "IEND", nullptr, 0);
+    return out;
 }
+
+/// PNG's colour types.
+constexpr int png_grey = 0, png_rgb = 2, png_palette = 3;
 
 /// The PNG of width x height pixels of Cairo's RGB24, `stride` bytes a row, drawn at dpi;
 /// `pixels` holds the rows to encode.
 std::string png_of(const unsigned char* data, int stride, int width, int height, double dpi,
-                   std::vector<png_byte>& pixels) {
+                   std::vector<unsigned char>& pixels) {
     // The smallest exact pixel format: grey (the paper theme), a palette of at most 256
     // colours, or RGB. Each attempt is one pass that stops at the first pixel (the grey
     // one: row) it cannot hold.
     const rgb24_pixels im{data, stride, width, height};
-    pixels.resize(static_cast<std::size_t>(width) * height);
-    int color_type = PNG_COLOR_TYPE_GRAY;
-    int channels = 1;
-    std::vector<png_color> palette;
-    if (!grey_pass(im, pixels)) {
-        color_type = PNG_COLOR_TYPE_PALETTE;
-        if (!palette_pass(im, pixels, palette)) {
-            color_type = PNG_COLOR_TYPE_RGB;
-            channels = 3;
+    const auto w = static_cast<std::size_t>(width);
+    pixels.resize(static_cast<std::size_t>(height) * (w + 1));
+    int color_type = png_grey;
+    std::vector<unsigned char> palette;
+    if (!grey_pass(im, {pixels, w})) {
+        color_type = png_palette;
+        if (!palette_pass(im, {pixels, w}, palette)) {
+            color_type = png_rgb;
             palette.clear();
-            rgb_pass(im, pixels);
+            rgb_pass(im, {pixels, 3 * w});
         }
     }
-    std::vector<png_bytep> rows(height);
-    for (int y = 0; y < height; ++y) rows[y] = pixels.data() + static_cast<std::size_t>(y) * width * channels;
-    png_sink sink;
-    const auto ppm = static_cast<png_uint_32>(std::lround(dpi / 0.0254));
-    if (!encode_png(&sink, rows.data(), width, height, color_type, png_row_filter(color_type, im), palette.data(),
-                    static_cast<int>(palette.size()), ppm)) {
-        if (sink.out_of_memory) throw std::bad_alloc();
-        throw std::runtime_error("cannot encode PNG");
-    }
-    return std::move(sink.bytes);
+    return png_file(pixels, width, height, color_type, palette, static_cast<std::uint32_t>(std::lround(dpi / 0.0254)));
 }
 
 std::string render_png(const figure& fig, const theme& th, double dpi) {
@@ -378,7 +390,7 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
         cairo_image_surface_create_for_data(memory.data(), CAIRO_FORMAT_RGB24, width, height, stride));
     draw_on(surface.get(), fig, th, size, scale, "png");
     cairo_surface_flush(surface.get());
-    std::vector<png_byte> pixels;
+    std::vector<unsigned char> pixels;
     return png_of(memory.data(), stride, width, height, dpi, pixels);
 }
 

@@ -26,6 +26,10 @@ namespace plot {
 /// every machine. Font maps are not shared between threads.
 PangoFontMap* thread_font_map();
 
+/// The font directories of that configuration, as fontconfig lists them: the machine's and
+/// the user's font directories (read from their fontconfig files, not their settings).
+std::vector<std::string> private_font_directories();
+
 /// True if Pango, in `context`, loads the first family of the comma-separated
 /// `font_family` as that very family (fontconfig substitutes another for a missing one).
 bool first_family_resolves(PangoContext* context, const std::string& font_family);

@@ -3,6 +3,7 @@
 // How many threads the writers run: the CPUs this process may use, or what was asked for.
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 namespace plot {
@@ -37,5 +38,24 @@ unsigned workers_within_budget(unsigned workers, double bytes_each);
 /// Throws plot::bad_input if one worker holding `bytes_each` would take more than
 /// raster_budget_bytes: `what` names the file, `reduce` what to make smaller.
 void check_worker_memory(double bytes_each, const std::string& what, const std::string& reduce);
+
+/// The most threads that do a render's work at once (its --jobs; 0: usable_cpus()). Set
+/// before a render's workers start; until set, usable_cpus().
+void set_thread_limit(unsigned jobs);
+
+/// A slot among the thread limit's, held by a worker while it runs a task: made, it waits
+/// for a free one (a figure's own threads may hold them for a while).
+class thread_slot {
+public:
+    thread_slot();
+    ~thread_slot();
+    thread_slot(const thread_slot&) = delete;
+    thread_slot& operator=(const thread_slot&) = delete;
+};
+
+/// Runs f(0) ... f(n - 1), each once, on this thread and on as many more as free slots
+/// allow (none waits for one), and returns when all have run; the first exception any
+/// throws is rethrown. f(i) must depend on i only: the results do not depend on the threads.
+void parallel_for(std::size_t n, const std::function<void(std::size_t)>& f);
 
 }  // namespace plot

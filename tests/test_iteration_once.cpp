@@ -4,6 +4,7 @@
 // MPFR, against 40-digit references (tests/data/make_iteration_grid.py).
 #include "pendulum/amplitude.hpp"
 #include "pendulum/approximants.hpp"
+#include "pendulum/gsl_support.hpp"
 #include "pendulum/iteration.hpp"
 #include "pendulum/mp_iteration.hpp"
 #include "reference.hpp"
@@ -99,6 +100,28 @@ TEST(IterationOnce, EveryLevelWithinFourUlpsOnBothSidesOfTheSwitch) {
         const auto worst = check_levels(which, iterated_sequence(amplitude_of(which), order), levels_rows, 4);
         std::cout << which << " to order " << order << ": worst T_N/T0 " << worst.period << " ulps, worst c_k "
                   << worst.coefficient << " ulps of c1\n";
+    }
+}
+
+TEST(IterationOnce, BothSidesOfTheSmallAmplitudeBranchAgreeWithTheMpfrTemplate) {
+    // The extended levels take sin(theta0 u)/theta0 from its Taylor polynomial below
+    // small_amplitude (1e-8): on both sides every coefficient is within 4 ulps of c1 of the
+    // same template run in MPFR with 256 bits (which iteration_grid.csv checks against mpmath).
+    ASSERT_EQ(small_amplitude, 1e-8);
+    for (const double theta0 : {1e-8, std::nextafter(1e-8, 0.0), 1e-300}) {
+        const auto levels = iterated_sequence(amplitude(theta0), 12);
+        const auto x = mp::exact_amplitude(amplitude(theta0), 256);
+        std::vector<std::vector<mp::real>> u;
+        const auto lambdas = detail::mp_lambdas(x, 12, 256, {}, &u);
+        for (std::size_t n = 0; n < levels.size(); ++n) {
+            ASSERT_TRUE(lambdas[n].has_value());
+            EXPECT_EQ(levels[n].frequency_ratio, mp::sqrt(*lambdas[n]).to_double()) << theta0 << " order " << n;
+            for (std::size_t k = 0; k < u[n].size(); ++k) {
+                const double want = (u[n][k] * x.theta).to_double();
+                EXPECT_LE(std::fabs(levels[n].coefficients[k] - want), 4 * ulp(levels[n].coefficients[0]))
+                    << theta0 << " order " << n << " c" << 2 * k + 1;
+            }
+        }
     }
 }
 

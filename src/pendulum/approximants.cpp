@@ -6,20 +6,16 @@
 #include "pendulum/extended_periods.hpp"
 #include "pendulum/formulas.hpp"
 #include "pendulum/gsl_support.hpp"
+#include "pendulum/iteration.hpp"
 #include "pendulum/mp_iteration.hpp"
 #include "pendulum/mp_real.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <numbers>
 #include <string>
 
 namespace pendulum {
-
-using std::numbers::pi;
 
 double fourier_solution::theta(double w0_t) const {
     if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
@@ -201,103 +197,6 @@ fourier_solution polynomial(const amplitude& a) {
             })};
 }
 
-namespace {
-
-/// cos(m pi / (4L)) for m = 0 .. 8L - 1: every cosine the rule with L points needs, each
-/// correctly rounded (a recurrence in j would lose about j^2 ulps near x = 0).
-template <class Real>
-std::vector<Real> cosine_table(int L) {
-    std::vector<Real> table(static_cast<std::size_t>(8 * L));
-    const Real step = std::numbers::pi_v<Real> / (4 * L);
-    for (int m = 0; m < 8 * L; ++m) table[static_cast<std::size_t>(m)] = std::cos(m * step);
-    return table;
-}
-
-/// sin(theta0 u) / theta0, exact for every theta0 in (0, pi), subnormals included.
-template <class Real>
-Real sine_over(Real theta0, Real u) {
-    const Real t = theta0 * u;
-    if (theta0 < small_amplitude) return u * (1 - t * t / 6);
-    return std::sin(t) / theta0;
-}
-
-/// C_{2k+1}/theta0 = (1/(pi theta0)) int_0^{2pi} cos((2k+1)x) sin(theta(x)) dx, k < count,
-/// where theta(x) = theta0 sum_j u_j cos((2j+1)x), by the midpoint rule on [0, pi/2] with L
-/// points. The integrand is even and antisymmetric about pi/2, so this is the trapezoidal
-/// rule on 4L points over the period: its error is the aliasing of the harmonics of
-/// sin(theta) above 4L - 2 count, which fall off geometrically.
-template <class Real>
-std::vector<Real> project_sine(const std::vector<Real>& u, int count, Real theta0, int L,
-                               const std::vector<Real>& table) {
-    const int period = 8 * L;
-    std::vector<Real> C(static_cast<std::size_t>(count), 0);
-    std::vector<Real> odd_cos(std::max<std::size_t>(u.size(), static_cast<std::size_t>(count)));
-    for (int i = 0; i < L; ++i) {
-        // cos((2j+1) x_i) with x_i = (2i+1) pi / (4L) is table[(2j+1)(2i+1) mod 8L].
-        const int step = 2 * (2 * i + 1);
-        int index = 2 * i + 1;
-        for (Real& v : odd_cos) {
-            v = table[static_cast<std::size_t>(index)];
-            index += step;
-            if (index >= period) index -= period;
-        }
-        Real theta = 0;
-        for (std::size_t j = 0; j < u.size(); ++j) theta += u[j] * odd_cos[j];
-        const Real f = sine_over(theta0, theta);
-        for (int k = 0; k < count; ++k) C[static_cast<std::size_t>(k)] += f * odd_cos[static_cast<std::size_t>(k)];
-    }
-    for (Real& v : C) v *= Real(2) / L;
-    return C;
-}
-
-/// The projection with L doubled until two rules agree to 1e-11 (in units of theta0), or to
-/// 1e-13 in extended precision. The rules converge geometrically, so the error of the finer
-/// one is about the square of that: far below rounding, which a test on the rounding level
-/// itself could never see.
-template <class Real>
-class sine_projector {
-public:
-    std::vector<Real> operator()(const std::vector<Real>& u, int count, Real theta0) {
-        // Harmonics up to 2 count - 1 need 4L > 2 count; the rule's L only grows from level to level.
-        L_ = std::max(L_, count / 2 + 16);
-        auto coarse = project_sine(u, count, theta0, L_, table(L_));
-        const Real agreement = sizeof(Real) > sizeof(double) ? 1e-13 : 1e-11;
-        for (;;) {
-            auto fine = project_sine(u, count, theta0, 2 * L_, table(2 * L_));
-            Real diff = 0;
-            for (std::size_t k = 0; k < fine.size(); ++k) diff = std::max(diff, std::fabs(fine[k] - coarse[k]));
-            if (diff <= agreement || 2 * L_ >= max_points) return fine;
-            L_ *= 2;
-            coarse = std::move(fine);
-        }
-    }
-
-private:
-    static constexpr int max_points = 1 << 16;
-
-    const std::vector<Real>& table(int L) {
-        auto it = tables_.find(L);
-        if (it == tables_.end()) it = tables_.emplace(L, cosine_table<Real>(L)).first;
-        return it->second;
-    }
-
-    int L_ = 0;
-    std::map<int, std::vector<Real>> tables_;
-};
-
-/// One level from its projection C (in units of theta0): lambda = sum C_k/(2k+1)^2 and the
-/// new u_k = C_k / ((2k+1)^2 lambda). Returns lambda.
-template <class Real>
-Real next_level(const std::vector<Real>& C, std::vector<Real>& u) {
-    Real lambda = 0;
-    for (std::size_t k = 0; k < C.size(); ++k) lambda += C[k] / Real((2 * k + 1) * (2 * k + 1));
-    u.resize(C.size());
-    for (std::size_t k = 0; k < C.size(); ++k) u[k] = C[k] / ((2 * k + 1) * (2 * k + 1) * lambda);
-    return lambda;
-}
-
-}  // namespace
-
 void check_order(int order) {
     if (order < 0 || order > max_order) {
         throw domain_error("order must be between 0 and " + std::to_string(max_order) + ", got " +
@@ -357,30 +256,22 @@ std::vector<fourier_solution> iterated_sequence_extended(const amplitude& a, int
     // 2^11 times smaller, below half an ulp of the doubles.
     const long double theta0 = theta_extended(a);
     std::vector<fourier_solution> levels;
-    sine_projector<long double> project;
     // The coefficients in units of theta0, so that no amplitude underflows.
-    std::vector<long double> u{1.0L};
-    for (int level = 0; level <= order; ++level) {
-        const int count = level + 1;
-        std::vector<long double> C;
-        if (level <= 1) {
-            // Exact in closed form: sin(theta0 cos x) = 2 sum (-1)^k J_{2k+1}(theta0) cos((2k+1)x).
-            for (int k = 0; k < count; ++k) {
-                const long double j = 2 * bessel_j_over_x_series(2 * k + 1, theta0);
-                C.push_back(k % 2 == 0 ? j : -j);
-            }
-        } else {
-            C = project(u, count, theta0);
-        }
-        const long double lambda = next_level(C, u);
-        fourier_solution level_solution;
-        for (long double v : u) level_solution.coefficients.push_back(static_cast<double>(theta0 * v));
+    const bool converged = iteration::levels(theta0, order, [&](int n, const iteration::level<long double>& level) {
+        fourier_solution s;
+        for (long double v : level.u) s.coefficients.push_back(static_cast<double>(theta0 * v));
         // lambda = (w/w0)^2; where it is not positive the level has no real frequency (the
         // scheme breaks down there, close to pi), and the iteration goes on from its c_k.
-        const long double ratio = lambda > 0 ? std::sqrt(lambda) : std::numeric_limits<long double>::quiet_NaN();
-        level_solution.frequency_ratio = static_cast<double>(ratio);
-        level_solution.exact = iteration_source(a, level, ratio, extended_ratio_bits);
-        levels.push_back(std::move(level_solution));
+        const long double ratio =
+            level.lambda > 0 ? std::sqrt(level.lambda) : std::numeric_limits<long double>::quiet_NaN();
+        s.frequency_ratio = static_cast<double>(ratio);
+        s.exact = iteration_source(a, n, ratio, extended_ratio_bits);
+        levels.push_back(std::move(s));
+        return false;
+    });
+    if (!converged) {
+        throw domain_error("the iteration's projection does not converge at order " + std::to_string(levels.size()) +
+                           " for theta0 = " + format_amplitude(a));
     }
     return levels;
 }
@@ -388,19 +279,21 @@ std::vector<fourier_solution> iterated_sequence_extended(const amplitude& a, int
 std::vector<level_period> iterated_periods(const amplitude& a, int order) {
     const double theta0 = a.radians();
     const auto levels = iterated_sequence(a, order);
-    // The same iteration in extended precision, every level projected (no double Bessel
-    // values), so that the difference shows how far the double run's rounding has grown.
-    sine_projector<long double> project;
-    std::vector<long double> u{1.0L};
+    // The same iteration in extended precision from the double theta0, so that the
+    // difference shows how far the double run's rounding has grown.
+    std::vector<long double> lambdas;
+    (void)iteration::levels(static_cast<long double>(theta0), order, [&](int, const iteration::level<long double>& level) {
+        lambdas.push_back(level.lambda);
+        return false;
+    });
     std::vector<level_period> out;
-    for (int level = 0; level <= order; ++level) {
-        const long double lambda = next_level(project(u, level + 1, static_cast<long double>(theta0)), u);
-        const double value = levels[static_cast<std::size_t>(level)].period_ratio();
-        if (!(lambda > 0) || std::isnan(value)) {
+    for (std::size_t n = 0; n < levels.size(); ++n) {
+        const double value = levels[n].period_ratio();
+        if (n >= lambdas.size() || !(lambdas[n] > 0) || std::isnan(value)) {
             out.push_back({std::nan(""), std::nan("")});
             continue;
         }
-        const long double extended = 1 / std::sqrt(lambda);
+        const long double extended = 1 / std::sqrt(lambdas[n]);
         out.push_back({value, static_cast<double>(std::fabs(value - extended))});
     }
     return out;

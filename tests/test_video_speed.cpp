@@ -150,10 +150,9 @@ TEST(VideoSpeed, Mp4PeakMemoryDoesNotGrowWithTheLength) {
     std::filesystem::remove_all(dir);
 }
 
-// The swing GIF at 720p stays within 50 MB for 30 periods. Its bytes grow with its frames
-// (each stores what changed since the one before): the 30-period spec's first 381 frames (3
-// periods, no cross-fade among them) times 10 is the whole file within the frames' spread
-// (bench/compare.sh measures it whole: 45.6 MB).
+// The swing GIF at 720p stays within 50 MB for 30 periods (3810 frames; 38.8 MB measured,
+// 45 s of CPU). A part of it does not tell: its first periods take more bytes a frame than
+// the rest (381 frames, 5.09 MB).
 TEST(VideoSpeed, SwingGifOf30PeriodsStaysWithin50MB) {
     const auto dir = temp_dir("video-speed-gif");
     std::string spec = slurp(std::filesystem::path(PENDULUM_TEST_DATA) / "../../src/figures/specs/swing.toml");
@@ -161,11 +160,10 @@ TEST(VideoSpeed, SwingGifOf30PeriodsStaysWithin50MB) {
     ASSERT_NE(at, std::string::npos);
     spec.replace(at, 13, "\nperiods = 30\n");
     std::ofstream(dir / "swing30.toml") << spec;
-    const auto r = run_cli("render swing30.toml --theme slides -f gif --frames 1..381 -o .", dir);
+    const auto r = run_cli("render swing30.toml --theme slides -f gif -o .", dir);
     ASSERT_EQ(r.status, 0) << r.err;
     const double bytes = static_cast<double>(std::filesystem::file_size(dir / "swing30.gif"));
-    std::printf("swing30.gif, its first 381 frames at 1280x720: %.2f MB; all 30 periods about %.1f MB\n", bytes / 1e6,
-                10 * bytes / 1e6);
-    EXPECT_LE(10 * bytes, 50e6);
+    std::printf("swing30.gif, 30 periods at 1280x720: %.2f MB\n", bytes / 1e6);
+    EXPECT_LE(bytes, 50e6);
     std::filesystem::remove_all(dir);
 }

@@ -8,7 +8,9 @@
 #include "figures/build_options.hpp"
 #include "figures/catalog.hpp"
 #include "figures/themes.hpp"
+#include "plot/errors.hpp"
 #include "plot/frames.hpp"
+#include "plot/video.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
@@ -165,5 +167,56 @@ TEST(VideoSpeed, SwingGifOf30PeriodsStaysWithin50MB) {
     const double bytes = static_cast<double>(std::filesystem::file_size(dir / "swing30.gif"));
     std::printf("swing30.gif, 30 periods at 1280x720: %.2f MB\n", bytes / 1e6);
     EXPECT_LE(bytes, 50e6);
+    std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+/// The message check_video_memory throws for a video of side x side pixels, or "" if it fits.
+std::string refusal(const plot::video_kind& kind, int side) {
+    try {
+        plot::check_video_memory(kind, side, side);
+    } catch (const plot::bad_input& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+// Memory bounded before work: the largest square video each encoder may write is accepted,
+// one pixel more a side refused with the size and what to lower.
+TEST(VideoSpeed, VideoMemoryBoundAcceptsNAndRefusesNPlusOne) {
+    for (const plot::video_kind* kind : {&plot::mp4_video, &plot::webm_video}) {
+        int low = 16;     // fits
+        int high = 65536; // does not
+        ASSERT_EQ(refusal(*kind, low), "");
+        ASSERT_NE(refusal(*kind, high), "");
+        while (high - low > 1) {
+            const int mid = low + (high - low) / 2;
+            (refusal(*kind, mid).empty() ? low : high) = mid;
+        }
+        std::printf("%s: at most %d x %d pixels\n", kind->container, low, low);
+        EXPECT_EQ(refusal(*kind, low), "") << kind->container;
+        const std::string message = refusal(*kind, low + 1);
+        const std::string side = std::to_string(low + 1);
+        EXPECT_NE(message.find("a video of " + side + " x " + side + " pixels would take"), std::string::npos) << message;
+        EXPECT_NE(message.find("lower --dpi or size_px"), std::string::npos) << message;
+        // 4K fits, 8K does not.
+        EXPECT_GE(low * low, 3840 * 2160) << kind->container;
+        EXPECT_LT(low * low, 7680 * 4320) << kind->container;
+    }
+}
+
+// The hostile request: an 8K video is refused with exit code 2 before any work, nothing written.
+TEST(VideoSpeed, An8kVideoIsRefusedBeforeWork) {
+    const auto dir = temp_dir("video-speed-8k");
+    for (const char* format : {"mp4", "webm"}) {
+        const auto r = run_cli(std::string("render swing --theme slides --size 7680x4320 -f ") + format + " -o '" +
+                               dir.string() + "'");
+        EXPECT_EQ(r.status, 2) << r.err;
+        EXPECT_NE(r.err.find("a video of 7680 x 4320 pixels would take"), std::string::npos) << r.err;
+        EXPECT_TRUE(files_in(dir).empty());
+    }
     std::filesystem::remove_all(dir);
 }

@@ -38,12 +38,13 @@ mkdir -p "$out/ours" "$out/theirs" "$out/gnuplot"
 # A million amplitudes for eval (not timed).
 awk 'BEGIN { srand(1); for (i = 0; i < 1000000; i++) printf "%.17g\n", 0.01 + 3.09 * rand() }' >"$out/amplitudes"
 
-rows=(paper catalog fig7 swing eval)
+rows=(paper catalog fig7 swing mp4 eval)
 declare -A label ours theirs peer
 label[paper]="7 paper figures, PNG 300 dpi + PDF"; peer[paper]="matplotlib script"
 label[catalog]="render --all, PNG 300 dpi + PDF"; peer[catalog]="bench/matplotlib_catalog.py"
 label[fig7]="Fig. 7, PNG + PDF, same pixels"; peer[fig7]="gnuplot pngcairo + pdfcairo"
 label[swing]="swing GIF, 441 frames 1280x720"; peer[swing]="matplotlib FuncAnimation"
+label[mp4]="MP4, 30 s at 1080p, two pendulums"; peer[mp4]="ffmpeg decode + x264 veryfast"
 label[eval]="eval of 1e6 amplitudes (theta0, period_exact)"; peer[eval]="numpy/scipy + savetxt"
 run_ours() {
   case $1 in
@@ -51,6 +52,7 @@ run_ours() {
     catalog) "$exe" render --all -f png,pdf --dpi 300 --force -o "$out/ours" ;;
     fig7) "$exe" render fig7 -f png,pdf --dpi 300 --force -o "$out/ours" ;;
     swing) "$exe" render swing --theme slides -f gif --force -o "$out/ours" ;;
+    mp4) rm -f "$out/ours/pendulum.mp4"; "$exe" plot pendulum "${mp4_args[@]}" -o "$out/ours" ;;
     eval) "$exe" eval --theta0 @"$out/amplitudes" --columns theta0,period_exact >"$out/ours/eval.csv" ;;
   esac
 }
@@ -60,9 +62,15 @@ run_theirs() {
     catalog) "$python" "$here/matplotlib_catalog.py" "$out/theirs" ;;
     fig7) gnuplot -e "dir='$out/gnuplot'" "$here/gnuplot_fig7.gp" ;;
     swing) "$python" "$here/matplotlib_swing.py" "$out/theirs/swing.gif" ;;
+    mp4) ffmpeg -nostdin -v error -y -i "$out/mp4/pendulum.mp4" -c:v libx264 -preset veryfast "$out/theirs/pendulum.mp4" ;;
     eval) "$python" "$here/numpy_eval.py" "$out/amplitudes" "$out/theirs/eval.csv" ;;
   esac
 }
+# The video row's floor: ffmpeg decoding our video and encoding its frames again (x264's
+# veryfast preset, ffmpeg's own threads); the video it decodes is made first (not timed).
+mp4_args=(--theta0 1,2.5 --methods exact --apart --length 1 --duration 30 --size 1920x1080 -f mp4)
+mkdir -p "$out/mp4"
+"$exe" plot pendulum "${mp4_args[@]}" -o "$out/mp4" 2>/dev/null
 for ((i = 0; i < rounds; i++)); do
   for r in "${rows[@]}"; do
     ours[$r]+="$(seconds run_ours "$r") "
@@ -95,11 +103,16 @@ one=$(instructions "$exe" render swing --theme slides -f gif --force --jobs 1 --
 more=$(instructions "$exe" render swing --theme slides -f gif --force --jobs 1 --frames 1..31 -o "$out/ours")
 printf '%-48s %6.1f M\n' "swing GIF 1280x720, per frame" "$(awk -v a="$one" -v b="$more" 'BEGIN { print (b - a) / 30 / 1e6 }')"
 
+# The 30-s 1080p MP4's peak memory.
+rm -f "$out/ours/pendulum.mp4"
+/usr/bin/time -f '%M' -o "$out/rss" "$exe" plot pendulum "${mp4_args[@]}" -o "$out/ours" >/dev/null 2>&1
+printf '%-48s %6d MB\n' "MP4 30 s 1080p, peak memory (max RSS)" $(( $(cat "$out/rss") / 1024 ))
+
 [ "${BENCH_MEMORY:-1}" = 0 ] && exit 0
 # Peak memory of the GIF at any length: the swing for 1 and 30 periods, at 720p and 4K (at
 # 4K, 30 periods are more pixels than an animation may have: its first 2400 frames).
 echo
-echo "Peak memory of the swing GIF (max RSS):"
+echo "Peak memory of the swing GIF (max RSS) and its size:"
 for periods in 1 30; do
   sed "s/^periods = .*/periods = $periods/" "$here/../src/figures/specs/swing.toml" >"$out/swing$periods.toml"
 done
@@ -109,7 +122,8 @@ for size in 1280x720 3840x2160; do
     [ "$size" = 3840x2160 ] && [ "$periods" = 30 ] && frames=(--frames 1..2400)
     /usr/bin/time -f '%M' -o "$out/rss" "$exe" render "$out/swing$periods.toml" --theme slides --size "$size" \
       -f gif --force -o "$out/ours" "${frames[@]}" >/dev/null
-    printf '%-48s %6d MB\n' "$size, $periods period(s)${frames:+ (frames 1..2400)}" $(( $(cat "$out/rss") / 1024 ))
+    printf '%-48s %6d MB, file %6.1f MB\n' "$size, $periods period(s)${frames:+ (frames 1..2400)}" \
+      $(( $(cat "$out/rss") / 1024 )) "$(awk -v n="$(stat -c %s "$out/ours/swing$periods.gif")" 'BEGIN { print n / 1e6 }')"
   done
 done
 

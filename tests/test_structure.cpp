@@ -163,7 +163,7 @@ TEST(Structure, TheLookAheadIsWrittenOnceInTheVideoKind) {
         EXPECT_EQ(small.threads, kind->threads) << kind->container;
     }
     EXPECT_STREQ(plot::mp4_video.lookahead_option, "rc-lookahead");
-    EXPECT_EQ(plot::mp4_video.lookahead, 5);
+    EXPECT_EQ(plot::mp4_video.lookahead, 0);
     EXPECT_STREQ(plot::webm_video.lookahead_option, "lag-in-frames");
     EXPECT_EQ(plot::webm_video.lookahead, 25);
 }
@@ -287,7 +287,7 @@ TEST(Mutations, Mp4HasTheEncoderSettingsItSays) {
     const std::size_t at = mp4.find("options: ");
     ASSERT_NE(at, std::string::npos);
     const std::string options = " " + mp4.substr(at + 9, mp4.find('\0', at) - at - 9) + " ";
-    for (const char* setting : {" crf=23.0 ", " rc_lookahead=5 ", " sliced_threads=1 ", " threads=2 "}) {
+    for (const char* setting : {" crf=23.0 ", " subme=1 ", " sliced_threads=1 ", " threads=2 ", " bframes=1 ", " mbtree=0 "}) {
         EXPECT_TRUE(has(options, setting)) << setting << " not in" << options;
     }
     std::filesystem::remove_all(dir);

@@ -228,13 +228,6 @@ TEST(JournalRoutes, PdfAndOverlaysAt10To12ShowTheSame) {
                 ++compared;
                 const std::string where = std::string(set) + "/" + route + "/" + file;
                 const std::string difference = text_difference(pdf, overlay_texts(dir / set / route / file));
-                // Known, not yet fixed: Fig. 7 (the whole figure) at 12 pt loses (b)'s y tick
-                // labels (-20 ... 0), which the PDF keeps. Kept here so that the day it
-                // agrees, this line asks to be removed.
-                if (where == "all/tex12/period.pdf_tex") {
-                    EXPECT_NE(difference, "") << where << " agrees now: remove it from the known cases";
-                    continue;
-                }
                 EXPECT_EQ(difference, "") << where;
             }
         }

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <regex>
 #include <memory>
 #include <tuple>
 
@@ -286,6 +287,45 @@ std::vector<std::string> preflight_problems(const figure_measure& m, const journ
     stroke_problems(out, m, *check.rules);
     grey_problems(out, m);
     return out;
+}
+
+namespace {
+
+/// Every label of the figure's panels (its peers too: every file of a set decides alike)
+/// and its title, as plain text.
+std::vector<std::string> label_texts(const figure& fig) {
+    std::vector<std::string> out;
+    const auto add = [&](const label& l) {
+        if (!l.empty()) out.push_back(markup_text(l.markup));
+    };
+    add(fig.title);
+    for (const auto* panels : {&fig.panels, &fig.peers}) {
+        for (const panel& p : *panels) {
+            add(p.label);
+            add(p.x.label);
+            add(p.y.label);
+            for (const series& s : p.data) add(s.label);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string angle_notation_problem(const figure& fig) {
+    // A decimal multiple of pi (0.95π), and a fraction of it (9π/10, π/2).
+    static const std::regex decimal("[0-9]*\\.[0-9]+\u03c0");
+    static const std::regex fraction("[0-9]*\u03c0/[0-9]+");
+    std::string a_decimal;
+    std::string a_fraction;
+    for (const std::string& text : label_texts(fig)) {
+        std::smatch m;
+        if (a_decimal.empty() && std::regex_search(text, m, decimal)) a_decimal = m.str();
+        if (a_fraction.empty() && std::regex_search(text, m, fraction)) a_fraction = m.str();
+    }
+    if (a_decimal.empty() || a_fraction.empty()) return {};
+    return "angles are written two ways in one figure, " + a_fraction + " (a fraction of \u03c0) and " + a_decimal +
+           " (a decimal): write them one way in the spec, all as decimals (0.9pi) or all as fractions (99pi/100)";
 }
 
 }  // namespace plot

@@ -5,6 +5,7 @@
 #include "plot/handles.hpp"
 #include "plot/latex_overlay.hpp"
 #include "plot/layout.hpp"
+#include "plot/preflight.hpp"
 #include "plot/legend.hpp"
 #include "plot/strokes.hpp"
 #include "plot/text.hpp"
@@ -112,23 +113,31 @@ double curve_tolerance(cairo_t* cr) {
     return curve_tolerance(units_per_point, cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE);
 }
 
-void draw_ticks(cairo_t* cr, const theme& th, const tick_set& t, const axis_map& m, const rect& area,
-                bool horizontal) {
+/// Tick marks of an axis, from the frame inwards, on both sides; each stops short of the
+/// markers in `discs` by half its width and half a point (tick_length_clear), so that no
+/// tick mark is drawn under a marker, at any size or dpi.
+void draw_ticks(cairo_t* cr, const theme& th, const tick_set& t, const axis_map& m, const rect& area, bool horizontal,
+                const std::vector<keep_out>& discs) {
+    const double width = line_width(th, th.frame_width_pt);
+    const double gap = 0.5 * width + 0.5;
+    const auto mark = [&](double x, double y, double ux, double uy, double len) {
+        const double l = tick_length_clear(x, y, ux, uy, len, discs, gap);
+        if (!(l > 0.01)) return;
+        cairo_move_to(cr, x, y);
+        cairo_line_to(cr, x + l * ux, y + l * uy);
+        tick_marks_record::add({x, y, x + l * ux, y + l * uy, width});
+    };
     auto tick = [&](double v, double len) {
         const double d = m(v);
         if (std::isnan(d)) return;
         if (horizontal) {
             if (d < area.x - 0.01 || d > area.x + area.w + 0.01) return;
-            cairo_move_to(cr, d, area.y + area.h);
-            cairo_line_to(cr, d, area.y + area.h - len);
-            cairo_move_to(cr, d, area.y);
-            cairo_line_to(cr, d, area.y + len);
+            mark(d, area.y + area.h, 0, -1, len);
+            mark(d, area.y, 0, 1, len);
         } else {
             if (d < area.y - 0.01 || d > area.y + area.h + 0.01) return;
-            cairo_move_to(cr, area.x, d);
-            cairo_line_to(cr, area.x + len, d);
-            cairo_move_to(cr, area.x + area.w, d);
-            cairo_line_to(cr, area.x + area.w - len, d);
+            mark(area.x, d, 1, 0, len);
+            mark(area.x + area.w, d, -1, 0, len);
         }
     };
     for (double v : t.major) tick(v, th.tick_length_pt);
@@ -315,6 +324,25 @@ void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geome
     }
 }
 
+/// The markers draw_series draws that stay put (those of an animation's moving parts
+/// move), as discs of their ink: what tick marks stop short of.
+std::vector<keep_out> drawn_markers(const theme& th, const panel& p, const spaced_series& spaced, const rect& area) {
+    std::vector<keep_out> discs;
+    for (std::size_t k = 0; k < p.data.size(); ++k) {
+        const series& s = p.data[k];
+        if (s.marker == marker_style::none || s.overlay) continue;
+        const double reach = marker_reach(th, s);
+        const device_series& d = spaced.markers[k];
+        for (std::size_t i = 0; i < d.x.size() && i < d.y.size(); ++i) {
+            // Drawn where the centre is inside the axes (draw_series).
+            if (d.x[i] >= area.x && d.x[i] <= area.x + area.w && d.y[i] >= area.y && d.y[i] <= area.y + area.h) {
+                discs.push_back({d.x[i], d.y[i], reach});
+            }
+        }
+    }
+    return discs;
+}
+
 /// The panel as its legend shows it: a crowded series (space_markers) with its line.
 panel as_shown(const panel& p, const spaced_series& spaced) {
     panel shown = p;
@@ -329,7 +357,7 @@ panel as_shown(const panel& p, const spaced_series& spaced) {
 /// baseline), y labels with their ink ending there, centred on a digit's height. Returns the
 /// x labels' baseline.
 double draw_frame_and_ticks(cairo_t* cr, const text_engine& text, const theme& th, const panel_plan& plan,
-                            const panel_geometry& g) {
+                            const panel_geometry& g, const std::vector<keep_out>& discs) {
     const rect& area = g.area;
     set_foreground(cr, th);
     cairo_set_dash(cr, nullptr, 0, 0);
@@ -338,8 +366,8 @@ double draw_frame_and_ticks(cairo_t* cr, const text_engine& text, const theme& t
     cairo_set_line_width(cr, line_width(th, th.frame_width_pt));
     cairo_rectangle(cr, area.x, area.y, area.w, area.h);
     cairo_stroke(cr);
-    draw_ticks(cr, th, plan.xt, g.mx, area, true);
-    draw_ticks(cr, th, plan.yt, g.my, area, false);
+    draw_ticks(cr, th, plan.xt, g.mx, area, true, discs);
+    draw_ticks(cr, th, plan.yt, g.my, area, false, discs);
     const double x_baseline = area.y + area.h + plan.xtick_gap + plan.xtick_up;
     for (std::size_t i = 0; i < plan.xt.major.size(); ++i) {
         const double d = g.mx(plan.xt.major[i]);
@@ -401,7 +429,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         set_foreground(cr, th);
         if (!p.label.empty()) text.draw(p.label, th.label_font_pt, area.x, area.y - 0.4 * pad, 0.0, 1.0);
     } else {
-        const double x_baseline = draw_frame_and_ticks(cr, text, th, plan, placed.g);
+        const double x_baseline = draw_frame_and_ticks(cr, text, th, plan, placed.g, drawn_markers(th, p, spaced, area));
         draw_axis_labels(text, th, p, plan, area, x_baseline);
     }
     if (!placed.legend_box && !placed.legend_band) return;
@@ -636,54 +664,115 @@ void drop_bands_without_room(const figure_layout& f, std::vector<double>& row_ba
     }
 }
 
-own_legends place_own_legends(cairo_t* cr, const theme& th, figure_layout& f, const pass_gate& gate) {
+/// After legend bands moved the cells down (shorter axes): the deciding plans' crowded
+/// ticks are thinned again in `deciding_cells` (the cells moved by the bands at the deciding
+/// sizes, the same in every route, and no larger than the cells), and the theme's plans
+/// made again from them in the cells, data kept off the frame: every route thins alike.
+void replan_in_cells(const text_engine& text, figure_layout& f, const theme& th, const std::vector<rect>& deciding_cells) {
+    thin_crowded_ticks(text, f.planned, f.decided, planned_cells(deciding_cells, f.planned.size()), f.deciding,
+                       f.fig->cols);
+    f.plans = plan_panels(text, f.planned, th, planned_cells(f.cells, f.planned.size()), f.fig->cols, &f.decided);
+}
+
+/// The tick labels of an axis as a note lists them.
+std::string listed(const std::vector<std::string>& labels) {
+    std::string out;
+    for (const auto& l : labels) out += (out.empty() ? "" : ", ") + markup_text(l);
+    return out.empty() ? "none" : out;
+}
+
+/// Whether panel i's own legend (of the planned panels: the figure's, then its peers, in a
+/// cell the size of the first) has a spot inside its axes free of data, at the deciding
+/// sizes, with its cell moved down by `shift` (the band of its row).
+bool legend_fits_inside(cairo_t* cr, const figure_layout& f, std::size_t i, double shift) {
+    const panel& p = f.planned[i];
+    const panel_plan& d = f.decided[i];
+    rect cell = i < f.fig->panels.size() ? f.cells[i] : f.cells.front();
+    cell.y += shift;
+    cell.h -= shift;
+    const auto g = place_panel(p, d, panel_area(p, d, cell), curve_tolerance(cr), f.deciding.line_width_pt);
+    return d.legend.entries.empty() || legend_inside(p, d.legend, g, f.deciding).has_value();
+}
+
+/// One round of place_own_legends: each panel's spot with its row moved down by row_band,
+/// and the band each row then needs (its highest band; the peers' in row 0).
+struct row_bands {
+    std::vector<double> deciding;  // at the deciding sizes: what decisions are made with
+    std::vector<double> drawn;     // at the theme's: what the cells move by
+};
+
+row_bands own_legend_round(cairo_t* cr, const theme& th, const figure_layout& f, const std::vector<double>& row_band,
+                           own_legends& out) {
+    const figure& fig = *f.fig;
+    const auto row = [&](std::size_t i) { return i < fig.panels.size() ? i / static_cast<std::size_t>(fig.cols) : 0; };
+    row_bands need{std::vector<double>(row_band.size(), 0.0), std::vector<double>(row_band.size(), 0.0)};
+    const double pad = th.padding_pt;
+    for (std::size_t i = 0; i < f.planned.size() && !fig.panels.empty(); ++i) {
+        const bool own = i < fig.panels.size();
+        if (own) {
+            out.spots[i] = legend_spot::inside;
+            out.bands[i].reset();
+        }
+        if (legend_fits_inside(cr, f, i, row_band[row(i)])) continue;
+        const bool automatic = f.planned[i].legend == legend_place::automatic;
+        if (own) out.spots[i] = automatic ? legend_spot::band : legend_spot::none;
+        if (!automatic) continue;
+        // Decided at the deciding sizes, so that every route spans alike.
+        const rect cell = own ? f.cells[i] : f.cells.front();
+        const bool over_axes = band_spans_axes(f.decided[i], f.deciding, cell);
+        const rect band = legend_band_rect(f.plans[i].legend, th, f.plans[i], cell, cell.y + (own ? 0.3 * pad : 0),
+                                           over_axes);
+        if (own) out.bands[i] = band;
+        need.drawn[row(i)] = std::max(need.drawn[row(i)], band.h);
+        const double deciding = legend_band_rect(f.decided[i].legend, f.deciding, f.decided[i], cell, 0, over_axes).h;
+        need.deciding[row(i)] = std::max(need.deciding[row(i)], std::max(deciding, band.h));
+    }
+    return need;
+}
+
+/// Where each panel's own legend goes, decided with the cells where they end: a panel whose
+/// legend fits inside its axes in its own cell may lose that room when a band above another
+/// panel of its row moves the row down; it is decided again there (a band of its own, in
+/// the row's band), until no row needs a higher band. Moves the cells down by their bands.
+own_legends place_own_legends(cairo_t* cr, const text_engine& text, const theme& th, figure_layout& f,
+                              const pass_gate& gate) {
     const figure& fig = *f.fig;
     const std::size_t n = fig.panels.size();
     own_legends out{std::vector<legend_spot>(n, legend_spot::inside), std::vector<std::optional<rect>>(n)};
-    std::vector<double> row_band(static_cast<std::size_t>(fig.rows), 0.0);
-    const double pad = th.padding_pt;
-    for (std::size_t i = 0; i < n; ++i) {
-        const panel& p = fig.panels[i];
-        const panel_plan& d = f.decided[i];
-        const auto g = place_panel(p, d, panel_area(p, d, f.cells[i]), curve_tolerance(cr), f.deciding.line_width_pt);
-        if (d.legend.entries.empty() || legend_inside(p, d.legend, g, f.deciding)) continue;
-        out.spots[i] = p.legend == legend_place::automatic ? legend_spot::band : legend_spot::none;
-        if (out.spots[i] == legend_spot::band) {
-            // Decided at the deciding sizes, so that every route spans alike.
-            out.bands[i] = legend_band_rect(f.plans[i].legend, th, f.plans[i], f.cells[i], f.cells[i].y + 0.3 * pad,
-                                            band_spans_axes(d, f.deciding, f.cells[i]));
-            const double h = out.bands[i]->h;
-            double& row = row_band[i / static_cast<std::size_t>(fig.cols)];
-            row = std::max(row, h);
-        } else if (gate.draws(false)) {
-            layout_notes::note(panel_name(p, i) + ": no legend: no spot inside its axes is free of data at " +
-                               number_text("%.4g", f.deciding.legend_font_pt) +
-                               " pt legend text, and legend = \"inside\" allows no band above them");
+    std::vector<double> deciding_band(static_cast<std::size_t>(fig.rows), 0.0);
+    std::vector<double> row_band(deciding_band.size(), 0.0);
+    // Decided with the bands at the deciding sizes, alike in every route. Bands only grow,
+    // so a few rounds settle (each round's highest band is one of a few).
+    for (std::size_t round = 0; round <= f.planned.size(); ++round) {
+        const row_bands need = own_legend_round(cr, th, f, deciding_band, out);
+        row_band = need.drawn;
+        bool higher = false;
+        for (std::size_t r = 0; r < deciding_band.size(); ++r) {
+            higher = higher || need.deciding[r] > deciding_band[r];
+            deciding_band[r] = std::max(deciding_band[r], need.deciding[r]);
         }
+        if (!higher) break;
     }
-    // The files of a set (peers, one panel each) leave the room of the highest band of any
-    // of them, so that their frames stay in line.
-    const rect cell = f.cells.empty() ? rect{} : f.cells.front();
-    for (std::size_t i = n; i < f.planned.size() && n > 0; ++i) {
-        const panel_plan& d = f.decided[i];
-        const auto g = place_panel(f.planned[i], d, panel_area(f.planned[i], d, cell), curve_tolerance(cr),
-                                   f.deciding.line_width_pt);
-        if (d.legend.entries.empty() || f.planned[i].legend != legend_place::automatic ||
-            legend_inside(f.planned[i], d.legend, g, f.deciding)) {
-            continue;
-        }
-        row_band[0] = std::max(row_band[0], legend_band_rect(f.plans[i].legend, th, f.plans[i], cell, 0,
-                                                             band_spans_axes(d, f.deciding, cell)).h);
+    for (std::size_t i = 0; i < n && gate.draws(false); ++i) {
+        if (out.spots[i] != legend_spot::none) continue;
+        layout_notes::note(panel_name(fig.panels[i], i) + ": no legend: no spot inside its axes is free of data at " +
+                           number_text("%.4g", f.deciding.legend_font_pt) +
+                           " pt legend text, and legend = \"inside\" allows no band above them");
     }
     drop_bands_without_room(f, row_band, out, gate);
     bool moved = false;
+    std::vector<rect> deciding_cells = f.cells;
     for (std::size_t i = 0; i < n; ++i) {
-        const double h = row_band[i / static_cast<std::size_t>(fig.cols)];
+        const std::size_t r = i / static_cast<std::size_t>(fig.cols);
+        const double h = row_band[r];
+        const double d = h > 0 ? deciding_band[r] : 0.0;  // a band dropped for room is dropped in both
         f.cells[i].y += h;
         f.cells[i].h -= h;
+        deciding_cells[i].y += d;
+        deciding_cells[i].h -= d;
         moved = moved || h > 0;
     }
-    if (moved) keep_data_off_frame(f.planned, f.plans, planned_cells(f.cells, f.planned.size()), th);
+    if (moved) replan_in_cells(text, f, th, deciding_cells);
     return out;
 }
 
@@ -741,7 +830,8 @@ struct shared_legend {
 /// their axes (band_leaves_room) have no legend, and the first file of the set says so: a
 /// caption names the lines. Every panel shows the same series, so the first panel's
 /// entries stand for all.
-shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f, page_size size) {
+shared_legend place_shared_legend(cairo_t* cr, const text_engine& text, const theme& th, figure_layout& f,
+                                  page_size size) {
     const figure& fig = *f.fig;
     shared_legend out{f.plans[0].legend, shared_legend_panel(cr, f), std::nullopt};
     if (out.panel || out.lg.entries.empty()) return out;
@@ -764,8 +854,61 @@ shared_legend place_shared_legend(cairo_t* cr, const theme& th, figure_layout& f
     const double band = band_rect.h;
     if (first_file) out.band = band_rect;
     f.cells = make_cells(fig, size, f.title_h + band + 0.3 * th.padding_pt);
-    keep_data_off_frame(f.planned, f.plans, planned_cells(f.cells, f.planned.size()), th);
+    replan_in_cells(text, f, th, make_cells(fig, size, f.title_h + std::max(band, decided_band) + 0.3 * th.padding_pt));
     return out;
+}
+
+/// The plans the PDF of an overlay shows: the figure's layout decided at the PDF's sizes
+/// (as_pdf), its legends placed as there; its notes are the PDF's, kept quiet here.
+std::vector<panel_plan> pdf_plans(cairo_t* cr, const text_engine& text, const figure_layout& f, const theme& as_pdf,
+                                  page_size size, bool shared) {
+    figure_layout p;
+    p.fig = f.fig;
+    p.planned = f.planned;
+    p.deciding = as_pdf;
+    p.title_h = f.title_h;
+    p.cells = make_cells(*f.fig, size, f.title_h);
+    const std::vector<rect> cells = planned_cells(p.cells, p.planned.size());
+    p.decided = plan_panels(text, p.planned, as_pdf, cells, f.fig->cols, nullptr);
+    p.plans = plan_panels(text, p.planned, as_pdf, cells, f.fig->cols, &p.decided);
+    const layout_notes quiet;
+    if (shared) {
+        place_shared_legend(cr, text, as_pdf, p, size);
+    } else {
+        place_own_legends(cr, text, as_pdf, p, pass_gate{draw_pass::overlay});
+    }
+    return p.plans;
+}
+
+/// A LaTeX overlay whose text is larger than the sizes its PDF decides at (a theme's
+/// decided_at, which latex_sized_theme sets) decides at its own: where that gives an axis
+/// other tick labels than the PDF shows, it says so, axis by axis, so that the routes never
+/// differ silently.
+void note_route_changes(cairo_t* cr, const text_engine& text, const figure_layout& f, const theme& th,
+                        page_size size, bool shared) {
+    if (!th.decided_at) return;
+    const text_sizes& pdf = *th.decided_at;
+    if (f.deciding.tick_font_pt <= pdf.tick_pt && f.deciding.label_font_pt <= pdf.label_pt &&
+        f.deciding.legend_font_pt <= pdf.legend_pt) {
+        return;  // decided as the PDF is
+    }
+    theme as_pdf = f.deciding;
+    as_pdf.tick_font_pt = pdf.tick_pt;
+    as_pdf.label_font_pt = pdf.label_pt;
+    as_pdf.legend_font_pt = pdf.legend_pt;
+    const std::vector<panel_plan> shown = pdf_plans(cr, text, f, as_pdf, size, shared);
+    for (std::size_t i = 0; i < f.fig->panels.size(); ++i) {
+        for (const bool horizontal : {true, false}) {
+            const auto& here = (horizontal ? f.plans[i].xt : f.plans[i].yt).labels;
+            const auto& there = (horizontal ? shown[i].xt : shown[i].yt).labels;
+            if (here == there) continue;
+            layout_notes::note(panel_name(f.fig->panels[i], i) + ": " + (horizontal ? "x" : "y") +
+                               " tick labels " + listed(here) + ", not " + listed(there) + " as the PDF shows: " +
+                               number_text("%.4g", f.deciding.tick_font_pt) +
+                               " pt tick labels need the room; set tex_agree_pt in the style file to the "
+                               "document's size (--tex-font-size) for the same ticks in both");
+        }
+    }
 }
 
 }  // namespace
@@ -795,6 +938,9 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     }
     if (th.palette.empty()) throw bad_input("theme has no colours");
     if (const std::string why = text_size_problem(th); !why.empty()) throw bad_input(why);
+    if (pass != draw_pass::overlay) {
+        if (const std::string why = angle_notation_problem(fig); !why.empty()) layout_notes::note(why);
+    }
     text_engine text(cr, th.font_family);
     text.record_into(texts);
     const pass_gate gate{pass};
@@ -818,7 +964,8 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     f.decided = plan_panels(text, f.planned, f.deciding, cells, fig.cols, nullptr);
     f.plans = plan_panels(text, f.planned, th, cells, fig.cols, &f.decided);
     if (!fig.shared_legend || fig.panels.empty() || !same_legend_entries(f.planned)) {
-        const own_legends own = place_own_legends(cr, th, f, gate);
+        const own_legends own = place_own_legends(cr, text, th, f, gate);
+        if (gate.draws(false)) note_route_changes(cr, text, f, th, size, false);
         f.plans.resize(fig.panels.size());
         check_room(fig, f.plans, f.cells, th, size);
         record_frames(fig, f.plans, f.cells, frames);
@@ -827,7 +974,8 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
         }
         return;
     }
-    const shared_legend shared = place_shared_legend(cr, th, f, size);
+    const shared_legend shared = place_shared_legend(cr, text, th, f, size);
+    if (gate.draws(false)) note_route_changes(cr, text, f, th, size, true);
     f.plans.resize(fig.panels.size());
     check_room(fig, f.plans, f.cells, th, size);
     record_frames(fig, f.plans, f.cells, frames);

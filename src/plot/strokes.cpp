@@ -159,4 +159,46 @@ void draw_error_bars(cairo_t* cr, const theme& th, const series& s, const std::v
     cairo_stroke(cr);
 }
 
+double marker_reach(const theme& th, const series& s) {
+    double outline = 1.0;  // a circle's radius, in radii
+    switch (s.marker) {
+        case marker_style::filled_square: outline = 0.886 * std::sqrt(2.0); break;
+        case marker_style::filled_triangle: outline = 1.35; break;
+        case marker_style::filled_diamond: outline = 1.25; break;
+        default: break;
+    }
+    return outline * th.marker_radius_pt * s.marker_scale + 0.5 * line_width(th, 0.75 * th.line_width_pt);
+}
+
+double tick_length_clear(double x, double y, double ux, double uy, double length, const std::vector<keep_out>& discs,
+                         double gap) {
+    for (const keep_out& d : discs) {
+        // |w + s u| = R on the way out from (x, y): s^2 + 2 b s + c = 0.
+        const double wx = x - d.x;
+        const double wy = y - d.y;
+        const double reach = d.r + gap;
+        const double b = ux * wx + uy * wy;
+        const double c = wx * wx + wy * wy - reach * reach;
+        if (c <= 0) return 0;  // starts within the disc
+        const double disc = b * b - c;
+        if (disc < 0 || b >= 0) continue;  // misses it, or heads away from it
+        length = std::min(length, -b - std::sqrt(disc));
+    }
+    return std::max(length, 0.0);
+}
+
+namespace {
+
+thread_local tick_marks_record* current_record = nullptr;
+
+}  // namespace
+
+tick_marks_record::tick_marks_record() : outer_(current_record) { current_record = this; }
+
+tick_marks_record::~tick_marks_record() { current_record = outer_; }
+
+void tick_marks_record::add(const tick_mark& t) {
+    if (current_record) current_record->marks_.push_back(t);
+}
+
 }  // namespace plot

@@ -7,6 +7,8 @@
 
 #include <cairo.h>
 
+#include <vector>
+
 namespace plot {
 
 /// Sets the theme's foreground colour (frame, ticks, text).
@@ -37,5 +39,51 @@ double cap_half_width(const theme& th, const series& s);
 
 /// Strokes the error bars with their caps in the current colour, at the theme's line width.
 void draw_error_bars(cairo_t* cr, const theme& th, const series& s, const std::vector<device_bar>& bars);
+
+/// How far from its centre a series' marker's ink reaches: its outline's farthest point (a
+/// triangle's tip, a square's corner) and half the outline's stroke.
+double marker_reach(const theme& th, const series& s);
+
+/// A disc that tick marks stop short of: a drawn marker's centre and its reach.
+struct keep_out {
+    double x = 0;  ///< centre, device points
+    double y = 0;  ///< centre, device points
+    double r = 0;  ///< radius of the ink
+};
+
+/// The length of a tick mark from (x, y) in the unit direction (ux, uy), at most `length`:
+/// up to where it would come within `gap` of the first disc on its way (0 where it starts
+/// there), so that a tick mark is never drawn under a marker.
+double tick_length_clear(double x, double y, double ux, double uy, double length, const std::vector<keep_out>& discs,
+                         double gap);
+
+/// A tick mark as stroked, from the frame inwards, and its stroke's width.
+struct tick_mark {
+    double x0 = 0;     ///< on the frame
+    double y0 = 0;     ///< on the frame
+    double x1 = 0;     ///< inner end
+    double y1 = 0;     ///< inner end
+    double width = 0;  ///< stroke width
+};
+
+/// While one lives, the tick marks stroked on its thread are added to it (what a test
+/// measures against the markers); records nest, the innermost records.
+class tick_marks_record {
+public:
+    tick_marks_record();
+    ~tick_marks_record();
+    tick_marks_record(const tick_marks_record&) = delete;
+    tick_marks_record& operator=(const tick_marks_record&) = delete;
+
+    /// Adds a tick mark to the innermost record of this thread, if any.
+    static void add(const tick_mark& t);
+
+    /// The tick marks recorded so far.
+    const std::vector<tick_mark>& marks() const { return marks_; }
+
+private:
+    tick_marks_record* outer_;
+    std::vector<tick_mark> marks_;
+};
 
 }  // namespace plot

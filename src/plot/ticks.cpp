@@ -116,13 +116,15 @@ namespace {
 constexpr double pi_value = 3.14159265358979323846;
 
 /// The step of a pi axis as num/den of pi ({0, 1} if none fits): the finest of 1/8 ... 8
-/// with at most max_ticks ticks, eighths only where quarters would leave fewer than three.
-std::pair<int, int> pi_step(double lo, double hi, int max_ticks) {
+/// with at most max_ticks ticks, eighths only where quarters would leave fewer than three;
+/// ticks counted as the axis has them (rounded out to a tick where it expands, else within
+/// its limits), so that a thinned axis within fixed limits keeps multiples of pi.
+std::pair<int, int> pi_step(double lo, double hi, int max_ticks, bool expand) {
     const int steps[][2] = {{1, 8}, {1, 4}, {1, 2}, {1, 1}, {2, 1}, {4, 1}, {8, 1}};
     for (const auto& s : steps) {
-        const auto [a, b] = index_range(lo, hi, pi_value * s[0] / s[1], true);
+        const auto [a, b] = index_range(lo, hi, pi_value * s[0] / s[1], expand);
         const bool too_fine = s[1] == 8 && [&] {
-            const auto [qa, qb] = index_range(lo, hi, pi_value / 4, true);
+            const auto [qa, qb] = index_range(lo, hi, pi_value / 4, expand);
             return qb - qa + 1 >= 3;
         }();
         if (!too_fine && b - a + 1 <= std::max(max_ticks, 2)) return {s[0], s[1]};
@@ -155,7 +157,7 @@ void add_halves(tick_set& t, double step) {
 
 tick_set pi_ticks(double lo, double hi, int max_ticks, bool expand) {
     widen_if_degenerate(lo, hi);
-    const auto [num, den] = pi_step(lo, hi, max_ticks);
+    const auto [num, den] = pi_step(lo, hi, max_ticks, expand);
     // Too long a range for multiples of pi to read well, or too short for two of them
     // (amplitudes within a hair of pi): plain numbers.
     if (num == 0) return linear_ticks(lo, hi, max_ticks, expand);

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -56,11 +57,15 @@ struct glyph {
     plot::line_style line;
     plot::marker_style marker;
     int color;
-    std::optional<plot::rgb> rgb;
+    std::optional<std::array<double, 3>> rgb;
     bool operator==(const glyph&) const = default;
 };
 
-glyph glyph_of(const plot::series& s) { return {s.line, s.marker, s.color, s.rgb_color}; }
+glyph glyph_of(const plot::series& s) {
+    std::optional<std::array<double, 3>> rgb;
+    if (s.rgb_color) rgb = std::array<double, 3>{s.rgb_color->r, s.rgb_color->g, s.rgb_color->b};
+    return {s.line, s.marker, s.color, rgb};
+}
 
 /// A legend label up to its first ", " ("E = 1.6 m g L, libration" names the start "E = 1.6 m g L").
 std::string entry_name(const std::string& label) { return label.substr(0, label.find(", ")); }

@@ -148,6 +148,13 @@ given_time parse_time(const std::string& option, const std::string& text) {
     }
 }
 
+std::string listed_items(const std::string& text, const std::string& option) {
+    if (text != "-" && !text.starts_with("@")) return text;
+    std::string out;
+    for_each_item(text, option, [&](const std::string& item) { out += (out.empty() ? "" : ",") + item; });
+    return out;
+}
+
 std::string omega0_in_w0(const std::string& text, const std::optional<double>& length, double g) {
     if (text.empty()) return text;
     // The items as given, or read from @FILE or standard input (-): each converted alike.

@@ -50,7 +50,13 @@ _pendulum_figures() {
         --format) COMPREPLY=($(compgen -W "csv json" -- "$cur")); return ;;
         --check) COMPREPLY=($(compgen -W "aps aip ajp aps:1 aps:2 aip:1 aip:2 ajp:1 ajp:2" -- "$cur")); return ;;
         --tex-sizes) _pendulum_figures_words "$exe" tex-sizes; return ;;
-        --set) _pendulum_figures_words "$exe" set-keys; return ;;
+        --set)
+            if [[ $command == plot ]]; then
+                _pendulum_figures_words "$exe" plot-set-keys
+            else
+                _pendulum_figures_words "$exe" set-keys
+            fi
+            return ;;
         --method)
             if [[ $command == trajectory ]]; then
                 _pendulum_figures_words "$exe" motion-methods list

@@ -396,8 +396,10 @@ TEST(Loops, OneLegendPerAnimation) {
             first.push_back(s.label.markup);
             alphas.push_back(s.alpha);
         }
-        EXPECT_EQ(first, (std::vector<std::string>{"turning points", "<i>E</i> = 1.6, libration",
-                                                   "<i>E</i> = 2, separatrix", "<i>E</i> = 2.6, rotation"}))
+        EXPECT_EQ(first, (std::vector<std::string>{"turning points", "<i>E</i> = 1.6 <i>m g L</i>, libration",
+                                                   "<i>E</i> = 2 <i>m g L</i>, separatrix",
+                                                   "<i>E</i> = 2.6 <i>m g L</i>, rotation",
+                                                   "paths of the last 0.15 periods"}))
             << "frame " << i;
         // A cross-fade fades the drawing, not its legend: its glyphs as in the first frame.
         if (unfaded.empty()) unfaded = alphas;

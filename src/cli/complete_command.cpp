@@ -71,6 +71,8 @@ constexpr word_list word_lists[] = {
     {"themes", [] { return names(figures::builtin_themes()); }},
     {"tex-sizes", [] { return names(plot::tex_sizing_table()); }},
     {"set-keys", set_keys},
+    // plot --set takes the figure's columns, legend and title too.
+    {"plot-set-keys", [] { return set_keys() + "columns=\nlegend=\ntitle=\n"; }},
 };
 
 }  // namespace

@@ -148,10 +148,18 @@ given_time parse_time(const std::string& option, const std::string& text) {
     }
 }
 
-std::string omega0_in_w0(const std::string& text, const std::optional<double>& length, double g) {
-    if (text == "-" || text.starts_with("@")) return text;
+std::string listed_items(const std::string& text, const std::string& option) {
+    if (text != "-" && !text.starts_with("@")) return text;
     std::string out;
-    for (const auto& item : split_list(text)) {
+    for_each_item(text, option, [&](const std::string& item) { out += (out.empty() ? "" : ",") + item; });
+    return out;
+}
+
+std::string omega0_in_w0(const std::string& text, const std::optional<double>& length, double g) {
+    if (text.empty()) return text;
+    // The items as given, or read from @FILE or standard input (-): each converted alike.
+    std::string out;
+    for_each_item(text, "--omega0", [&](const std::string& item) {
         std::string value = item;
         if (const std::string number = without_suffix(item, "rad/s"); !number.empty()) {
             if (!length) {
@@ -165,11 +173,13 @@ std::string omega0_in_w0(const std::string& text, const std::optional<double>& l
             } catch (const std::invalid_argument& e) {
                 throw usage_error("--omega0 '" + shown_text(item.substr(0, 80)) + "': " + e.what());
             }
-            if (!(*length > 0) || !(g > 0)) throw usage_error("--omega0 '" + item + "': --length and --g must be above 0");
+            if (!(*length > 0) || !(g > 0)) {
+                throw usage_error("--omega0 '" + shown_text(item.substr(0, 80)) + "': --length and --g must be above 0");
+            }
             value = format_double(v / std::sqrt(g / *length));
         }
         out += (out.empty() ? "" : ",") + value;
-    }
+    });
     return out;
 }
 

@@ -151,10 +151,14 @@ struct given_time {
 /// followed by s in seconds; bad input names the option and the text.
 given_time parse_time(const std::string& option, const std::string& text);
 
+/// The items of a list option as one comma-separated text: `text` itself, or the items
+/// of @FILE or of standard input (-), read once.
+std::string listed_items(const std::string& text, const std::string& option);
+
 /// The items of --omega0 in units of w0 = sqrt(g/L): an item as given, or one in rad/s
 /// ("2.5rad/s") divided by w0 of `length` (metres) and `g` (m/s^2), rounded once; rad/s
 /// without a length is a usage_error that says to give --length. A list from @FILE or -
-/// is returned as it is.
+/// is read here, its items converted alike.
 std::string omega0_in_w0(const std::string& text, const std::optional<double>& length, double g);
 
 /// Throws a usage_error unless `method` applies to the start: the paper's approximants and

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <optional>
 #include <string>
@@ -51,7 +52,7 @@ constexpr key_option key_options[] = {
      "Phase, trajectory and pendulum plots: launch velocities theta'(0) of states started at --theta0, in units "
      "of w0 = sqrt(g/L), the natural frequency; in rad/s with --length (2.5rad/s)"},
     {"methods", spec_table::panel, "--methods", "LIST", value_kind::list, "Methods, a comma-separated LIST (see 'list')"},
-    {"range", spec_table::panel, "--range", "A,B", value_kind::range, "x range a,b: times, or amplitudes as angles"},
+    {"range", spec_table::panel, "--range", "A,B", value_kind::range, "x range a,b: times in the --time unit or in seconds with --length (0,5s), or amplitudes as angles"},
     {"time", spec_table::panel, "--time", "UNIT", value_kind::text, "Time axis of a trajectory: t/T (default), t/T0 or t/s"},
     {"harmonic", spec_table::panel, "--harmonic", "N", value_kind::integer, "Coefficient plots: the harmonic 2k+1 (default 1)"},
     {"harmonics", spec_table::panel, "--harmonics", "N", value_kind::integer, "Spectrum plots: how many odd harmonics"},
@@ -139,7 +140,7 @@ std::string number_text(const key_option& k, const std::string& text, bool integ
     } catch (const std::exception&) {
         ok = false;
     }
-    if (!ok) throw usage_error(std::string(k.option) + " '" + text + "': not " + (integer ? "a whole number" : "a number"));
+    if (!ok) throw usage_error(std::string(k.option) + " '" + shown_text(text.substr(0, 80)) + "': not " + (integer ? "a whole number" : "a number"));
     return integer ? std::to_string(std::stoll(text)) : format_double(std::stod(text));
 }
 
@@ -217,6 +218,62 @@ std::string data_table(const std::string& option) {
     std::string out = "[[panel.data]]\nfile = " + toml_string(option.substr(0, colon)) + "\n";
     constexpr std::string_view keys[] = {"x", "y", "y_err"};
     for (std::size_t i = 0; i < columns.size(); ++i) out += data_column(option, columns[i], keys[i]);
+    return out;
+}
+
+/// The [figure] keys --set takes beside a style file's: columns, legend, title.
+constexpr std::string_view figure_set_keys[] = {"columns", "legend", "title"};
+
+/// --set KEY=VALUE items cut into [figure] lines (its keys by name) and style file items.
+struct cut_sets {
+    std::map<std::string, std::string> figure;  ///< key to its TOML line
+    std::vector<std::string> style;             ///< KEY=VALUE of a style file
+};
+
+/// Cuts --set items into [figure] keys and style keys; a key of neither is a usage_error
+/// that names the keys of both.
+cut_sets cut_set_options(const std::vector<std::string>& sets) {
+    cut_sets out;
+    const auto style_keys = figures::style_keys();
+    for (const auto& item : sets) {
+        const auto eq = item.find('=');
+        const std::string key = item.substr(0, eq);
+        if (eq == std::string::npos || std::find(style_keys.begin(), style_keys.end(), key) != style_keys.end()) {
+            out.style.push_back(item);  // the style file's reader says what is wrong with it
+            continue;
+        }
+        const std::string value = item.substr(eq + 1);
+        if (key == "columns") {
+            const key_option k{"columns", spec_table::figure, "--set columns", "N", value_kind::integer, ""};
+            out.figure[key] = "columns = " + number_text(k, value, true) + "\n";
+        } else if (std::find(std::begin(figure_set_keys), std::end(figure_set_keys), key) != std::end(figure_set_keys)) {
+            out.figure[key] = key + " = " + toml_string(value) + "\n";
+        } else {
+            std::string keys;
+            for (const auto k : figure_set_keys) keys += (keys.empty() ? "" : ", ") + std::string(k);
+            std::string styles;
+            for (const auto& k : style_keys) styles += (styles.empty() ? "" : ", ") + k;
+            throw usage_error("--set '" + shown_text(item.size() <= 80 ? item : item.substr(0, 80) + "...") +
+                              "': unknown key '" + shown_text(key.substr(0, 40)) + "'; plot --set takes the figure keys " +
+                              keys + " and a style file's keys " + styles);
+        }
+    }
+    return out;
+}
+
+/// The [figure] lines of the options and of --set, a key given both ways refused.
+std::string figure_lines(const std::string& from_options, const cut_sets& sets, std::size_t panels) {
+    std::string out = from_options;
+    for (const auto& [key, line] : sets.figure) {
+        if (from_options.starts_with(key + " = ") || from_options.find("\n" + key + " = ") != std::string::npos) {
+            throw usage_error("--set " + key + " and --" + key + " both give the figure's " + key + ": give one");
+        }
+        out += line;
+    }
+    // --apart sets columns unless --set does.
+    if (panels > 1 && !sets.figure.contains("columns")) {
+        out += "columns = " + std::to_string(std::min<std::size_t>(panels, 6)) + "\n";
+    }
     return out;
 }
 
@@ -321,12 +378,49 @@ plot_options in_w0(const plot_options& given) {
     return o;
 }
 
+/// A trajectory's --range with items in seconds (0,5s) in the unit of its time axis: t/s
+/// (then --time t/s is implied), or t/T0 converted with --length and --g; the exact period
+/// of t/T is not known here, so seconds with --time t/T are refused.
+void range_in_time_unit(plot_options& o) {
+    const auto range = o.values.find("--range");
+    if (o.kind != "trajectory" || range == o.values.end()) return;
+    const auto parts = split_list(range->second);
+    // An item that is no time at all is left to the spec's reader and its message.
+    const auto in_seconds = [](const std::string& p) {
+        try {
+            return parse_time("--range", p).seconds;
+        } catch (const usage_error&) {
+            return false;
+        }
+    };
+    if (std::none_of(parts.begin(), parts.end(), in_seconds)) return;
+    const std::string shown = "--range '" + shown_text(range->second.substr(0, 80)) + "'";
+    if (o.length.empty()) throw usage_error(shown + " in seconds needs the pendulum's --length L in metres (and --g)");
+    const auto time = o.values.find("--time");
+    const std::string unit = time == o.values.end() ? "t/s" : time->second;
+    if (unit != "t/s" && unit != "t/T0") {
+        throw usage_error(shown + " in seconds goes with --time t/s (the default then) or t/T0, not --time " +
+                          shown_text(unit.substr(0, 40)));
+    }
+    (void)pendulum_table(o);  // --length and --g are numbers
+    const double seconds_per_t0 = 2 * std::numbers::pi * std::sqrt(std::stod(o.length) / (o.g.empty() ? 9.80665 : std::stod(o.g)));
+    std::string items;
+    for (const auto& p : parts) {
+        const auto t = parse_time("--range", p);
+        const double v = t.seconds && unit == "t/T0" ? t.value / seconds_per_t0 : t.value;
+        items += (items.empty() ? "" : ",") + format_double(v);
+    }
+    range->second = items;
+    o.values["--time"] = unit;
+}
+
 /// The plot command: a spec made from the options (one panel, or one per start with
 /// --apart), checked like a spec file.
 int run_plot(const plot_options& given) {
     std::map<spec_table, std::string> tables;
     std::string toml;
-    const plot_options o = in_w0(given);
+    plot_options o = in_w0(given);
+    range_in_time_unit(o);
     const auto panels = panel_values(o);
     for (const auto& values : panels) {
         std::string panel = "[[panel]]\nplot = " + toml_string(o.kind) + "\n";
@@ -342,7 +436,8 @@ int run_plot(const plot_options& given) {
         }
         toml += panel;
     }
-    if (panels.size() > 1) tables[spec_table::figure] += "columns = " + std::to_string(std::min<std::size_t>(panels.size(), 6)) + "\n";
+    const cut_sets sets = cut_set_options(o.sets);
+    tables[spec_table::figure] = figure_lines(tables[spec_table::figure], sets, panels.size());
     for (const auto& d : o.data) toml += data_table(d);
     toml = animation_table(o, tables[spec_table::animation]) + toml;
     toml = pendulum_table(o) + toml;
@@ -369,7 +464,7 @@ int run_plot(const plot_options& given) {
     r.dir = o.dir;
     r.formats = o.formats;
     r.theme = o.theme;
-    r.sets = o.sets;
+    r.sets = sets.style;
     r.dpi = o.dpi;
     r.size = o.size;
     r.jobs = o.jobs;
@@ -403,7 +498,9 @@ command add_plot_command(CLI::App& app) {
     cmd->add_option("-f,--formats", po->formats, "Comma-separated formats: " + format_list() + " (default: pdf,png)")
         ->type_name("LIST")->check(non_empty);
     cmd->add_option("--theme", po->theme, figures::theme_help() + "; default paper")->type_name("NAME")->check(non_empty);
-    cmd->add_option("--set", po->sets, "KEY=VALUE of a style file on top of the theme; repeatable")
+    cmd->add_option("--set", po->sets,
+                    "KEY=VALUE of a style file on top of the theme, or of the figure: columns, legend or title; "
+                    "repeatable")
         ->type_name("KEY=VALUE")->check(non_empty);
     cmd->add_option("--size", po->size, "A raster of WIDTHxHEIGHT pixels, e.g. 1920x1080 (the style key size_px)")
         ->type_name("WxH")

@@ -397,7 +397,10 @@ const start_option& single_start(const std::vector<start_option>& starts, const 
 }
 
 /// Writes trajectory's table row by row; every input is checked before the first row.
-void trajectory_stream(std::ostream& out, const trajectory_options& o, bool order_given, bool periods_given) {
+void trajectory_stream(std::ostream& out, const trajectory_options& given, bool order_given, bool periods_given) {
+    // --omega0 from @FILE or -: its items, as if typed, so that rad/s there counts as on the line.
+    trajectory_options o = given;
+    o.omega0 = listed_items(given.omega0, "--omega0");
     const auto format = parse_table_format(o.format);
     const auto starts = parse_starts(o.theta0, omega0_in_w0(o.omega0, o.length, o.g), o.energy);
     const time_unit_row& unit = parse_time_unit(o.time.empty() ? "t/T" : o.time);

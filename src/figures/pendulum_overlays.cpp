@@ -265,9 +265,10 @@ void reserve_timer_line(plot::panel& panel, double right) {
 
 }  // namespace
 
-void add_overlays_still(plot::panel& panel, const panel_spec& p, const std::vector<overlay_start>& starts) {
-    // The timer's line or lines above the circle, not over a bob near the top.
-    if (p.timer) {
+void add_overlays_still(plot::panel& panel, const panel_spec& p, const std::vector<overlay_start>& starts,
+                        bool clock) {
+    // The line of the timer or of an animation's clock above the circle, not over a bob near the top.
+    if (p.timer || clock) {
         panel.y.max = timer_top;
         reserve_timer_line(panel, p.energy_bars ? energy_bars_right : 1.2);
     }

@@ -68,9 +68,11 @@ inline constexpr double energy_bars_base = -1.1;
 /// The height of the panel's largest total energy.
 inline constexpr double energy_bars_height = 2.2;
 
-/// The parts of the overlays that do not move: the room for the bars on the right and each
-/// start's total energy bar.
-void add_overlays_still(plot::panel& panel, const panel_spec& p, const std::vector<overlay_start>& starts);
+/// The parts of the overlays that do not move: the room for the bars on the right, each
+/// start's total energy bar, and a line above the circle for the timer or for an animation's
+/// clock (`clock`), which is drawn at the drawing's top left.
+void add_overlays_still(plot::panel& panel, const panel_spec& p, const std::vector<overlay_start>& starts,
+                        bool clock = false);
 
 /// The overlays at time w0 t: kinetic and potential bars, arrows and the timer's text.
 void add_overlays_at(plot::panel& panel, const panel_context& c, const panel_spec& p,

@@ -6,6 +6,7 @@
 
 #include "figures/panel_support.hpp"
 #include "figures/pendulum_overlays.hpp"
+#include "pendulum/amplitude.hpp"
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
@@ -50,8 +51,9 @@ std::function<double(double)> angle_of(const method_spec& m, const pendulum::mot
 /// The bob's place for the angle a: the pivot at the origin, a rod of length 1.
 std::pair<double, double> bob_place(double a) { return {std::sin(a), -std::cos(a)}; }
 
-/// How a start's rod and bob look: with one start, the method's style; with several, the
-/// start's colour (the phase portrait's colour of its orbit) and the method's line.
+/// How a start's rod and bob look: with one start, the method's style, the theme's included
+/// (the glyph the method has in every other panel); with several, the start's colour (the
+/// phase portrait's colour of its orbit) and the method's line.
 series_style bob_style(const panel_spec& p, const std::vector<bob_start>& starts, std::size_t i, std::size_t j) {
     const auto& m = p.methods[j];
     series_style st = style_of(m, static_cast<int>(j));
@@ -64,9 +66,45 @@ series_style bob_style(const panel_spec& p, const std::vector<bob_start>& starts
         st.color = static_cast<int>(i);
         st.label = p.methods.size() == 1 ? plot::label(starts[i].label)
                                          : plot::join(plot::label(starts[i].label + ", "), st.label);
+        st.style_key.clear();
     }
-    st.style_key.clear();
     return st;
+}
+
+/// A moving part of the drawing in the start's style: no legend entry (the panel's key
+/// carries it) and no theme style (the part says how it looks).
+plot::series drawn_part(const series_style& st) {
+    plot::series s = series_of(st);
+    s.label.clear();
+    s.style_key.clear();
+    return s;
+}
+
+/// The legend entry of start i by method j: no points, the glyph of the method (one start) or
+/// of the start (several) as every panel draws it, themed alike.
+plot::series legend_key(const panel_spec& p, const std::vector<bob_start>& starts, std::size_t i, std::size_t j) {
+    plot::series key = series_of(bob_style(p, starts, i, j));
+    if (starts.size() > 1) key.marker = marker_style::none;  // the rod's line in the start's colour
+    key.id = "key:" + std::to_string(i + 1) + ":" + key.id;
+    return key;
+}
+
+/// The trail's legend entry: how far back it reaches, in seconds with a [pendulum] table and
+/// one start, else in periods; a faint line in the foreground colour.
+plot::series trail_key(const panel_context& c, const panel_spec& p, const std::vector<bob_start>& starts) {
+    plot::series key;
+    key.id = "key:trail";
+    key.alpha = 0.4;
+    const auto& m = starts.front().motion;
+    if (c.spec.pendulum && starts.size() == 1) {
+        const double w0_t = p.trail * (m.has_period() ? m.period() : 2 * pi);
+        key.label = plot::label("path of the last " +
+                                pendulum::format_double(std::round(w0_t * seconds_per_radian(c.spec) * 100) / 100) + " s");
+    } else {
+        key.label = plot::label("path" + std::string(starts.size() > 1 ? "s" : "") + " of the last " +
+                                pendulum::format_double(p.trail) + " period" + (p.trail == 1 ? "" : "s"));
+    }
+    return key;
 }
 
 }  // namespace
@@ -109,8 +147,15 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
             panel.data.push_back(std::move(mark));
         }
     }
+    // The legend: a key per start and method, and the trail's.
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+        for (std::size_t j = 0; j < p.methods.size(); ++j) panel.data.push_back(legend_key(p, starts, i, j));
+    }
+    if (p.trail > 0) panel.data.push_back(trail_key(c, p, starts));
     // The teaching overlays' parts that stay (the total energy), then, when still, the rest.
-    add_overlays_still(panel, p, starts);
+    // An animation's clock goes on its first drawing: every drawing keeps it a line, so that
+    // drawings side by side have one size.
+    add_overlays_still(panel, p, starts, c.animated && c.spec.animation && c.spec.animation->clock);
     if (!c.animated) {
         add_pendulum_state(panel, p, 0.0, 0.0);
         add_overlays_at(panel, c, p, starts, 0.0);
@@ -124,8 +169,7 @@ namespace {
 template <class Theta>
 void add_trail(plot::panel& panel, const series_style& st, const Theta& theta, double w0_t, double span) {
     for (int k = 0; k < 8 && span > 0; ++k) {
-        plot::series trail = series_of(st);
-        trail.label.clear();
+        plot::series trail = drawn_part(st);
         trail.line = line_style::solid;
         trail.marker = marker_style::none;
         trail.alpha = 0.08 + 0.06 * k;
@@ -148,8 +192,7 @@ template <class Theta>
 void add_streak(plot::panel& panel, const series_style& st, const Theta& theta, double w0_t, double frame_step,
                 marker_style bob_marker) {
     for (const auto& ghost : motion_streak(theta, w0_t, frame_step)) {
-        plot::series s = series_of(st);
-        s.label.clear();
+        plot::series s = drawn_part(st);
         s.line = line_style::none;
         // A blur, also behind an outlined bob: filled, fainter for an outline.
         s.marker = marker_style::filled_circle;
@@ -165,15 +208,17 @@ void add_streak(plot::panel& panel, const series_style& st, const Theta& theta, 
 
 /// The rod and the bob at angle a.
 void add_rod_and_bob(plot::panel& panel, const series_style& st, line_style line, marker_style bob_marker, double a) {
+    // The method's line, themed (a theme's dotted harmonic), solid where it has none (exact).
     plot::series rod = series_of(st);
+    rod.label.clear();
+    rod.style_line_only = true;
     rod.line = line == line_style::none ? line_style::solid : line;
     rod.marker = marker_style::none;
     rod.width_scale = 1.2;
     rod.id = "rod:" + st.id;
     rod.x = {0, std::sin(a)};
     rod.y = {0, -std::cos(a)};
-    plot::series bob = series_of(st);
-    bob.label.clear();
+    plot::series bob = drawn_part(st);
     bob.line = line_style::none;
     // The exact pendulum's bob is solid; the approximations' are outlines.
     bob.marker = bob_marker;
@@ -214,8 +259,7 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
             const marker_style bob_marker =
                 m.marker.value_or(is_exact(m) ? marker_style::filled_circle : marker_style::open_circle);
             add_streak(panel, st, theta, w0_t, frame_step, bob_marker);
-            add_rod_and_bob(panel, st, m.style.value_or(starts.size() > 1 ? st.line : line_style::solid), bob_marker,
-                            theta(w0_t));
+            add_rod_and_bob(panel, st, st.line, bob_marker, theta(w0_t));
         }
     }
     add_pivot(panel);

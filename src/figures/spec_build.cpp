@@ -135,10 +135,11 @@ plot::figure figure_grid(const figure_spec& spec, const build_options& options) 
 namespace {
 
 /// A series of the panel's methods with no value at all (a scheme without a period there)
-/// would be a legend entry over nothing: refused, naming the series and the amplitudes.
+/// would be a legend entry over nothing: refused, naming the series and the amplitudes. A
+/// series of no points at all is a legend key (a drawing's, for the rods its frames draw).
 void require_values(const plot::panel& panel, const panel_spec& p, std::size_t index) {
     for (const auto& s : panel.data) {
-        if (s.label.empty() || s.overlay) continue;
+        if (s.label.empty() || s.overlay || s.x.empty()) continue;
         if (std::any_of(s.y.begin(), s.y.end(), [](double v) { return std::isfinite(v); })) continue;
         std::string at;
         for (const auto& a : p.theta0) at += (at.empty() ? "" : ", ") + a.text;

@@ -438,4 +438,6 @@ plot::theme load_theme(std::string_view name_or_file, const std::vector<std::str
     return t;
 }
 
+std::vector<std::string> style_keys() { return all_keys(); }
+
 }  // namespace figures

@@ -31,6 +31,9 @@ std::string theme_help();
 /// Throws spec_error listing every problem, std::runtime_error for an unreadable file.
 plot::theme load_theme(std::string_view name_or_file, const std::vector<std::string>& sets = {});
 
+/// The keys of a style file, in the order its unknown-key message lists them.
+std::vector<std::string> style_keys();
+
 /// The style file of a built-in theme; throws std::invalid_argument for an unknown name.
 std::string_view theme_source(std::string_view name);
 

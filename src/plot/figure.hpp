@@ -139,6 +139,9 @@ struct series {
     bool autoscale = true;                  ///< false: leaves the axis limits alone (reference lines)
     bool sets_limits = true;                ///< false: data that leaves the axis limits alone and is clipped
     std::string style_key{};                ///< a theme's style for this name replaces line and marker
+    /// The theme's style sets only a drawn line (not "none") and leaves the marker alone: a
+    /// pendulum's rod, drawn as its method's line is drawn.
+    bool style_line_only = false;
     double marker_scale = 1.0;              ///< marker radius in units of the theme's
     double width_scale = 1.0;               ///< line width in units of the theme's
     double alpha = 1.0;                     ///< opacity, 0 (invisible) to 1

@@ -481,6 +481,10 @@ figure with_theme_styles(const figure& fig, const theme& th) {
                 if (s.data_slot >= 0) apply_data_style(s, th);
                 const auto it = s.style_key.empty() ? th.styles.end() : th.styles.find(s.style_key);
                 if (it == th.styles.end()) continue;
+                if (s.style_line_only) {
+                    if (it->second.line && *it->second.line != line_style::none) s.line = *it->second.line;
+                    continue;
+                }
                 if (it->second.line) s.line = *it->second.line;
                 if (it->second.marker) s.marker = *it->second.marker;
             }

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 
@@ -83,8 +84,33 @@ table_writer::table_writer(std::ostream& out, std::vector<std::string> columns, 
     buffer_.reserve(flush_bytes + 4096);
 }
 
+namespace {
+
+/// The number of a field, or NaN for text.
+double number_of(double v) { return v; }
+double number_of(const field& v) {
+    const double* x = std::get_if<double>(&v);
+    return x ? *x : std::numeric_limits<double>::quiet_NaN();
+}
+bool is_number(double) { return true; }
+bool is_number(const field& v) { return std::holds_alternative<double>(v); }
+
+}  // namespace
+
+double table_writer::first_empty_at(std::size_t column) const {
+    return column < first_empty_.size() ? first_empty_[column] : std::numeric_limits<double>::quiet_NaN();
+}
+
 template <class Value>
 void table_writer::write_row(const std::vector<Value>& values) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!is_number(values[i]) || std::isfinite(number_of(values[i]))) continue;
+        if (empty_.size() < values.size()) {
+            empty_.resize(values.size(), 0);
+            first_empty_.resize(values.size(), std::numeric_limits<double>::quiet_NaN());
+        }
+        if (empty_[i]++ == 0) first_empty_[i] = number_of(values.front());
+    }
     if (format_ == table_format::csv) {
         for (std::size_t i = 0; i < values.size(); ++i) {
             if (i) buffer_ += ',';

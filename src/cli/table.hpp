@@ -41,6 +41,11 @@ public:
     void finish();
     /// Writes the rows gathered so far to the stream.
     void flush();
+    /// How many number fields of a column were left empty (not finite: NaN or beyond the
+    /// largest double), so that the command can say why on standard error.
+    std::size_t empty_fields(std::size_t column) const { return column < empty_.size() ? empty_[column] : 0; }
+    /// The first column's number in the first row where `column` was left empty (NaN if none).
+    double first_empty_at(std::size_t column) const;
 
 private:
     template <class Value>
@@ -51,6 +56,8 @@ private:
     table_format format_;
     std::size_t rows_ = 0;
     std::string buffer_;  // rows not yet written: numbers go straight into it (std::to_chars)
+    std::vector<std::size_t> empty_;  // per column: number fields left empty
+    std::vector<double> first_empty_;  // per column: the first column's number where one first was
 };
 
 /// Writes the table: CSV with a header line, or JSON as an array of objects. Numbers use

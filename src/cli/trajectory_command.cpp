@@ -240,8 +240,9 @@ void append_values(const trajectory_context& c, const method_run& r, double s, s
         row.push_back(m.libration().theta_at_fraction(s));
         return;
     }
-    if (c.fractions) {
-        // A libration's state in periods T: its turning points and crossings land exactly.
+    if (c.fractions && m.exact_at_fraction(s)) {
+        // A libration's state in periods T: its turning points and crossings (from a quarter
+        // start), and its start and mirror image at every half period, land exactly.
         row.push_back(m.theta_at_fraction(s));
         if (c.state) row.push_back(m.velocity_at_fraction(s));
         return;
@@ -296,6 +297,23 @@ std::string json_head(const start_option& start, const std::string& theta0_text,
     return out + "\n ],\n \"rows\": ";
 }
 
+/// Says on standard error, per column, how many of its fields were left empty, where the
+/// first was, and why (`reason`): no field is empty without a word.
+void warn_empty_fields(const table_writer& writer, const std::vector<std::string>& columns, const std::string& reason) {
+    for (std::size_t i = 1; i < columns.size(); ++i) {
+        const std::size_t count = writer.empty_fields(i);
+        if (count == 0) continue;
+        std::cerr << "pendulum-figures: warning: " << count << (count == 1 ? " field" : " fields") << " of column "
+                  << columns[i] << " left empty (null in JSON), the first at " << columns.front() << " = "
+                  << format_double(writer.first_empty_at(i)) << ": " << reason << "\n";
+    }
+}
+
+/// Why a value of an exact or approximate trajectory is empty: only a number beyond a double.
+constexpr const char* beyond_double =
+    "the value is beyond the largest double, 1.7976931348623157e308 (a rotation's unwrapped angle far out, "
+    "or the time w0 t itself); omega, periodic, keeps every digit";
+
 /// The table of a user's theta(t) = f(t, theta0), t = w0 t, at the times asked for; refused
 /// for a state or an energy (the formula starts at rest at its amplitude) and where it is
 /// finite at none of them.
@@ -319,9 +337,11 @@ void write_formula_trajectory(std::ostream& out, table_format format, const meth
         throw usage_error("--method " + method.text() + " = '" + method.user->text() +
                           "' is not finite at any of the times asked for; check the formula");
     }
-    table_writer writer(out, {std::string(unit.column), "theta"}, format);
+    const std::vector<std::string> columns{std::string(unit.column), "theta"};
+    table_writer writer(out, columns, format);
     for (std::size_t i = 0; i < count; ++i) writer.row({time_at(i), theta(time_at(i))});
     writer.finish();
+    warn_empty_fields(writer, columns, "the formula '" + method.user->text() + "' is not finite there");
 }
 
 /// Refuses --samples and --periods outside their ranges (with --samples).
@@ -415,7 +435,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& given, bool 
     if (methods.front().user) return write_formula_trajectory(out, format, methods.front(), start, state, unit, w0, o, times);
     const bool paper_table = !state && unit.name == "t/T";
     const trajectory_context c{m, state, paper_table, unit.scale(m, w0),
-                               !paper_table && unit.name == "t/T" && m.kind() == regime::libration && m.starts_at_quarter()};
+                               !paper_table && unit.name == "t/T" && m.kind() == regime::libration};
     std::deque<method_run> runs;  // in place: a time reducer stays where it is made
     for (const auto& method : methods) prepare_run(runs.emplace_back(method), c, start, o, unit, times);
     warn_conditioning(start, o, times, c.scale);
@@ -428,6 +448,7 @@ void trajectory_stream(std::ostream& out, const trajectory_options& given, bool 
     write_rows(writer, c, runs, o, times);
     writer.finish();
     if (several_json) out << "}\n";
+    warn_empty_fields(writer, columns, beyond_double);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -41,6 +42,32 @@ long double exact_period_extended(const pendulum::amplitude& theta0) {
     return 1 / agm_extended(1, theta0.kp_extended());
 }
 
+namespace {
+
+/// sn, cn, dn next to m = 1 (k' below 1e-9) while k'^2 cosh^2 u <= k': the expansion in
+/// m1 = k'^2 to its first term (Abramowitz and Stegun 16.15), whose next is k'^2 smaller.
+/// There dn and cn fall to sqrt(k') (1e-150 at k' = 1e-300), and the Landen recursion, which
+/// forms them from cos of an argument near pi/2, keeps only their absolute digits: at
+/// (1e-300, 2) 1e15 T0 on, omega = 6.3580399324612655e-143 came out 6.359484957786013e-143.
+std::optional<jacobi_values> jacobi_near_separatrix(double u, double kp) {
+    if (!(kp < 1e-9)) return std::nullopt;
+    const double a = std::fabs(u);
+    if (a < 1e-8) return std::nullopt;  // the Maclaurin series
+    const double ch = std::cosh(a);
+    if (!(kp * ch * ch <= 1.0)) return std::nullopt;
+    const double sh = std::sinh(a);
+    const double t = std::tanh(a);
+    const double sech = 1.0 / ch;
+    const double q = 0.25 * kp * kp;
+    const double sc = sh * ch;
+    const double sn = t + q * (sc - a) * sech * sech;
+    const double cn = sech - q * (sc - a) * t * sech;
+    const double dn = sech + q * (sc + a) * t * sech;
+    return jacobi_values{std::copysign(sn, u), cn, dn};
+}
+
+}  // namespace
+
 jacobi_values jacobi(double u, double kp) {
     if (!std::isfinite(u)) throw domain_error("jacobi needs a finite argument, got " + format_double(u));
     if (!(kp >= 0.0 && kp <= 1.0)) {
@@ -52,6 +79,7 @@ jacobi_values jacobi(double u, double kp) {
         const double sech = 1.0 / std::cosh(u);
         return {std::tanh(u), sech, sech};
     }
+    if (const auto near_one = jacobi_near_separatrix(u, kp)) return *near_one;
     if (std::fabs(u) < 1e-8) {
         // The Maclaurin series: the next terms are u^2/6 and u^4/24 times smaller, below
         // rounding. (The Landen recursion below would overflow for |u| < 1e-154.)

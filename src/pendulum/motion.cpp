@@ -9,7 +9,9 @@
 #include "pendulum/written_mp.hpp"
 
 
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -110,6 +112,15 @@ std::string state_text(const written_number& theta, const written_number& omega)
     return "theta0 = " + shown(theta) + ", omega0 = " + shown(omega);
 }
 
+/// E in decimal where a double holds it to fewer digits than 17 or not at all (subnormal or
+/// 0), as numbers_of() says it for a state; empty where it is a normal double.
+std::string unheld_energy(long double energy) {
+    if (energy == 0 || std::fabs(energy) >= DBL_MIN) return "";
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17Lg", energy);
+    return text;
+}
+
 }  // namespace
 
 motion motion::from_state(const written_number& theta, const written_number& omega) {
@@ -169,10 +180,12 @@ motion motion::from_amplitude(const pendulum::amplitude& theta0) {
     const double kp = theta0.kp();
     m.origin_ = origin::amplitude;
     m.start_ = {theta0.radians(), 0.0};
+    m.start_angle_ = theta0.radians();
     m.kind_ = regime::libration;
     // E = 2 k^2 and 2 - E = 2 k'^2, each rounded once from extended precision.
     m.energy_ = static_cast<double>(2.0L * theta0.k_extended() * theta0.k_extended());
     m.gap_ = static_cast<double>(2.0L * theta0.kp_extended() * theta0.kp_extended());
+    m.energy_unheld_ = unheld_energy(2.0L * theta0.k_extended() * theta0.k_extended());
     m.k_ = k;
     m.kp_ = kp;
     m.libration_.emplace(theta0);
@@ -194,6 +207,7 @@ void motion::prepare(const start_numbers& n, double half_speed) {
     mirror_ = start_.omega < 0 ? -1.0 : 1.0;
     const auto [turns, angle] = reduce(mirror_ * start_.theta);
     turns_ = turns;
+    start_angle_ = mirror_ * angle;
     if (kind_ == regime::libration) {
         given_.emplace(amplitude::from_parts(n.theta0, n.d, k_, kp_));
         libration_.emplace(*given_);
@@ -262,20 +276,31 @@ double motion::libration_center() const {
     return mirror_ * turns_ * two_pi_hi + mirror_ * turns_ * two_pi_lo;
 }
 
-double motion::fraction_of_period(double s) const {
+motion::folded_time motion::fraction_of_period(double s) const {
     (void)libration();
     if (!std::isfinite(s)) throw domain_error("time must be finite, got " + format_double(s));
-    return (s - std::nearbyint(s)) + start_fraction_;
+    // Whole periods are dropped and a half period folded away, each step exact (s less the
+    // integer nearest it, then +-1/2 by Sterbenz): any libration has theta(t + T/2) =
+    // 2 center - theta(t) and omega(t + T/2) = -omega(t), so every multiple of T/2 lands on
+    // the start or its mirror image exactly, whatever the start's place in its period.
+    const double rest = s - std::nearbyint(s);
+    if (rest > 0.25) return {rest - 0.5, true};
+    if (rest < -0.25) return {rest + 0.5, true};
+    return {rest, false};
 }
 
 double motion::theta_at_fraction(double s) const {
-    if (s == 0) return start_.theta;
-    return libration_center() + libration_->theta_at_fraction(fraction_of_period(s));
+    const folded_time f = fraction_of_period(s);
+    const double sign = f.half ? -1.0 : 1.0;
+    if (f.rest == 0) return f.half ? libration_center() - start_angle_ : start_.theta;
+    return libration_center() + sign * libration_->theta_at_fraction(f.rest + start_fraction_);
 }
 
 double motion::velocity_at_fraction(double s) const {
-    if (s == 0) return start_.omega;
-    return pendulum::velocity_at_fraction(*libration_, fraction_of_period(s));
+    const folded_time f = fraction_of_period(s);
+    const double sign = f.half ? -1.0 : 1.0;
+    if (f.rest == 0) return sign * start_.omega;
+    return sign * pendulum::velocity_at_fraction(*libration_, f.rest + start_fraction_);
 }
 
 double start_phase(const motion& m, const fourier_solution& solution) {
@@ -305,6 +330,39 @@ double motion::forward_velocity(double tau) const {
         const double revolution = 2.0 * k_ * quarter_;
         const double r = (tau - std::nearbyint(tau / revolution) * revolution) / k_;
         return 2.0 / k_ * dn_reduced(r, quarter_, kp_);
+    }
+    }
+    return 0.0;
+}
+
+namespace {
+
+/// sin(theta) of a rotation theta = 2 am(r | k), r in [-K, K]: 2 sn cn, beyond K/2 through
+/// v = K - |r| (sn = cn(v)/dn(v), cn = k' sn(v)/dn(v)), so that next to the top, where theta is
+/// pi to every digit a double has, it keeps its own.
+double rotation_sine(double r, double quarter, double kp) {
+    const double sign = r < 0 ? -1.0 : 1.0;
+    r = std::fabs(r);
+    if (r <= 0.5 * quarter) {
+        const auto j = jacobi(r, kp);
+        return sign * 2.0 * j.sn * j.cn;
+    }
+    const auto j = jacobi(quarter - r, kp);
+    return sign * 2.0 * kp * j.cn * j.sn / (j.dn * j.dn);
+}
+
+}  // namespace
+
+double motion::acceleration(double w0_t) const {
+    if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
+    const double tau = w0_t + offset_;
+    switch (kind_) {
+    case regime::libration: return -std::sin(theta(w0_t));
+    case regime::separatrix: return -mirror_ * 2.0 * std::tanh(tau) / std::cosh(tau);
+    case regime::rotation: {
+        const double revolution = 2.0 * k_ * quarter_;
+        const double r = (tau - std::nearbyint(tau / revolution) * revolution) / k_;
+        return -mirror_ * rotation_sine(r, quarter_, kp_);
     }
     }
     return 0.0;

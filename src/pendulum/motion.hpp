@@ -6,6 +6,7 @@
 #include "pendulum/approximants.hpp"
 #include "pendulum/exact.hpp"
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -136,18 +137,30 @@ public:
     /// bottom), so that theta_at_fraction() keeps every digit; elsewhere the start's place is a
     /// rounded fraction, and a time reduced in w0 t is the better clock.
     bool starts_at_quarter() const { return at_quarter_; }
+    /// True where theta_at_fraction(s) and velocity_at_fraction(s) keep every digit: a start at
+    /// a quarter period, or any start at a multiple of half a period (its start or mirror image).
+    bool exact_at_fraction(double s) const { return at_quarter_ || 2.0 * s == std::nearbyint(2.0 * s); }
 
     /// theta at time w0 t, unwrapped (continuous in t).
     double theta(double w0_t) const;
     /// theta'/w0 at time w0 t.
     double velocity(double w0_t) const;
+    /// theta''/w0^2 = -sin(theta) at time w0 t, from the Jacobi functions for a rotation and the
+    /// separatrix, so that it keeps its relative digits next to the top.
+    double acceleration(double w0_t) const;
 
 private:
     motion() = default;
     /// Sets the regime, moduli and time offset from the start and its numbers.
     void prepare(const start_numbers& n, double half_speed);
-    /// The libration's clock at a fraction of its period since the start.
-    double fraction_of_period(double s) const;
+    /// A time in periods since the start, less its whole periods and folded by a half period
+    /// into [-1/4, 1/4] (`half` where it was folded), each step exact.
+    struct folded_time {
+        double rest;  ///< the time left in periods, in [-1/4, 1/4]
+        bool half;    ///< true where a half period was taken away
+    };
+    /// The libration's time since the start, folded (throws for a time that is not finite).
+    folded_time fraction_of_period(double s) const;
     /// theta and theta'/w0 of the forward motion (omega >= 0 after mirroring) at w0 t.
     double forward_theta(double tau) const;
     double forward_velocity(double tau) const;
@@ -162,6 +175,7 @@ private:
     double quarter_ = 0;  ///< K(k)
     double mirror_ = 1;   ///< -1 where the start moves backwards: theta = -forward(-start)
     double turns_ = 0;    ///< the multiple of 2 pi nearest the mirrored start angle
+    double start_angle_ = 0;  ///< the start angle less libration_center(), to rounding
     double offset_ = 0;   ///< the forward motion's time at the start
     std::optional<exact_solution> libration_;
     std::optional<pendulum::amplitude> given_;  ///< the amplitude itself, for from_amplitude()

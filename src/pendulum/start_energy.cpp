@@ -79,7 +79,16 @@ start_energy decide_start(const std::function<start_energy(mpfr_prec_t)>& at, co
         start_energy coarse = at(bits);
         start_energy fine = at(2 * bits);
         const bool zero = vanishes(coarse) && vanishes(fine);
-        if (!vanishes(coarse) && !vanishes(fine) && agree(coarse.gap, fine.gap)) return fine;
+        const bool gap_decided = !vanishes(coarse) && !vanishes(fine) && agree(coarse.gap, fine.gap);
+        // The energy too must agree: an angle far out (1e307pi) loses its place in the turn to
+        // the precision, and a state at rest at a multiple of 2 pi has E = 0 to every bit.
+        if (gap_decided && agree(coarse.energy, fine.energy)) return fine;
+        if (bits == last && gap_decided) {
+            throw domain_error(what + ": its energy is " + decimal(fine.energy) + " at 2560 bits and " +
+                               decimal(coarse.energy) + " at 1280: E = 0 (at rest at the bottom) to the precision "
+                               "of its terms, or an angle too far out for its place in the turn to be known; give "
+                               "a start whose energy is not 0 (an angle within a few turns of 0, or omega0 not 0)");
+        }
         if (bits == last && zero) {
             // E = 2 to 2552 bits of its terms: the numbers as written are on the separatrix.
             fine.energy = real(2.0, 2 * bits);

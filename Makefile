@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # pendulum-figures: thin front end to CMake.
-#   make            build (installs missing Debian packages when run as root)
-#   make test       build and run every test (with CI set, as CI sets it for .ci/run, warnings are
+#   make            build the program (installs missing Debian packages when run as root: only
+#                   those of packaging/packages/build.list; each target below adds its own list)
+#   make test       build the tests too and run every test (with CI set, as CI sets it for .ci/run, warnings are
 #                   errors: PENDULUM_WERROR=ON)
 #   make check-sanitizers  the tests again under ASan and UBSan (run by .ci/run)
 #   make figures    build and write every figure into figures/
@@ -33,46 +34,17 @@ CMAKE_FLAGS += "-DCMAKE_MODULE_LINKER_FLAGS=$(shell $(DEB_BUILDFLAGS) LDFLAGS)"
 CMAKE_FLAGS += -DCMAKE_INSTALL_LIBDIR=lib/$(shell dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null)
 endif
 
-# Debian packages needed to build and test. GoogleTest and Google Benchmark are listed too,
-# so that a machine without them gets them the same way.
-DEB_PACKAGES := g++ cmake make pkgconf
-DEB_PACKAGES += libgsl-dev libmpfr-dev libcairo2-dev libpango1.0-dev libcli11-dev libpng-dev libdeflate-dev
-DEB_PACKAGES += libgtest-dev libbenchmark-dev
-DEB_PACKAGES += libtomlplusplus-dev libgif-dev
-# FFmpeg's libraries for -f mp4 and -f webm; ffmpeg's ffprobe and ffmpeg read them in the tests.
-DEB_PACKAGES += libavcodec-dev libavformat-dev libavutil-dev ffmpeg
-# Beamer and animate, for the test that plays an animation's PDF pages.
-# (and LaTeX overlays: pdflatex, latex, dvips, Times through mathptmx, ps2pdf)
-DEB_PACKAGES += texlive-latex-base texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended
-DEB_PACKAGES += ghostscript
-# The man pages (checked with man), the Debian packages (dpkg-dev, checked with lintian),
-# completion.
-DEB_PACKAGES += man-db dpkg-dev lintian bash-completion
-# Headless Chromium draws the SVGs and plays the videos in the browser test.
-DEB_PACKAGES += chromium
-# clang and its sanitizer runtimes: the sanitizer run of make test, and make fuzz.
-DEB_PACKAGES += clang libclang-rt-14-dev
-# clang-tidy, for make tidy.
-DEB_PACKAGES += clang-tidy
-DEB_PACKAGES += fonts-cmu fonts-dejavu-core fonts-dejavu-extra poppler-utils
-# fc-list and fc-scan, for the test of fonts installed for the user.
-DEB_PACKAGES += fontconfig
-# The paper's class (revtex4), and librsvg's SVG reader: the figures as the paper and other
-# readers show them.
-DEB_PACKAGES += texlive-publishers librsvg2-bin
-# make bench: the tools it measures against, and callgrind.
-DEB_PACKAGES += python3-matplotlib python3-scipy python3-pil gnuplot-nox valgrind
-# ninja, for the test of the README's build recipes (make's and ninja's).
-DEB_PACKAGES += ninja-build
-
-.PHONY: all deps build test check-sanitizers bench figures update-baselines install deb fuzz tidy clean
-
-all: build
-
-deps:
+# Debian packages, in the lists of packaging/packages/ (one file per purpose): make, make
+# figures and make install install build.list only (what the program builds and runs with);
+# make test and make check-sanitizers add test.list, make bench bench.list, make tidy
+# tidy.list, make fuzz fuzz.list and make deb deb.list.
+packages = $(shell sed -e 's/[#].*//' $(foreach l,$(1),packaging/packages/$(l).list))
+# install_missing LISTS: installs the packages of LISTS not yet installed (as root), or
+# prints the apt-get command that would.
+define install_missing
 	@if command -v dpkg-query >/dev/null 2>&1; then \
 	  missing=""; \
-	  for p in $(DEB_PACKAGES); do \
+	  for p in $(call packages,$(1)); do \
 	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
 	  done; \
 	  if [ -n "$$missing" ]; then \
@@ -86,12 +58,38 @@ deps:
 	    fi; \
 	  fi; \
 	fi
+endef
+
+# What make builds: the program (with its video module) and the core library, not the tests.
+PROGRAM_TARGETS := pendulum-figures pendulum_core
+
+.PHONY: all deps deps-test deps-bench deps-tidy deps-fuzz deps-deb build build-tests test check-sanitizers bench figures update-baselines install deb fuzz tidy clean
+
+all: build
+
+deps:
+	$(call install_missing,build)
+deps-test:
+	$(call install_missing,build test)
+deps-bench:
+	$(call install_missing,build bench)
+deps-tidy:
+	$(call install_missing,build tidy)
+deps-fuzz:
+	$(call install_missing,build fuzz)
+deps-deb:
+	$(call install_missing,build deb)
 
 build: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j $(JOBS) --target $(PROGRAM_TARGETS)
+
+# The program and the tests (PENDULUM_BUILD_TESTS, off unless asked for).
+build-tests: deps-test
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DPENDULUM_BUILD_TESTS=ON
 	cmake --build $(BUILD) -j $(JOBS)
 
-test: build
+test: build-tests
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 # The whole suite again under AddressSanitizer and UndefinedBehaviorSanitizer, in a second
@@ -105,8 +103,8 @@ SANITIZE := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-r
 # LeakSanitizer's stop-the-world tracer at exit was seen to crash now and then (SIGSEGV in
 # the tracer, not a leak), under load.
 VIDEO_TESTS := ^(Video|Browser|PlotAnimates)\.|^Animation\.OverTheTopInEveryThemeAndFormat$$|^Loops\.GifDelaysReadBackAreEqual$$
-check-sanitizers: deps
-	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_BUILD_BENCH=OFF \
+check-sanitizers: deps-test
+	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_BUILD_TESTS=ON -DPENDULUM_BUILD_BENCH=OFF \
 	  -DCMAKE_CXX_FLAGS="$(SANITIZE) -O1" -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE)" \
 	  -DCMAKE_MODULE_LINKER_FLAGS="$(SANITIZE)"
 	cmake --build build-asan -j $(JOBS)
@@ -115,7 +113,9 @@ check-sanitizers: deps
 	ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -R '$(VIDEO_TESTS)'
 
-bench: build
+bench: deps-bench
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DPENDULUM_BUILD_BENCH=ON
+	cmake --build $(BUILD) -j $(JOBS) --target $(PROGRAM_TARGETS) bench_pendulum
 	$(BUILD)/bench_pendulum --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
 	  --benchmark_min_time=0.2
 	bench/compare.sh $(BUILD)/pendulum-figures $(BENCH_ROUNDS)
@@ -137,10 +137,9 @@ update-baselines: build
 # examples and the core library (headers, CMake package, pkg-config file). Builds only what
 # it installs (not the tests), and after make nothing at all.
 PREFIX ?= /usr/local
-INSTALLED_TARGETS := pendulum-figures pendulum_core
 install: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_INSTALL_PREFIX=$(PREFIX)
-	cmake --build $(BUILD) -j $(JOBS) --target $(INSTALLED_TARGETS)
+	cmake --build $(BUILD) -j $(JOBS) --target $(PROGRAM_TARGETS)
 	DESTDIR=$(DESTDIR) cmake --install $(BUILD) --prefix $(PREFIX)
 
 # make fuzz: the libFuzzer harnesses of fuzz/ (fuzz/CMakeLists.txt: clang, ASan, UBSan, the
@@ -151,7 +150,7 @@ FUZZ_BUILD ?= build-fuzz
 # Inputs up to the largest spec or style file (1 MiB, src/figures/input_file.hpp): libFuzzer's
 # default of 4096 bytes would never try a key 50,000 deep.
 FUZZ_MAX_LEN ?= 1048576
-fuzz: deps
+fuzz: deps-fuzz
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DPENDULUM_BUILD_FUZZERS=ON \
 	  -DPENDULUM_BUILD_TESTS=OFF -DPENDULUM_BUILD_BENCH=OFF
@@ -164,15 +163,15 @@ fuzz: deps
 
 # make deb: build/pendulum-figures_VERSION_ARCH.deb (the program) and
 # build/libpendulum-dev_VERSION_ARCH.deb (the core library), from packaging/debian/.
-deb: deps
+deb: deps-deb
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
-	cmake --build $(BUILD) -j $(JOBS) --target $(INSTALLED_TARGETS)
+	cmake --build $(BUILD) -j $(JOBS) --target $(PROGRAM_TARGETS)
 	packaging/build-deb.sh $(BUILD) $(BUILD)
 
 # make tidy: clang-tidy with the checks of .clang-tidy (every function's cognitive complexity
 # at most 25) on every source file of the four layers, compiled as the build compiles it
 # (the build directory's compile_commands.json); any report fails.
-tidy: deps
+tidy: deps-tidy
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
 	ls src/pendulum/*.cpp src/plot/*.cpp src/figures/*.cpp src/cli/*.cpp | \
 	  xargs -P $(JOBS) -n 8 clang-tidy -p $(BUILD) --quiet --extra-arg=-Wno-unknown-warning-option

@@ -8,7 +8,8 @@
 # Last, the worst accepted spec (bench/worst_accepted.toml, estimated just under the render
 # bound): its time and peak memory.
 # Usage: compare.sh EXE [ROUNDS]   (BENCH_MEMORY=0 leaves out the memory rows, BENCH_WORST=0
-# the worst accepted spec, which takes minutes)
+# the worst accepted spec, which takes minutes; BENCH_ROWS="paper fig7 ..." runs only those
+# rows of the table, BENCH_INSTRUCTIONS=0 leaves out callgrind)
 set -euo pipefail
 exe=$(realpath "${1:?usage: compare.sh EXE [ROUNDS]}")
 rounds=${2:-5}
@@ -38,14 +39,25 @@ mkdir -p "$out/ours" "$out/theirs" "$out/gnuplot"
 # A million amplitudes for eval (not timed).
 awk 'BEGIN { srand(1); for (i = 0; i < 1000000; i++) printf "%.17g\n", 0.01 + 3.09 * rand() }' >"$out/amplitudes"
 
-rows=(paper catalog fig7 swing mp4 eval)
+# Fifty one-panel specs, for one render of 50 figures against 50 renders of one (not timed).
+mkdir -p "$out/fifty" "$out/ours50"
+for i in $(seq -w 1 50); do
+  printf '[[panel]]\nplot = "period"\nmethods = ["exact", "lowest", "second"]\n' >"$out/fifty/f$i.toml"
+done
+
+# Each row: two commands, ours and a peer's, run in turn in every round.
+rows=(${BENCH_ROWS:-paper catalog fig7 swing mp4 eval startup-gnuplot startup-matplotlib fifty})
 declare -A label ours theirs peer
 label[paper]="7 paper figures, PNG 300 dpi + PDF"; peer[paper]="matplotlib script"
 label[catalog]="render --all, PNG 300 dpi + PDF"; peer[catalog]="bench/matplotlib_catalog.py"
 label[fig7]="Fig. 7, PNG + PDF, same pixels"; peer[fig7]="gnuplot pngcairo + pdfcairo"
-label[swing]="swing GIF, 441 frames 1280x720"; peer[swing]="matplotlib FuncAnimation"
+label[swing]="swing GIF, 381 frames 1280x720"; peer[swing]="matplotlib FuncAnimation"
 label[mp4]="MP4, 30 s at 1080p, two pendulums"; peer[mp4]="ffmpeg decode + x264 veryfast"
 label[eval]="eval of 1e6 amplitudes (theta0, period_exact)"; peer[eval]="numpy/scipy + savetxt"
+label[startup-gnuplot]="start-up (--version), 10 runs"; peer[startup-gnuplot]="gnuplot -e exit, 10 runs"
+label[startup-matplotlib]="start-up (--version), 10 runs"; peer[startup-matplotlib]="python3 import matplotlib, 10 runs"
+label[fifty]="50 one-panel figures in one render, PNG"; peer[fifty]="50 renders of one figure"
+ten() { for _ in 1 2 3 4 5 6 7 8 9 10; do "$@"; done; }
 run_ours() {
   case $1 in
     paper) "$exe" render $paper -f png,pdf --dpi 300 --force -o "$out/ours" ;;
@@ -54,6 +66,8 @@ run_ours() {
     swing) "$exe" render swing --theme slides -f gif --force -o "$out/ours" ;;
     mp4) rm -f "$out/ours/pendulum.mp4"; "$exe" plot pendulum "${mp4_args[@]}" -o "$out/ours" ;;
     eval) "$exe" eval --theta0 @"$out/amplitudes" --columns theta0,period_exact >"$out/ours/eval.csv" ;;
+    startup-*) ten "$exe" --version ;;
+    fifty) "$exe" render "$out"/fifty/*.toml -f png --force -o "$out/ours50" ;;
   esac
 }
 run_theirs() {
@@ -64,6 +78,9 @@ run_theirs() {
     swing) "$python" "$here/matplotlib_swing.py" "$out/theirs/swing.gif" ;;
     mp4) ffmpeg -nostdin -v error -y -i "$out/mp4/pendulum.mp4" -c:v libx264 -preset veryfast "$out/theirs/pendulum.mp4" ;;
     eval) "$python" "$here/numpy_eval.py" "$out/amplitudes" "$out/theirs/eval.csv" ;;
+    startup-gnuplot) ten gnuplot -e exit ;;
+    startup-matplotlib) ten "$python" -c 'import matplotlib' ;;
+    fifty) for f in "$out"/fifty/*.toml; do "$exe" render "$f" -f png --force -o "$out/ours50" || return 1; done ;;
   esac
 }
 # The video row's floor: ffmpeg decoding our video and encoding its frames again (x264's
@@ -86,6 +103,10 @@ for r in "${rows[@]}"; do
     "$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.1fx", b / a }')"
 done
 
+/usr/bin/time -f '%M' -o "$out/rss" "$exe" render "$out"/fifty/*.toml -f png --force -o "$out/ours50" >/dev/null
+printf '%-48s %6d MB (max RSS, %d workers)\n' "50 one-panel figures in one render, PNG" $(( $(cat "$out/rss") / 1024 )) "$(nproc)"
+
+[ "${BENCH_INSTRUCTIONS:-1}" = 0 ] || {
 # Instructions, one worker (callgrind counts every thread; one keeps the count steady).
 instructions() {
   valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 >/dev/null |
@@ -102,13 +123,14 @@ printf '%-48s %6.0f M\n' "Fig. 7, PNG + PDF" "$(awk -v n="$n" 'BEGIN { print n /
 one=$(instructions "$exe" render swing --theme slides -f gif --force --jobs 1 --frames 1..1 -o "$out/ours")
 more=$(instructions "$exe" render swing --theme slides -f gif --force --jobs 1 --frames 1..31 -o "$out/ours")
 printf '%-48s %6.1f M\n' "swing GIF 1280x720, per frame" "$(awk -v a="$one" -v b="$more" 'BEGIN { print (b - a) / 30 / 1e6 }')"
+}
 
+[ "${BENCH_MEMORY:-1}" = 0 ] && exit 0
 # The 30-s 1080p MP4's peak memory.
 rm -f "$out/ours/pendulum.mp4"
 /usr/bin/time -f '%M' -o "$out/rss" "$exe" plot pendulum "${mp4_args[@]}" -o "$out/ours" >/dev/null 2>&1
 printf '%-48s %6d MB\n' "MP4 30 s 1080p, peak memory (max RSS)" $(( $(cat "$out/rss") / 1024 ))
 
-[ "${BENCH_MEMORY:-1}" = 0 ] && exit 0
 # Peak memory of the GIF at any length: the swing for 1 and 30 periods, at 720p and 4K (at
 # 4K, 30 periods are more pixels than an animation may have: its first 2400 frames).
 echo
@@ -122,8 +144,8 @@ for size in 1280x720 3840x2160; do
     [ "$size" = 3840x2160 ] && [ "$periods" = 30 ] && frames=(--frames 1..2400)
     /usr/bin/time -f '%M' -o "$out/rss" "$exe" render "$out/swing$periods.toml" --theme slides --size "$size" \
       -f gif --force -o "$out/ours" "${frames[@]}" >/dev/null
-    printf '%-48s %6d MB, file %6.1f MB\n' "$size, $periods period(s)${frames:+ (frames 1..2400)}" \
-      $(( $(cat "$out/rss") / 1024 )) "$(awk -v n="$(stat -c %s "$out/ours/swing$periods.gif")" 'BEGIN { print n / 1e6 }')"
+    printf '%-48s %6d MB, file %.1f MB\n' "$size, $periods period(s)${frames:+ (frames 1..2400)}" $(( $(cat "$out/rss") / 1024 )) \
+      "$(awk -v n="$(stat -c %s "$out/ours/swing$periods.gif")" 'BEGIN { print n / 1e6 }')"
   done
 done
 

@@ -6,7 +6,7 @@
 #   pendulum_add_figures(TARGET docs-figures [ALL]
 #                        SPECS a.toml b.toml [period ...]
 #                        [FORMATS pdf svg ...] [OUTPUT_DIR dir] [THEME name|file.toml]
-#                        [OPTIONS --set tick_font_pt=8 ...] [OUTPUTS_VARIABLE var])
+#                        [OPTIONS --set tick_font_pt=8 ...] [JOBS n] [OUTPUTS_VARIABLE var])
 #
 # SPECS are spec files (relative to the current source directory) or built-in figure ids as
 # `pendulum-figures list` prints them (not the aliases fig1 ...); FORMATS default to pdf;
@@ -14,17 +14,23 @@
 # OUTPUT_DIR/NAME.FORMAT for every format, NAME the spec file's name without .toml (a
 # LaTeX overlay format, pdf_tex or eps_tex, writes its drawing NAME.pdf or NAME.eps too).
 # OUTPUTS_VARIABLE receives the list of files, for a document's DEPENDS. The program is
-# PENDULUM_FIGURES_EXECUTABLE: the one installed with this package, or found on PATH.
+# PENDULUM_FIGURES_EXECUTABLE: the one installed with this package (or the build tree's, for
+# -Dpendulum_DIR=<build directory>), or found on PATH.
+#
+# Each render runs with JOBS workers (--jobs, default 1): the build runs renders in parallel
+# as it runs compiles (ninja -jN, make -jN), and a render's own default, one worker per CPU,
+# would run N times as many workers as the build was given.
 #
 # With Ninja, a figure whose bytes did not change is left untouched and CMake's restat
 # keeps what depends on it from rebuilding; Makefile generators have no restat, so there
 # the files are always rewritten (--force) and the build is up to date after one run.
 
 function(pendulum_add_figures)
-    cmake_parse_arguments(PARSE_ARGV 0 arg "ALL" "TARGET;OUTPUT_DIR;THEME;OUTPUTS_VARIABLE" "SPECS;FORMATS;OPTIONS")
+    cmake_parse_arguments(PARSE_ARGV 0 arg "ALL" "TARGET;OUTPUT_DIR;THEME;JOBS;OUTPUTS_VARIABLE"
+                          "SPECS;FORMATS;OPTIONS")
     if(arg_UNPARSED_ARGUMENTS)
         message(FATAL_ERROR "pendulum_add_figures: unknown arguments ${arg_UNPARSED_ARGUMENTS}; it takes TARGET, "
-                            "ALL, SPECS, FORMATS, OUTPUT_DIR, THEME, OPTIONS and OUTPUTS_VARIABLE")
+                            "ALL, SPECS, FORMATS, OUTPUT_DIR, THEME, OPTIONS, JOBS and OUTPUTS_VARIABLE")
     endif()
     if(NOT arg_TARGET OR NOT arg_SPECS)
         message(FATAL_ERROR "pendulum_add_figures: give TARGET name and SPECS file.toml ...")
@@ -32,6 +38,16 @@ function(pendulum_add_figures)
     if(NOT arg_FORMATS)
         set(arg_FORMATS pdf)
     endif()
+    if(NOT DEFINED arg_JOBS)
+        set(arg_JOBS 1)
+    elseif(NOT arg_JOBS MATCHES "^[1-9][0-9]*$")
+        message(FATAL_ERROR "pendulum_add_figures: JOBS ${arg_JOBS}: the number of workers of each render, 1 or more")
+    endif()
+    foreach(option IN LISTS arg_OPTIONS)
+        if(option MATCHES "^--jobs")
+            message(FATAL_ERROR "pendulum_add_figures: OPTIONS ${option}: give the workers of each render as JOBS n")
+        endif()
+    endforeach()
     if(NOT arg_OUTPUT_DIR)
         set(arg_OUTPUT_DIR "${CMAKE_CURRENT_BINARY_DIR}/figures")
     endif()
@@ -91,7 +107,7 @@ function(pendulum_add_figures)
             OUTPUT ${outputs}
             COMMAND "${CMAKE_COMMAND}" -E make_directory "${out_dir}"
             COMMAND "${PENDULUM_FIGURES_EXECUTABLE}" render "${input}" -f "${formats}" -o "${out_dir}"
-                    --depfile "${depfile}" ${theme_args} ${force} ${arg_OPTIONS}
+                    --depfile "${depfile}" --jobs ${arg_JOBS} ${theme_args} ${force} ${arg_OPTIONS}
             DEPENDS ${depends} ${theme_depends} "${PENDULUM_FIGURES_EXECUTABLE}"
             DEPFILE "${depfile}"
             COMMENT "Rendering figure ${name} (${formats})"

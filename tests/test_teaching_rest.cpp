@@ -121,7 +121,9 @@ TEST(TeachingRest, OneGlyphPerMethodInEveryPanel) {
                 }
             }
             // swing and over-the-top show their methods or starts in two panels.
-            if (e->id == "swing" || e->id == "over-the-top") EXPECT_GT(compared, 0) << e->id << ": no label in two panels";
+            if (e->id == "swing" || e->id == "over-the-top") {
+                EXPECT_GT(compared, 0) << e->id << ": no label in two panels";
+            }
             // The rods in a frame: the key's themed line (solid for none), in its colour.
             const auto frame = plot::with_theme_styles(figures::planned_frame(*e, options, plan, base, 3), th);
             for (const auto& panel : frame.panels) {

@@ -94,7 +94,7 @@ test: build-tests
 
 # The whole suite again under AddressSanitizer and UndefinedBehaviorSanitizer, in a second
 # build directory (a slow build: .ci/run runs it after make test). Only fontconfig's
-# process-lifetime allocations are suppressed; the install tests, which link the installed
+# process-lifetime allocations are suppressed; the install and build-tree tests, which link the
 # (instrumented) library into an uninstrumented program, are left out, and so is the fuzz
 # test, whose build is instrumented already (make test runs it).
 SANITIZE := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
@@ -102,14 +102,14 @@ SANITIZE := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-r
 # the leak check: in a process that has loaded FFmpeg's codec libraries (the video module),
 # LeakSanitizer's stop-the-world tracer at exit was seen to crash now and then (SIGSEGV in
 # the tracer, not a leak), under load.
-VIDEO_TESTS := ^(Video|Browser|PlotAnimates)\.|^Animation\.OverTheTopInEveryThemeAndFormat$$|^Loops\.GifDelaysReadBackAreEqual$$
+VIDEO_TESTS := ^(Video|VideoSpeed|Browser|PlotAnimates)\.|^Animation\.OverTheTopInEveryThemeAndFormat$$|^Loops\.GifDelaysReadBackAreEqual$$
 check-sanitizers: deps-test
 	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_BUILD_TESTS=ON -DPENDULUM_BUILD_BENCH=OFF \
 	  -DCMAKE_CXX_FLAGS="$(SANITIZE) -O1" -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE)" \
 	  -DCMAKE_MODULE_LINKER_FLAGS="$(SANITIZE)"
 	cmake --build build-asan -j $(JOBS)
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp:print_suppressions=0 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -E '^(Install|Fuzz)\.|$(VIDEO_TESTS)'
+	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -E '^(Install|Fuzz|BuildTree)\.|$(VIDEO_TESTS)'
 	ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -R '$(VIDEO_TESTS)'
 

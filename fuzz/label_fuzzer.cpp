@@ -2,6 +2,7 @@
 // libFuzzer harness: any bytes as a spec label give an error, or markup that Pango accepts
 // and LaTeX that holds only the characters and control sequences the engine draws, with
 // balanced braces and dollars (so that no label can reach into a document that \inputs it).
+#include "plot/math_layout.hpp"
 #include "plot/tex_markup.hpp"
 
 #include <pango/pango.h>
@@ -81,10 +82,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const std::invalid_argument&) {
         return 0;  // refused: documented
     }
-    // What is drawn is markup Pango reads (or invalid UTF-8 that the spec reader refuses).
-    if (g_utf8_validate(markup.data(), static_cast<gssize>(markup.size()), nullptr) &&
-        !pango_parse_markup(markup.c_str(), -1, 0, nullptr, nullptr, nullptr, nullptr)) {
-        std::abort();
+    // What is drawn is markup Pango reads (or invalid UTF-8 that the spec reader refuses):
+    // the whole with its fractions written in line (what Pango, plain text and SVG text
+    // get), and each stacked fraction's parts and each run the layout sets.
+    const auto pango_reads = [](const std::string& m) {
+        return pango_parse_markup(m.c_str(), -1, 0, nullptr, nullptr, nullptr, nullptr) != 0;
+    };
+    if (g_utf8_validate(markup.data(), static_cast<gssize>(markup.size()), nullptr)) {
+        if (!pango_reads(plot::inline_fractions(markup))) std::abort();
+        for (const auto& piece : plot::split_boxes(markup)) {
+            if (piece.type == plot::box_piece::kind::fraction &&
+                (!pango_reads(plot::inline_fractions(piece.num)) || !pango_reads(plot::inline_fractions(piece.den)))) {
+                std::abort();
+            }
+        }
     }
     try {
         check_latex(plot::tex_to_latex(tex));

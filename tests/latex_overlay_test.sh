@@ -45,7 +45,7 @@ grep -q NimbusRomNo9L <<<"$fonts" || fail "the text is not in the document's Tim
 ! grep -qi cmu <<<"$fonts" || fail "a CMU font in the document: $fonts"
 text=$(pdftotext doc.pdf -)
 for label in "lowest order" "first order" "harmonic" "separatrix" "order N of the iteration" "relative error" \
-             "Kidd–Fogg" "2.5" "0.1 % (the paper" "0.2 % (its conclusion)"; do
+             "Kidd–Fogg" "0.5" "0.1 % (the paper" "0.2 % (its conclusion)"; do
     grep -qF -- "$label" <<<"$text" || fail "label '$label' is not in the document"
 done
 # Unicode that a pdflatex document cannot set never reaches the overlay.

@@ -468,9 +468,9 @@ TEST(Animation, OverTheTopSwingsCreepsAndRotates) {
     EXPECT_TRUE(passed_top);
     // Its words: what each pendulum does.
     const auto d = figures::describe(e, figures::build(e));
-    for (const char* fact : {"E = 1.6 m g L swings between two turning points (libration)",
-                             "E = 2 m g L creeps up towards the top and never quite reaches it (separatrix)",
-                             "E = 2.6 m g L goes over the top, round and round (rotation)"}) {
+    for (const char* fact : {"E = 1.6 mgL swings between two turning points (libration)",
+                             "E = 2 mgL creeps up towards the top and never quite reaches it (separatrix)",
+                             "E = 2.6 mgL goes over the top, round and round (rotation)"}) {
         EXPECT_NE(d.text.find(fact), std::string::npos) << fact << " in\n" << d.text;
     }
 }

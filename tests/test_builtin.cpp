@@ -154,7 +154,7 @@ TEST(Describe, EveryBuiltinFigureInWords) {
         {"period-error", "on a logarithmic scale"},
         {"trajectory-second", "Second order stays on the exact curve"},
         {"swing", "An animation over 3 periods"},
-        {"over-the-top", "E = 2.6 m g L goes over the top, round and round (rotation)"},
+        {"over-the-top", "E = 2.6 mgL goes over the top, round and round (rotation)"},
         {"phase-portrait", "against theta, theta from -pi to pi"},
         // Each orbit's shape and extent, not only its name; the separatrix's too.
         {"phase-portrait", "Closed curves around the origin"},
@@ -175,7 +175,7 @@ TEST(Describe, EveryBuiltinFigureInWords) {
         {"regimes", "theta from 0 to pi."},
         // Several starts in one drawing, each with what it does.
         {"over-the-top", "of 3 pendulums of one length"},
-        {"over-the-top", "E = 2 m g L creeps up towards the top and never quite reaches it (separatrix)"},
+        {"over-the-top", "E = 2 mgL creeps up towards the top and never quite reaches it (separatrix)"},
     };
     for (const auto& f : facts) {
         const auto& e = figures::find(f.id);

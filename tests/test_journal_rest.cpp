@@ -96,6 +96,7 @@ TEST(JournalRoutes, EveryThemeAndDocumentSizeAgreesOrSaysSo) {
     int compared = 0;
     int said = 0;
     int refused = 0;
+    int too_small = 0;
     for (const auto& b : figures::builtin_themes()) {
         const std::string theme = std::string(b.name);
         const fs::path pdf_dir = dir / theme / "pdf";
@@ -110,15 +111,24 @@ TEST(JournalRoutes, EveryThemeAndDocumentSizeAgreesOrSaysSo) {
                                          " --theme " + theme + " -o '" + out.string() + "'");
             // A document whose text the theme refuses (below its min_text_pt or
             // min_script_pt: the paper theme in an 8 or 9 pt document) is refused whole.
-            if (r.status == 2) {
+            if (r.status == 2 && r.err.find("below the theme's min_") != std::string::npos) {
                 ++refused;
-                EXPECT_NE(r.err.find("below the theme's min_"), std::string::npos) << theme << " " << pt << ": " << r.err;
                 EXPECT_TRUE(files_in(out).empty()) << theme << " " << pt;
                 continue;
             }
-            ASSERT_EQ(r.status, 0) << theme << " " << pt << ": " << r.err;
+            // A figure whose axes the document's text leaves too small is refused by name,
+            // with what to change, and nothing of it is written (the four panels of regimes,
+            // a slide, in a 12-pt document: 17.28-pt text).
+            if (r.status == 2) {
+                ++too_small;
+                EXPECT_NE(r.err.find("regimes.pdf_tex: a figure of"), std::string::npos) << theme << " " << pt << ": " << r.err;
+                EXPECT_NE(r.err.find("make the figure larger"), std::string::npos) << r.err;
+                EXPECT_FALSE(fs::exists(out / "regimes.pdf_tex") || fs::exists(out / "regimes.pdf")) << theme << " " << pt;
+            } else {
+                ASSERT_EQ(r.status, 0) << theme << " " << pt << ": " << r.err;
+            }
             for (const auto& file : files_in(pdf_dir)) {
-                if (!file.ends_with(".pdf_tex")) continue;
+                if (!file.ends_with(".pdf_tex") || !fs::exists(out / file)) continue;
                 ++compared;
                 const std::string difference =
                     text_difference(overlay_texts(pdf_dir / file), overlay_texts(out / file));
@@ -131,6 +141,7 @@ TEST(JournalRoutes, EveryThemeAndDocumentSizeAgreesOrSaysSo) {
     }
     EXPECT_GE(compared, 3 * 3 * 13);
     EXPECT_LE(refused, 2) << "only the paper theme's 8 and 9 pt documents";
+    EXPECT_LE(too_small, 2) << "only regimes on a slide in a 12-pt document";
     std::cout << compared << " overlays compared, " << said << " differ and say so, " << refused
               << " sizes refused\n";
     fs::remove_all(dir);
@@ -155,7 +166,9 @@ TEST(JournalRoutes, PaperAgreesAt8To12WithoutTickNotes) {
 TEST(JournalRoutes, ATickNoteNamesBothLists) {
     const fs::path dir = temp_dir("journal-note");
     const run_result r = run_cli("render --all -f pdf_tex --theme slides --tex-font-size 12 -o '" + dir.string() + "'");
-    ASSERT_EQ(r.status, 0) << r.err;
+    // regimes' four panels are too small for 17.28-pt text on a slide, and say so.
+    ASSERT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("regimes.pdf_tex: a figure of"), std::string::npos) << r.err;
     std::istringstream in(r.err);
     for (std::string line; std::getline(in, line);) {
         if (line.find("tick labels") == std::string::npos) continue;

@@ -67,7 +67,7 @@ glyph glyph_of(const plot::series& s) {
     return {s.line, s.marker, s.color, rgb};
 }
 
-/// A legend label up to its first ", " ("E = 1.6 m g L, libration" names the start "E = 1.6 m g L").
+/// A legend label up to its first ", " ("E = 1.6 mgL, libration" names the start "E = 1.6 mgL").
 std::string entry_name(const std::string& label) { return label.substr(0, label.find(", ")); }
 
 /// A figure's pixels as render_rgb24 draws them, one 0xRRGGBB each.
@@ -180,18 +180,18 @@ TEST(TeachingRest, EnergiesHaveTheirUnit) {
     const auto& e = figures::find("over-the-top");
     const auto& p = e.spec.panels.at(0);
     ASSERT_EQ(p.starts.size(), 3U);
-    EXPECT_EQ(p.starts[0].label, "<i>E</i> = 1.6 <i>m g L</i>");
-    EXPECT_EQ(p.starts[1].label, "<i>E</i> = 2 <i>m g L</i>");
+    EXPECT_EQ(p.starts[0].label, "<i>E</i> = 1.6 <i>mgL</i>");
+    EXPECT_EQ(p.starts[1].label, "<i>E</i> = 2 <i>mgL</i>");
     const auto built = figures::build(e, {});
     const auto d = figures::describe(e, built);
-    EXPECT_NE(d.text.find("E = 1.6 m g L swings between two turning points"), std::string::npos) << d.text;
+    EXPECT_NE(d.text.find("E = 1.6 mgL swings between two turning points"), std::string::npos) << d.text;
     EXPECT_EQ(d.text.find("E = 2.6 goes"), std::string::npos) << d.text;
-    EXPECT_NE(d.alt.find("m g L"), std::string::npos) << d.alt;
+    EXPECT_NE(d.alt.find("mgL"), std::string::npos) << d.alt;
     // A plot's energies alike, in its legend.
     const auto dir = temp_dir("teaching-energy");
     const auto r = run_cli("plot phase --energy 1.5,2.5 -f svg --set svg_text=text --name e", dir);
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(slurp(dir / "e.svg").find("m g L"), std::string::npos);
+    EXPECT_NE(slurp(dir / "e.svg").find("mgL"), std::string::npos);
 }
 
 // 3. The trail has its legend entry: how far back it reaches.

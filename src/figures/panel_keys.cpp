@@ -265,8 +265,8 @@ void add_start(key_reading& k, const toml::node& where, std::string label, bool 
 void read_energy_starts(key_reading& k, const toml::node& energy) {
     for (const toml::node* e : items_of(energy)) {
         if (auto v = k.r.expression(*e, "energy", false)) {
-            // An energy with its unit, m g L, wherever it is shown (titles, legends, descriptions).
-            add_start(k, *e, "<i>E</i> = " + typeset_angle(v->first) + " <i>m g L</i>", true,
+            // An energy with its unit, mgL (set as TeX sets $mgL$), wherever it is shown (titles, legends, descriptions).
+            add_start(k, *e, "<i>E</i> = " + typeset_angle(v->first) + " <i>mgL</i>", true,
                       [text = v->first] { return pendulum::motion::from_energy(pendulum::written_number::expression(text)); });
         }
     }

@@ -8,6 +8,7 @@
 #include "plot/tex_markup.hpp"
 
 #include <fontconfig/fontconfig.h>
+#include <glib.h>
 #include <sys/stat.h>
 #include <hb.h>
 #include <pango/pangofc-fontmap.h>
@@ -31,18 +32,10 @@ namespace plot {
 
 namespace {
 
-/// Writes `text` as XML character data.
+/// Writes `text` as XML character data (glib's escaping).
 std::string xml_escaped(const char* text) {
-    std::string out;
-    for (const char* c = text; *c; ++c) {
-        switch (*c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            default: out += *c;
-        }
-    }
-    return out;
+    const std::unique_ptr<gchar, decltype(&g_free)> escaped(g_markup_escape_text(text, -1), &g_free);
+    return escaped.get();
 }
 
 /// The fonts figures may use: the system's font directories first, then every other font
@@ -73,42 +66,65 @@ void check_fontconfig_file() {
 /// The machine's fontconfig file (Debian's fontconfig is built with FONTCONFIG_PATH /etc/fonts).
 constexpr const char* system_fonts_conf = "/etc/fonts/fonts.conf";
 
-/// One element of a fontconfig file, as scanned: its attributes' text and its content.
+/// One <dir> or <include> element of a fontconfig file: its prefix attribute, its
+/// attributes written out again, and its text.
 struct config_element {
-    std::string attributes;
+    std::string prefix;
+    std::string attributes;  ///< ` name="value"` for each attribute, escaped again
     std::string text;
 };
 
-/// The file's text without its comments.
-std::string without_comments(std::string xml) {
-    for (std::size_t at = 0; (at = xml.find("<!--", at)) != std::string::npos;) {
-        const std::size_t end = xml.find("-->", at + 4);
-        xml.erase(at, end == std::string::npos ? std::string::npos : end + 3 - at);
+/// What glib's XML parser gathers from one fontconfig file: its <dir> and <include>
+/// elements; `simple` is false where the file does what the scan does not follow
+/// (<reset-dirs/>, an element inside <dir> or <include>).
+struct config_elements {
+    std::vector<config_element> dirs, includes;
+    std::optional<config_element> open;  ///< the <dir> or <include> being read
+    bool open_is_dir = false;
+    bool simple = true;
+};
+
+void config_start(GMarkupParseContext*, const gchar* name, const gchar** names, const gchar** values, gpointer data,
+                  GError**) {
+    auto& c = *static_cast<config_elements*>(data);
+    const std::string_view element(name);
+    if (element == "reset-dirs" || c.open) c.simple = false;
+    if (element != "dir" && element != "include") return;
+    config_element e;
+    for (std::size_t i = 0; names[i]; ++i) {
+        if (std::string_view(names[i]) == "prefix") e.prefix = values[i];
+        e.attributes += " " + std::string(names[i]) + "=\"" + xml_escaped(values[i]) + "\"";
     }
-    return xml;
+    c.open = std::move(e);
+    c.open_is_dir = element == "dir";
 }
 
-/// The <name ...>text</name> elements of `xml`; false if one is not closed so (or is empty,
-/// <name/>), which the scan does not follow.
-bool scan_elements(const std::string& xml, std::string_view name, std::vector<config_element>& out) {
-    const std::string open = "<" + std::string(name), close = "</" + std::string(name) + ">";
-    for (std::size_t at = 0; (at = xml.find(open, at)) != std::string::npos; ++at) {
-        const char next = at + open.size() < xml.size() ? xml[at + open.size()] : '\0';
-        if (next != '>' && next != '/' && !std::isspace(static_cast<unsigned char>(next))) continue;  // <dirs...>
-        const std::size_t gt = xml.find('>', at);
-        const std::size_t end = xml.find(close, at);
-        if (gt == std::string::npos || end == std::string::npos || end < gt || xml[gt - 1] == '/') return false;
-        out.push_back({xml.substr(at + open.size(), gt - at - open.size()), xml.substr(gt + 1, end - gt - 1)});
-    }
-    return true;
+void config_end(GMarkupParseContext*, const gchar* name, gpointer data, GError**) {
+    auto& c = *static_cast<config_elements*>(data);
+    const std::string_view element(name);
+    if (!c.open || (element != "dir" && element != "include")) return;
+    (c.open_is_dir ? c.dirs : c.includes).push_back(std::move(*c.open));
+    c.open.reset();
 }
 
-/// The value of attribute `name` in an element's attributes ("" if it has none).
-std::string attribute(const std::string& attributes, const std::string& name) {
-    const std::size_t at = attributes.find(name + "=\"");
-    if (at == std::string::npos) return {};
-    const std::size_t start = at + name.size() + 2, end = attributes.find('"', start);
-    return end == std::string::npos ? std::string() : attributes.substr(start, end - start);
+void config_text(GMarkupParseContext*, const gchar* text, gsize size, gpointer data, GError**) {
+    auto& c = *static_cast<config_elements*>(data);
+    if (c.open) c.open->text.append(text, size);
+}
+
+/// The <dir> and <include> elements of one fontconfig file, read by glib's XML parser;
+/// nothing (simple = false) where it is not well-formed XML.
+config_elements read_config_elements(const std::string& xml) {
+    config_elements c;
+    static const GMarkupParser parser{config_start, config_end, config_text, nullptr, nullptr};
+    const std::unique_ptr<GMarkupParseContext, decltype(&g_markup_parse_context_free)> ctx(
+        g_markup_parse_context_new(&parser, G_MARKUP_DEFAULT_FLAGS, &c, nullptr), &g_markup_parse_context_free);
+    GError* error = nullptr;
+    const bool parsed = g_markup_parse_context_parse(ctx.get(), xml.data(), static_cast<gssize>(xml.size()), &error) &&
+                        g_markup_parse_context_end_parse(ctx.get(), &error);
+    if (error) g_error_free(error);
+    if (!parsed || c.open) c.simple = false;
+    return c;
 }
 
 /// $XDG_CONFIG_HOME, else ~/.config, as fontconfig takes it for prefix="xdg".
@@ -121,9 +137,8 @@ std::string xdg_config_home() {
 /// Where an <include> leads, as fontconfig resolves it (a relative name in its configuration
 /// directory, /etc/fonts); empty where the scan does not follow (another prefix).
 std::string include_path(const config_element& e) {
-    const std::string prefix = attribute(e.attributes, "prefix");
-    if (prefix == "xdg") return xdg_config_home() + "/" + e.text;
-    if (!prefix.empty()) return {};
+    if (e.prefix == "xdg") return xdg_config_home() + "/" + e.text;
+    if (!e.prefix.empty()) return {};
     if (e.text.starts_with("~")) {
         const char* home = std::getenv("HOME");
         return home ? std::string(home) + e.text.substr(1) : std::string();
@@ -148,21 +163,16 @@ void scan_config_file(const std::string& path, config_scan& scan, int depth) {
     std::ifstream in(path, std::ios::binary);
     std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!in.is_open() || in.bad()) scan.simple = false;
-    xml = without_comments(std::move(xml));
-    std::vector<config_element> dirs, includes;
-    if (!scan_elements(xml, "dir", dirs) || !scan_elements(xml, "include", includes) ||
-        xml.find("<reset-dirs") != std::string::npos) {
-        scan.simple = false;
-    }
-    for (const auto& d : dirs) {
-        const std::string prefix = attribute(d.attributes, "prefix");
+    const config_elements found = read_config_elements(xml);
+    if (!found.simple) scan.simple = false;
+    for (const auto& d : found.dirs) {
         // Paths fontconfig reads relative to the file or the working directory are its own to resolve.
-        if (!(prefix == "xdg" || (prefix.empty() && (d.text.starts_with("/") || d.text.starts_with("~"))))) {
+        if (!(d.prefix == "xdg" || (d.prefix.empty() && (d.text.starts_with("/") || d.text.starts_with("~"))))) {
             scan.simple = false;
         }
-        scan.dirs.push_back("<dir" + d.attributes + ">" + d.text + "</dir>");
+        scan.dirs.push_back("<dir" + d.attributes + ">" + xml_escaped(d.text.c_str()) + "</dir>");
     }
-    for (const auto& i : includes) {
+    for (const auto& i : found.includes) {
         const std::string to = include_path(i);
         if (to.empty()) scan.simple = false;
         else scan_config_path(to, scan, depth + 1);

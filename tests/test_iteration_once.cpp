@@ -8,6 +8,7 @@
 #include "pendulum/iteration.hpp"
 #include "pendulum/mp_iteration.hpp"
 #include "reference.hpp"
+#include "reference_rows.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,28 +25,10 @@ namespace {
 
 using namespace pendulum;
 
-double number(const std::string& text) { return std::strtod(text.c_str(), nullptr); }
-
-/// One ulp of x (the gap to the next double away from zero).
-double ulp(double x) { return std::nextafter(std::fabs(x), INFINITY) - std::fabs(x); }
-
-/// The amplitude of a reference row: "pi-d" (d a double) or "0.99pi", as the script reads them.
-amplitude amplitude_of(const std::string& text) {
-    if (text.rfind("pi-", 0) == 0) return amplitude::from_pi(number(text.substr(3)));
-    if (text == "0.99pi") return amplitude(0.99 * std::numbers::pi);
-    return amplitude(number(text));
-}
-
-std::vector<std::string> split_at(const std::string& text, char sep) {
-    std::vector<std::string> out;
-    std::size_t from = 0;
-    for (;;) {
-        const auto at = text.find(sep, from);
-        out.push_back(text.substr(from, at - from));
-        if (at == std::string::npos) return out;
-        from = at + 1;
-    }
-}
+using test_support::rows::amplitude_of;
+using test_support::rows::number;
+using test_support::rows::split_at;
+using test_support::rows::ulp;
 
 /// The rows of iteration_grid.csv by amplitude.
 std::map<std::string, std::vector<std::vector<std::string>>> grid_rows() {

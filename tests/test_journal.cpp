@@ -5,6 +5,7 @@
 #include "figures/spec.hpp"
 #include "figures/themes.hpp"
 #include "plot/render.hpp"
+#include "overlay_texts.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
@@ -168,35 +169,6 @@ TEST(JournalText, DrawFigureRefusesSmallText) {
     EXPECT_NE(plot::text_size_problem(th).find("tick_font_pt = 7.5"), std::string::npos);
 }
 
-namespace {
-
-/// The texts of a LaTeX overlay, without their size commands, sorted: what it shows.
-std::multiset<std::string> overlay_texts(const fs::path& pdf_tex) {
-    std::multiset<std::string> texts;
-    std::istringstream in(slurp(pdf_tex));
-    const std::string smash = "\\smash{";
-    for (std::string line; std::getline(in, line);) {
-        const auto at = line.find(smash);
-        if (at == std::string::npos) continue;
-        const auto text = line.find(' ', at + smash.size());  // after the size command
-        texts.insert(line.substr(text + 1));
-    }
-    return texts;
-}
-
-/// The texts that one overlay has and the other has not, one per line, or "".
-std::string text_difference(const std::multiset<std::string>& a, const std::multiset<std::string>& b) {
-    std::vector<std::string> only_a;
-    std::vector<std::string> only_b;
-    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(only_a));
-    std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(only_b));
-    std::string out;
-    for (const auto& t : only_a) out += "\n  only in the PDF: " + t;
-    for (const auto& t : only_b) out += "\n  only in the overlay: " + t;
-    return out;
-}
-
-}  // namespace
 
 // Every built-in, whole and as the paper's panel files: the PDF (its texts as the overlay of
 // the theme's own sizes records them, laid out exactly as the PDF) and the pdf_tex overlays

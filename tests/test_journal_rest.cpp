@@ -7,6 +7,7 @@
 #include "plot/preflight.hpp"
 #include "plot/render.hpp"
 #include "plot/strokes.hpp"
+#include "overlay_texts.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
@@ -27,32 +28,6 @@ using namespace test_support;
 namespace fs = std::filesystem;
 
 namespace {
-
-/// The texts of a LaTeX overlay, without their size commands, sorted: what it shows.
-std::multiset<std::string> overlay_texts(const fs::path& pdf_tex) {
-    std::multiset<std::string> texts;
-    std::istringstream in(slurp(pdf_tex));
-    const std::string smash = "\\smash{";
-    for (std::string line; std::getline(in, line);) {
-        const auto at = line.find(smash);
-        if (at == std::string::npos) continue;
-        const auto text = line.find(' ', at + smash.size());  // after the size command
-        texts.insert(line.substr(text + 1));
-    }
-    return texts;
-}
-
-/// The texts one overlay has and the other has not, one per line, or "".
-std::string text_difference(const std::multiset<std::string>& a, const std::multiset<std::string>& b) {
-    std::vector<std::string> only_a;
-    std::vector<std::string> only_b;
-    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(only_a));
-    std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(only_b));
-    std::string out;
-    for (const auto& t : only_a) out += "\n  only in the PDF: " + t;
-    for (const auto& t : only_b) out += "\n  only in the overlay: " + t;
-    return out;
-}
 
 /// The warning lines of stderr that name a file.
 std::vector<std::string> warnings_of(const std::string& err, const std::string& file) {

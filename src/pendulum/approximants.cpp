@@ -7,6 +7,7 @@
 #include "pendulum/formulas.hpp"
 #include "pendulum/gsl_support.hpp"
 #include "pendulum/iteration.hpp"
+#include "pendulum/approximants_mp.hpp"
 #include "pendulum/mp_iteration.hpp"
 #include "pendulum/mp_real.hpp"
 

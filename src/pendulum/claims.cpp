@@ -5,6 +5,7 @@
 #include "pendulum/exact.hpp"
 #include "pendulum/gsl_support.hpp"
 #include "pendulum/methods.hpp"
+#include "pendulum/approximants_mp.hpp"
 #include "pendulum/mp_iteration.hpp"
 #include "pendulum/mp_real.hpp"
 

@@ -63,15 +63,4 @@ std::vector<std::optional<mp::real>> mp_lambdas(const mp::mp_amplitude& x, int o
                                                 const std::function<bool(const mp::real& lambda)>& stop = {},
                                                 std::vector<std::vector<mp::real>>* coefficients = nullptr);
 
-/// The paper's lowest order in MPFR at the exact amplitude x.
-mp_solution lowest_mp(const mp::mp_amplitude& x);
-/// The paper's first order in MPFR at the exact amplitude x.
-mp_solution first_mp(const mp::mp_amplitude& x);
-/// The paper's second order in MPFR at the exact amplitude x.
-mp_solution second_mp(const mp::mp_amplitude& x);
-
-/// T/T0 of the paper's second order in MPFR at the exact amplitude x (the same template as
-/// second_order()'s extended precision, approximants.cpp).
-mp::real second_period_mp(const mp::mp_amplitude& x, int);
-
 }  // namespace pendulum::detail

@@ -11,6 +11,7 @@
 #include "pendulum/formula_methods.hpp"
 #include "pendulum/formulas.hpp"
 #include "pendulum/formulas_mp.hpp"
+#include "pendulum/approximants_mp.hpp"
 #include "pendulum/mp_iteration.hpp"
 #include "pendulum/mp_real.hpp"
 #include "pendulum/period_formulas.hpp"

@@ -18,6 +18,8 @@ JOBS ?= 2
 # Rounds of bench/compare.sh, each running every row's two commands in turn.
 BENCH_ROUNDS ?= 5
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+# The program's command files in two unity batches (make tidy turns them off).
+CMAKE_FLAGS += -DPENDULUM_UNITY_BUILD=ON
 # Continuous integration (CI=true in the environment of .ci/run) builds with -Werror.
 ifneq ($(CI),)
 CMAKE_FLAGS += -DPENDULUM_WERROR=ON
@@ -172,7 +174,7 @@ deb: deps-deb
 # at most 25) on every source file of the four layers, compiled as the build compiles it
 # (the build directory's compile_commands.json); any report fails.
 tidy: deps-tidy
-	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DPENDULUM_UNITY_BUILD=OFF
 	ls src/pendulum/*.cpp src/plot/*.cpp src/figures/*.cpp src/cli/*.cpp | \
 	  xargs -P $(JOBS) -n 8 clang-tidy -p $(BUILD) --quiet --extra-arg=-Wno-unknown-warning-option
 

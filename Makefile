@@ -159,6 +159,7 @@ fuzz: deps-fuzz
 	cmake --build $(FUZZ_BUILD) --target fuzzers -j $(JOBS)
 	for name in $$(cat $(FUZZ_BUILD)/fuzzers.txt); do \
 	  rm -rf $(FUZZ_BUILD)/corpus-$$name && cp -r fuzz/corpus/$$name $(FUZZ_BUILD)/corpus-$$name && \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp:print_suppressions=0 \
 	  $(FUZZ_BUILD)/fuzz/$${name}_fuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=$(FUZZ_MAX_LEN) -artifact_prefix=$(FUZZ_BUILD)/ \
 	    $(FUZZ_BUILD)/corpus-$$name || exit 1; \
 	done

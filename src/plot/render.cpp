@@ -473,25 +473,28 @@ void apply_data_style(series& s, const theme& th) {
     if (!th.data_palette.empty() && !s.rgb_color) s.rgb_color = th.data_palette[slot % th.data_palette.size()];
 }
 
+/// One series in the theme's style: a data file's slot, then the style of its key (a rod,
+/// style_line_only, takes only the key's line, and none of "none").
+void apply_theme_style(series& s, const theme& th) {
+    if (s.data_slot >= 0) apply_data_style(s, th);
+    const auto it = s.style_key.empty() ? th.styles.end() : th.styles.find(s.style_key);
+    if (it == th.styles.end()) return;
+    const named_style& st = it->second;
+    if (s.style_line_only) {
+        if (st.line && *st.line != line_style::none) s.line = *st.line;
+        return;
+    }
+    if (st.line) s.line = *st.line;
+    if (st.marker) s.marker = *st.marker;
+}
+
 figure with_theme_styles(const figure& fig, const theme& th) {
     figure styled = fig;
-    const auto style = [&](std::vector<panel>& panels) {
-        for (auto& p : panels) {
-            for (auto& s : p.data) {
-                if (s.data_slot >= 0) apply_data_style(s, th);
-                const auto it = s.style_key.empty() ? th.styles.end() : th.styles.find(s.style_key);
-                if (it == th.styles.end()) continue;
-                if (s.style_line_only) {
-                    if (it->second.line && *it->second.line != line_style::none) s.line = *it->second.line;
-                    continue;
-                }
-                if (it->second.line) s.line = *it->second.line;
-                if (it->second.marker) s.marker = *it->second.marker;
-            }
+    for (auto* panels : {&styled.panels, &styled.peers}) {  // peers planned as their own files draw them
+        for (auto& p : *panels) {
+            for (auto& s : p.data) apply_theme_style(s, th);
         }
-    };
-    style(styled.panels);
-    style(styled.peers);  // planned as their own files draw them
+    }
     return styled;
 }
 
@@ -927,16 +930,22 @@ void layout_notes::note(const std::string& line) {
     if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
 }
 
-void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
-                 std::vector<placed_text>* texts, bool vector, std::vector<panel_frame>* frames) {
+namespace {
+
+/// True if a series of the figure (or of its peers) takes a style from the theme: a
+/// style key, or a data file's slot.
+bool has_style_keys(const figure& fig) {
     const auto keyed = [](const panel& p) {
         return std::any_of(p.data.begin(), p.data.end(),
                            [](const series& s) { return !s.style_key.empty() || s.data_slot >= 0; });
     };
-    const bool any_key = std::any_of(unstyled.panels.begin(), unstyled.panels.end(), keyed) ||
-                         std::any_of(unstyled.peers.begin(), unstyled.peers.end(), keyed);
-    const figure styled = any_key ? with_theme_styles(unstyled, th) : figure{};
-    const figure& fig = any_key ? styled : unstyled;
+    return std::any_of(fig.panels.begin(), fig.panels.end(), keyed) ||
+           std::any_of(fig.peers.begin(), fig.peers.end(), keyed);
+}
+
+/// Refuses a figure that cannot be drawn (its grid, the theme's colours and text sizes) and
+/// notes angles written two ways (once, not for the overlay pass).
+void check_drawable(const figure& fig, const theme& th, draw_pass pass) {
     if (fig.rows < 1 || fig.cols < 1 || fig.panels.size() > static_cast<std::size_t>(fig.rows * fig.cols)) {
         throw std::invalid_argument("figure grid is too small for its panels");
     }
@@ -945,6 +954,16 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     if (pass != draw_pass::overlay) {
         if (const std::string why = angle_notation_problem(fig); !why.empty()) layout_notes::note(why);
     }
+}
+
+}  // namespace
+
+void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
+                 std::vector<placed_text>* texts, bool vector, std::vector<panel_frame>* frames) {
+    const bool any_key = has_style_keys(unstyled);
+    const figure styled = any_key ? with_theme_styles(unstyled, th) : figure{};
+    const figure& fig = any_key ? styled : unstyled;
+    check_drawable(fig, th, pass);
     text_engine text(cr, th.font_family);
     text.record_into(texts);
     const pass_gate gate{pass};

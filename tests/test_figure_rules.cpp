@@ -11,6 +11,7 @@
 #include "plot/frames.hpp"
 #include "plot/render.hpp"
 #include "plot/text.hpp"
+#include "still_sweep.hpp"
 
 #include <cairo.h>
 
@@ -24,6 +25,9 @@
 #include <cstdio>
 #include <string>
 #include <vector>
+
+using test_support::for_each_still_builtin;
+using test_support::still_case;
 
 namespace {
 
@@ -443,41 +447,28 @@ TEST(FigureRules, TickLabelsKeepApartAtTheCorners) {
 // every size: a panel crowded into fewer ticks takes its neighbours with it.
 TEST(FigureRules, PanelsOfAFigureShareTheTicksOfAnAxisTheyShare) {
     int compared = 0;
-    for (const auto& builtin : figures::builtin_themes()) {
-        for (const char* size : {"", "figure_width_cm=8.6", "panel_width_cm=3.5", "tick_font_pt=11"}) {
-            std::vector<std::string> sets;
-            if (*size) sets.emplace_back(size);
-            const plot::theme theme = figures::load_theme(std::string(builtin.name), sets);
-            for (const auto& e : figures::catalog()) {
-                if (e.spec.animation) continue;
-                const plot::figure fig = figures::build(e, figures::sized_by({}, theme));
-                std::vector<plot::panel_frame> frames;
-                try {
-                    frames = plot::panel_frames(fig, theme);
-                } catch (const plot::layout_error&) {
-                    continue;
-                }
-                std::map<std::string, std::pair<std::vector<std::string>, std::size_t>> first;
-                for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-                    if (frames[i].frameless) continue;
-                    for (const bool horizontal : {true, false}) {
-                        const auto& a = horizontal ? fig.panels[i].x : fig.panels[i].y;
-                        const auto& f = frames[i];
-                        char range[64];
-                        std::snprintf(range, sizeof range, " [%.6g, %.6g]", horizontal ? f.x_lo : f.y_lo,
-                                      horizontal ? f.x_hi : f.y_hi);
-                        const std::string key = a.label.markup + range;
-                        const auto& labels = horizontal ? f.x_labels : f.y_labels;
-                        const auto [it, fresh] = first.try_emplace(key, labels, i);
-                        if (fresh) continue;
-                        EXPECT_EQ(labels, it->second.first) << builtin.name << " " << size << " " << e.id << " panel "
-                                                            << i + 1 << " and " << it->second.second + 1 << ": " << key;
-                        ++compared;
-                    }
-                }
+    const std::vector<std::string> sizes = {"", "figure_width_cm=8.6", "panel_width_cm=3.5", "tick_font_pt=11"};
+    for_each_still_builtin(sizes, [&](const still_case& c) {
+        const auto frames = plot::panel_frames(c.figure, c.theme);  // too small for its text: refused
+        std::map<std::string, std::pair<std::vector<std::string>, std::size_t>> first;
+        for (std::size_t i = 0; i < c.figure.panels.size(); ++i) {
+            if (frames[i].frameless) continue;
+            for (const bool horizontal : {true, false}) {
+                const auto& a = horizontal ? c.figure.panels[i].x : c.figure.panels[i].y;
+                const auto& f = frames[i];
+                char range[64];
+                std::snprintf(range, sizeof range, " [%.6g, %.6g]", horizontal ? f.x_lo : f.y_lo,
+                              horizontal ? f.x_hi : f.y_hi);
+                const std::string key = a.label.markup + range;
+                const auto& labels = horizontal ? f.x_labels : f.y_labels;
+                const auto [it, fresh] = first.try_emplace(key, labels, i);
+                if (fresh) continue;
+                EXPECT_EQ(labels, it->second.first)
+                    << c.where() << " panel " << i + 1 << " and " << it->second.second + 1 << ": " << key;
+                ++compared;
             }
         }
-    }
+    });
     EXPECT_GT(compared, 100);
 }
 

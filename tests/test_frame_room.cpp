@@ -13,6 +13,7 @@
 #include "plot/render.hpp"
 #include "png_image.hpp"
 #include "process.hpp"
+#include "still_sweep.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,6 +27,8 @@ namespace fs = std::filesystem;
 using test_support::run_cli;
 using test_support::slurp;
 using test_support::temp_dir;
+using test_support::for_each_still_builtin;
+using test_support::still_case;
 
 namespace {
 
@@ -87,12 +90,6 @@ int check_data_off_frame(const plot::figure& fig, const plot::theme& th, const s
     return checked;
 }
 
-plot::theme theme_at(const std::string& name, const std::string& size) {
-    std::vector<std::string> sets;
-    if (!size.empty()) sets.push_back(size);
-    return figures::load_theme(name, sets);
-}
-
 }  // namespace
 
 // 1. Every built-in still figure, in every theme and at two sizes: no marker centre or line
@@ -100,21 +97,9 @@ plot::theme theme_at(const std::string& name, const std::string& size) {
 // Plot kinds' own domains (amplitudes over [0, pi], t/T over [0, 1], orders [0, 40]) move out.
 TEST(FrameRoom, NoMarkerOrLineEndOnTheFrameInEveryThemeAndSize) {
     int checked = 0;
-    for (const auto& builtin : figures::builtin_themes()) {
-        for (const std::string size : {"", "panel_width_cm=4.2"}) {
-            const plot::theme th = theme_at(std::string(builtin.name), size);
-            for (const auto& e : figures::catalog()) {
-                if (e.spec.animation) continue;
-                const auto fig = figures::build(e, figures::sized_by({}, th));
-                try {
-                    checked += check_data_off_frame(fig, th, std::string(builtin.name) + " " + size + " " + e.id);
-                } catch (const plot::layout_error&) {
-                    continue;  // too small for the theme's text: refused, not drawn
-                }
-                if (HasFailure()) return;
-            }
-        }
-    }
+    for_each_still_builtin({"", "panel_width_cm=4.2"}, [&](const still_case& c) {
+        checked += check_data_off_frame(c.figure, c.theme, c.where());  // too small for its text: refused
+    });
     EXPECT_GT(checked, 5000);
 }
 

@@ -7,6 +7,7 @@
 #include "plot/render.hpp"
 #include "overlay_texts.hpp"
 #include "process.hpp"
+#include "still_sweep.hpp"
 
 #include <gtest/gtest.h>
 
@@ -285,41 +286,26 @@ TEST(JournalLayout, SeparatrixOverTheOrbits) {
 // markers in a panel closer than 1.5 diameters, their centres where draw_figure puts them.
 TEST(JournalMarkers, NoTwoMarkersCloserThanOneAndAHalfDiameters) {
     int series_checked = 0;
-    int refused = 0;
-    for (const auto& e : figures::catalog()) {
-        if (e.spec.animation) continue;
-        for (const auto& b : figures::builtin_themes()) {
-            for (const char* width : {"panel_width_cm=4.2", "panel_width_cm=12"}) {
-                const plot::theme th = figures::load_theme(b.name, {width});
-                const plot::figure fig = figures::build(e, figures::sized_by({}, th));
-                std::vector<std::vector<plot::marker_centres_of>> panels;
-                try {
-                    panels = plot::marker_centres(fig, th);
-                } catch (const plot::layout_error&) {
-                    ++refused;  // too small for its text: refused with a message, nothing drawn
-                    continue;
-                }
-                for (std::size_t i = 0; i < panels.size(); ++i) {
-                    for (std::size_t k = 0; k < panels[i].size(); ++k) {
-                        const auto& m = panels[i][k];
-                        if (!m.spaced || m.centres.size() < 2) continue;
-                        ++series_checked;
-                        double closest = std::numeric_limits<double>::infinity();
-                        for (std::size_t a = 0; a < m.centres.size(); ++a) {
-                            for (std::size_t c = a + 1; c < m.centres.size(); ++c) {
-                                closest = std::min(closest, std::hypot(m.centres[a].first - m.centres[c].first,
-                                                                       m.centres[a].second - m.centres[c].second));
-                            }
-                        }
-                        EXPECT_GE(closest, 3 * m.radius - 1e-9)
-                            << e.id << " " << b.name << " " << width << " panel " << i << " series " << k;
+    const sweep_counts counts = for_each_still_builtin({"panel_width_cm=4.2", "panel_width_cm=12"}, [&](const still_case& c) {
+        const auto panels = plot::marker_centres(c.figure, c.theme);  // too small for its text: refused
+        for (std::size_t i = 0; i < panels.size(); ++i) {
+            for (std::size_t k = 0; k < panels[i].size(); ++k) {
+                const auto& m = panels[i][k];
+                if (!m.spaced || m.centres.size() < 2) continue;
+                ++series_checked;
+                double closest = std::numeric_limits<double>::infinity();
+                for (std::size_t a = 0; a < m.centres.size(); ++a) {
+                    for (std::size_t b = a + 1; b < m.centres.size(); ++b) {
+                        closest = std::min(closest, std::hypot(m.centres[a].first - m.centres[b].first,
+                                                               m.centres[a].second - m.centres[b].second));
                     }
                 }
+                EXPECT_GE(closest, 3 * m.radius - 1e-9) << c.where() << " panel " << i << " series " << k;
             }
         }
-    }
+    });
     EXPECT_GE(series_checked, 30);
-    EXPECT_LE(refused, 10) << "most figures are drawn at the small size";  // of 78
+    EXPECT_LE(counts.refused, 10) << "most figures are drawn at the small size";  // of 78
 }
 
 // The reproductions: Fig. 5 had 23 circles 1.26 mm apart and 1.34 mm across on c5'' (a

@@ -9,6 +9,7 @@
 #include "plot/strokes.hpp"
 #include "overlay_texts.hpp"
 #include "process.hpp"
+#include "still_sweep.hpp"
 
 #include <gtest/gtest.h>
 
@@ -232,27 +233,13 @@ tick_marker_gap measure_ticks(const plot::figure& fig, const plot::theme& th) {
 // panel sizes: no tick mark's ink comes within half a point of a marker's ink.
 TEST(JournalTicks, NoTickMarkUnderAMarker) {
     int near = 0;
-    int figures_checked = 0;
-    for (const auto& e : figures::catalog()) {
-        if (e.spec.animation) continue;
-        for (const auto& b : figures::builtin_themes()) {
-            for (const char* width : {"panel_width_cm=4.2", "panel_width_cm=12"}) {
-                const plot::theme th = figures::load_theme(b.name, {width});
-                const plot::figure fig = figures::build(e, figures::sized_by({}, th));
-                tick_marker_gap g;
-                try {
-                    g = measure_ticks(fig, th);
-                } catch (const plot::layout_error&) {
-                    continue;  // too small for its text: refused with a message
-                }
-                ++figures_checked;
-                near += g.near;
-                EXPECT_GT(g.ticks, 0) << e.id << " " << b.name << " " << width;
-                EXPECT_GE(g.least, 0.5 - 1e-9) << e.id << " " << b.name << " " << width;
-            }
-        }
-    }
-    EXPECT_GE(figures_checked, 60);
+    const sweep_counts counts = for_each_still_builtin({"panel_width_cm=4.2", "panel_width_cm=12"}, [&](const still_case& c) {
+        const tick_marker_gap g = measure_ticks(c.figure, c.theme);  // too small for its text: refused
+        near += g.near;
+        EXPECT_GT(g.ticks, 0) << c.where();
+        EXPECT_GE(g.least, 0.5 - 1e-9) << c.where();
+    });
+    EXPECT_GE(counts.checked, 60);
     EXPECT_GT(near, 0) << "no tick mark met a marker: the rule was not exercised";
 }
 

@@ -134,3 +134,26 @@ TEST(Limits, JustInsideEveryLimitIsAccepted) {
     EXPECT_EQ(r.status, 0) << r.err;
     fs::remove_all(work);
 }
+
+// data takes --jobs as render does: 1 and 1024 accepted with the same numbers, 0 and 1025
+// refused with the limit named and no file written; the option wins over the variable.
+TEST(Limits, DataTakesJobsWithinTheWorkersLimit) {
+    const auto one = run_cli("data convergence --jobs 1");
+    ASSERT_EQ(one.status, 0) << one.err;
+    const auto most = run_cli("data convergence --jobs 1024");
+    ASSERT_EQ(most.status, 0) << most.err;
+    EXPECT_EQ(one.out, most.out);
+    const auto over_variable =
+        test_support::run_command("PENDULUM_FIGURES_JOBS=0 '" + std::string(PENDULUM_EXE) + "' data convergence --jobs 2");
+    EXPECT_EQ(over_variable.status, 0) << over_variable.err;
+    EXPECT_EQ(over_variable.out, one.out);
+    const fs::path dir = temp_dir("data-jobs");
+    for (const char* bad : {"0", "1025"}) {
+        const fs::path out = dir / "numbers.csv";
+        const auto r = run_cli(std::string("data convergence --jobs ") + bad + " -o '" + out.string() + "'");
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_NE(r.err.find(std::string("--jobs ") + bad + ": the number of workers, 1 to 1024"), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(out)) << bad;
+    }
+    fs::remove_all(dir);
+}

@@ -67,6 +67,7 @@ command add_data_command(CLI::App& app) {
         std::string theta0;
         std::string format = "csv";
         std::string layout = "long";
+        std::optional<int> jobs;  // worker threads, as render takes them
     };
     auto o = std::make_shared<data_options>();
     auto* cmd = app.add_subcommand("data", "Print the numbers of a figure as drawn: CSV (long or wide) or JSON.");
@@ -78,6 +79,7 @@ command add_data_command(CLI::App& app) {
         ->check(CLI::IsMember({"csv", "json"}));
     cmd->add_option("--layout", o->layout, "CSV layout: long (a row per point) or wide (columns per series)")
         ->type_name("LAYOUT")->check(CLI::IsMember({"long", "wide"}));
+    cmd->add_option("--jobs", o->jobs, jobs_help)->type_name("N");
     cmd->footer(std::string("\n") + angle_help + "\n\nWhat is drawn: the samples of every curve as the figure's PNG draws it (within 0.05 pt),\n"
                 "the points of other series, and reference lines as their two ends within the panel.\n"
                 "Panels are a, b, c, ... as in the paper's captions; each series has an id (exact,\n"
@@ -95,8 +97,8 @@ command add_data_command(CLI::App& app) {
                 "  pendulum-figures data period -f json -o period.json");
 
     return {cmd, [o] {
-                // The threads a figure's numbers may take: PENDULUM_FIGURES_JOBS, else the CPUs.
-                plot::set_thread_limit(chosen_jobs(std::nullopt));
+                // The threads a figure's numbers may take: --jobs, else PENDULUM_FIGURES_JOBS, else the CPUs.
+                plot::set_thread_limit(chosen_jobs(o->jobs));
                 std::string file = o->file == "-" ? "" : o->file;  // - is standard output
                 if (!file.empty()) {
                     // Where the file goes is checked before the work, as render checks its outputs.

@@ -336,3 +336,26 @@ TEST(CheckMeasure, LineWidthsAsThePdfHasThem) {
     EXPECT_EQ(measured, pdf);
     fs::remove_all(dir);
 }
+
+// A figure between one column and two passes --check NAME as a two-column figure, with a note:
+// included at its natural size it keeps to the rules; scaled to the column its text would not.
+// At the column's width, and with :2 (the author said two columns), there is no note.
+TEST(CheckAps, AFigureBetweenTheWidthsSaysWhatScalingToTheColumnWouldDo) {
+    const fs::path dir = temp_dir("preflight-scaling");
+    const run_result wide = run_cli("render fig1 --check aps --set figure_width_cm=12", dir);
+    EXPECT_EQ(wide.status, 0) << wide.out << wide.err;
+    // The smallest text, 8.6 pt (the paper theme's ticks), times 8.6/12: 6.16, shown rounded down.
+    EXPECT_NE(wide.out.find("c1-lowest: note: include it at its natural size (width 12 cm): scaled to the 8.6-cm "
+                            "column, its smallest text would be 6.1 pt, below 8\n"),
+              std::string::npos)
+        << wide.out;
+    for (const char* quiet : {"render fig1 --check aps --set figure_width_cm=8.6",
+                              "render fig1 --check aps:2 --set figure_width_cm=12"}) {
+        const run_result r = run_cli(quiet, dir);
+        EXPECT_EQ(r.status, 0) << quiet << ": " << r.out << r.err;
+        EXPECT_EQ(r.out.find("note:"), std::string::npos) << quiet << ": " << r.out;
+        EXPECT_NE(r.out.find("keeps to aps's rules"), std::string::npos) << quiet << ": " << r.out;
+    }
+    EXPECT_TRUE(files_in(dir).empty());
+    fs::remove_all(dir);
+}

@@ -401,6 +401,8 @@ int check_figures(const std::vector<const figures::entry*>& chosen, const style_
                 std::cout << shown_text(e->id) << ": keeps to " << name << "'s rules ("
                           << format_double(std::round(m.width_cm * 1000) / 1000) << " cm wide, "
                           << (one ? "one column" : "two columns") << ")\n";
+                const std::string note = plot::scaling_note(m, journal);
+                if (!note.empty()) std::cout << shown_text(e->id) << ": note: " << note << '\n';
             }
         }
     }

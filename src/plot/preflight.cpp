@@ -280,6 +280,23 @@ figure_measure measure_figure(const figure& fig, const theme& th) {
     return m;
 }
 
+std::string scaling_note(const figure_measure& m, const journal_check& check) {
+    const journal_rules& j = *check.rules;
+    constexpr double eps = 1e-6;
+    if (check.span != column_span::either || m.width_cm <= j.column_cm + eps || m.width_cm > j.page_cm + eps ||
+        m.texts.empty()) {
+        return {};
+    }
+    double smallest = m.texts.front().size_pt;
+    for (const auto& t : m.texts) {
+        if (!t.script) smallest = std::min(smallest, t.size_pt);
+    }
+    const double scaled = std::floor(smallest * j.column_cm / m.width_cm * 10) / 10;  // rounded down: never kinder
+    return "include it at its natural size (width " + shown(m.width_cm) + " cm): scaled to the " +
+           shown(j.column_cm) + "-cm column, its smallest text would be " + shown(scaled) + " pt" +
+           (scaled < j.min_text_pt - eps ? ", below " + shown(j.min_text_pt) : "");
+}
+
 std::vector<std::string> preflight_problems(const figure_measure& m, const journal_check& check) {
     std::vector<std::string> out;
     width_problems(out, m, check);

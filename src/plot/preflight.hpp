@@ -100,6 +100,11 @@ figure_measure measure_figure(const figure& fig, const theme& th);
 /// text or line, the measured value, the rule and what to do; empty when it keeps to them.
 std::vector<std::string> preflight_problems(const figure_measure& m, const journal_check& check);
 
+/// For a figure checked without a span (--check NAME) that is wider than the journal's column and
+/// no wider than its page: that it must be included at its natural size, and its smallest text
+/// if it were scaled to the column (to 0.1 pt, rounded down); else "".
+std::string scaling_note(const figure_measure& m, const journal_check& check);
+
 /// How an angle is written in a label: "9π/10" (a fraction of π), "0.95π" (a decimal).
 /// Empty where a figure writes its angles one way; else one line naming an angle of each
 /// way, which the layout notes on stderr: a figure writes π one way in all its labels.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pendulum/angle.hpp"
 
+#include "common/terminal_text.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/expression_lexer.hpp"
 #include "pendulum/expression_parser.hpp"
@@ -22,22 +23,9 @@
 
 namespace pendulum {
 
-/// Control characters and NUL as \xNN: a message is a C string, and NUL would cut it short.
-std::string message_text(std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-        const auto u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7f) {
-            constexpr char hex[] = "0123456789abcdef";
-            out += "\\x";
-            out += hex[u >> 4];
-            out += hex[u & 15];
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
+/// Control characters, bidirectional controls and bytes that are not UTF-8 escaped, as
+/// every message that reaches a terminal shows them (common::terminal_text).
+std::string message_text(std::string_view text) { return common::terminal_text(text); }
 
 namespace {
 

@@ -457,8 +457,9 @@ int run_plot(const plot_options& given) {
         throw usage_error(message);
     }
     e.id = o.name.empty() ? o.kind : o.name;
-    if (e.id.find('/') != std::string::npos || e.id.empty() || e.id[0] == '.') {
-        throw usage_error("--name '" + e.id + "': a file name without a directory");
+    // The one rule for the names of figures' files (a spec file's name obeys it too).
+    if (const std::string why = figures::file_name_problem(e.id); !why.empty()) {
+        throw usage_error("--name '" + shown_text(e.id.substr(0, 80)) + "' " + why);
     }
     render_options r;
     r.dir = o.dir;

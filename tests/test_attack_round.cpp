@@ -8,11 +8,15 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <climits>
+#include <cstdint>
+#include <cstdio>
+#include <set>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -147,6 +151,18 @@ TEST(AttackLists, FifoDeviceAndSocketAreRefusedWithoutBlocking) {
     EXPECT_EQ(piped.status, 0) << piped.err;
 }
 
+TEST(AttackLists, AMillionAndOneValuesAreRefusedBeforeAnyWork) {
+    const auto dir = temp_dir("attack-million");
+    std::string lines;
+    for (int i = 0; i < 1'000'001; ++i) lines += "1\n";
+    write_file(dir / "many.txt", lines);
+    const auto r = run_cli("eval --theta0 @many.txt", dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("--theta0 @many.txt: more than 1000000 values; a list takes at most 1000000"), std::string::npos)
+        << r.err;
+    EXPECT_TRUE(r.out.empty());
+}
+
 TEST(AttackLists, LinksProcFilesNulAndBadUtf8) {
     const auto dir = temp_dir("attack-listfiles");
     write_file(dir / "good.txt", "pi/2\n");
@@ -263,6 +279,56 @@ TEST(AttackOutputs, LinksDirectoriesAndFifosAtTheTargetAreNeverWrittenThrough) {
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(slurp(outside / "victim.txt"), "untouched");
     EXPECT_NE(slurp(out / "trajectory.svg").find("<svg"), std::string::npos);
+}
+
+/// FNV-1a of a target's file name, as 16 hex digits: its temporaries' names start with
+/// ".pendulum-figures-" and this.
+std::string temporary_stem(const std::string& name) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    for (const char c : name) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 0x100000001b3ULL;
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+    return std::string(".pendulum-figures-") + hex + "-";
+}
+
+TEST(AttackOutputs, LinksAtTheTemporariesNamesAreNeitherFollowedNorRemoved) {
+    const auto dir = temp_dir("attack-temporaries");
+    const auto outside = temp_dir("attack-temporaries-victim");
+    write_file(outside / "victim.txt", "untouched");
+    const std::string stem = temporary_stem("trajectory.svg");
+    // Links named as a killed run's temporaries, older than the hour after which those are removed.
+    const struct timespec old[2] = {{1000000000, 0}, {1000000000, 0}};
+    for (const std::string suffix : {"AAAAAA", "zzzzzz", "012345"}) {
+        const auto link = dir / (stem + suffix);
+        fs::create_symlink(outside / "victim.txt", link);
+        ASSERT_EQ(::utimensat(AT_FDCWD, link.c_str(), old, AT_SYMLINK_NOFOLLOW), 0);
+    }
+    fs::create_symlink(outside / "made.txt", dir / (stem + "dangle"));
+    const auto r = run_cli(trajectory + "-f svg", dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(outside / "victim.txt"), "untouched");
+    EXPECT_FALSE(fs::exists(outside / "made.txt"));
+    for (const std::string suffix : {"AAAAAA", "zzzzzz", "012345", "dangle"}) {
+        EXPECT_TRUE(fs::is_symlink(dir / (stem + suffix))) << "a link a user made stays: " << suffix;
+    }
+    EXPECT_EQ(files_in(outside), (std::set<std::string>{"victim.txt"}));
+}
+
+TEST(AttackOutputs, PaperFileNamesOutsideTheOutputDirectory) {
+    const auto dir = temp_dir("attack-paper-file");
+    fs::create_directories(dir / "out");
+    for (const std::string name : {"../evil", "/tmp/evil", "a/b", "..", ".hidden", "-rf", "a\\nb", "a\\u202eb"}) {
+        write_file(dir / "f.toml", "[[panel]]\nplot = \"period\"\nmethods = [\"exact\"]\npaper_file = \"" + name + "\"\n");
+        const auto r = run_cli("render f.toml --paper-files -f svg -o out", dir);
+        EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+        EXPECT_NE(r.err.find("'paper_file' "), std::string::npos) << r.err;
+        expect_no_terminal_controls(r.err);
+        EXPECT_TRUE(files_in(dir / "out").empty()) << name;
+    }
+    EXPECT_FALSE(fs::exists(dir / "evil.svg"));
 }
 
 TEST(AttackOutputs, ReadOnlyDirectoryAndNamesOutsideIt) {

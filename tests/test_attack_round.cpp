@@ -487,6 +487,19 @@ TEST(AttackPlotValues, SetRangeAndRadiansPerSecond) {
         expect_no_terminal_controls(r.err);
     }
     EXPECT_TRUE(files_in(dir).empty());
+    // A control character in a text option is named with the value it is in (was "control
+    // character in an option", naming nothing).
+    for (const std::string options : {"--set 'title=a\x1b]0;t\x07b'", "--title 'a\rb'", "--x-label 'a\tb'",
+                                      "--panel-title 'a\nb'"}) {
+        const auto r = run_cli(trajectory + "-f svg " + options, dir);
+        EXPECT_EQ(r.status, 2) << options << ": " << r.err;
+        EXPECT_NE(r.err.find("' has a control character: an option's text is one line of printable characters"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_NE(r.err.find("'a\\x"), std::string::npos) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_TRUE(files_in(dir).empty());
     EXPECT_EQ(run_cli(trajectory + "-f svg --set columns=6 --set 'title=" + std::string(1000, 'a') + "'", dir).status, 0);
 }
 

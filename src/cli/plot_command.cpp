@@ -113,7 +113,10 @@ std::string toml_string(const std::string& text) {
     std::string out = "\"";
     for (const char c : text) {
         if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) throw usage_error("control character in an option");
+        if (static_cast<unsigned char>(c) < 0x20) {
+            throw usage_error("'" + shown_text(text.substr(0, 80)) +
+                              "' has a control character: an option's text is one line of printable characters");
+        }
         out += c;
     }
     return out + "\"";

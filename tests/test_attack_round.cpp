@@ -331,6 +331,30 @@ TEST(AttackOutputs, PaperFileNamesOutsideTheOutputDirectory) {
     EXPECT_FALSE(fs::exists(dir / "evil.svg"));
 }
 
+TEST(AttackLists, DataFilesThatLeadOutOrBlock) {
+    const auto dir = temp_dir("attack-data-files");
+    write_file(dir / "ok.csv", "x,y\n1,2\n");
+    fs::create_symlink("/etc/passwd", dir / "out.csv");
+    ASSERT_EQ(::mkfifo((dir / "fifo.csv").c_str(), 0600), 0);
+    const std::string period = "plot period --methods exact -f svg --name d --data ";
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"out.csv:1,2", "'file' = \"out.csv\" leads out of the spec's directory (through a symbolic link); a spec's "
+                        "style and data files stay inside it"},
+        {"fifo.csv:1,2", "data file 'fifo.csv' is not a regular file (a device, FIFO or socket)"},
+        {"/etc/passwd:1,2", "must be a path relative to the spec's directory, not an absolute path"},
+        {"../x.csv:1,2", "must stay inside the spec's directory: no '..' leading out of it"},
+        {"'ok.csv:x\xe2\x80\xae,y'", "'x' = \"x\\u{202e}\": no such column in the header"},
+    };
+    for (const auto& [data, message] : refused) {
+        const auto r = test_support::run_command("cd '" + dir.string() + "' && timeout 20 '" + PENDULUM_EXE + "' " +
+                                                 period + data);
+        EXPECT_EQ(r.status, 2) << data << ": " << r.err;
+        EXPECT_NE(r.err.find(message), std::string::npos) << data << ": " << r.err;
+        expect_no_terminal_controls(r.err);
+        EXPECT_FALSE(fs::exists(dir / "d.svg"));
+    }
+}
+
 TEST(AttackOutputs, ReadOnlyDirectoryAndNamesOutsideIt) {
     if (::geteuid() == 0) GTEST_SKIP() << "root writes into a read-only directory";
     const auto dir = temp_dir("attack-readonly");

@@ -85,8 +85,14 @@ void check_list_item(const std::string& option, const std::string& text, std::si
 std::istream& list_source(const std::string& text, const std::string& option, std::ifstream& file) {
     if (text == "-") return std::cin;
     std::error_code ec;
-    if (std::filesystem::is_directory(text.substr(1), ec)) {
+    const auto status = std::filesystem::status(text.substr(1), ec);  // through symbolic links
+    if (std::filesystem::is_directory(status)) {
         throw usage_error(option + " " + text + ": '" + text.substr(1) + "' is a directory, not a list");
+    }
+    // As spec and style files: a FIFO or device could block or never end; standard input can be either (-).
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+        throw usage_error(option + " " + text + ": '" + text.substr(1) +
+                          "' is not a regular file (a device, FIFO or socket); give a file, or - and redirect it");
     }
     file.open(text.substr(1), std::ios::binary);
     if (!file) throw usage_error(option + " " + shown_text(text) + ": cannot read '" + shown_text(text.substr(1)) + "'");
@@ -335,7 +341,10 @@ plot::theme chosen_theme(const std::string& name, const std::vector<std::string>
 
 void check_output_dir(const std::string& dir) {
     std::error_code ec;
-    if (!std::filesystem::exists(dir, ec)) throw usage_error("output directory '" + dir + "' does not exist");
+    const std::string shown = shown_text(dir.size() <= 100 ? dir : dir.substr(0, 40) + "..." + dir.substr(dir.size() - 40));
+    const bool exists = std::filesystem::exists(dir, ec);
+    if (ec) throw usage_error("output directory '" + shown + "' cannot be reached: " + ec.message());
+    if (!exists) throw usage_error("output directory '" + shown + "' does not exist");
     if (!std::filesystem::is_directory(dir, ec)) throw usage_error("output path '" + dir + "' is not a directory");
     if (::access(dir.c_str(), W_OK | X_OK) != 0) {
         throw usage_error("output directory '" + dir + "' is not writable");

@@ -113,7 +113,10 @@ std::string toml_string(const std::string& text) {
     std::string out = "\"";
     for (const char c : text) {
         if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) throw usage_error("control character in an option");
+        if (static_cast<unsigned char>(c) < 0x20) {
+            throw usage_error("'" + shown_text(text.substr(0, 80)) +
+                              "' has a control character: an option's text is one line of printable characters");
+        }
         out += c;
     }
     return out + "\"";
@@ -457,8 +460,9 @@ int run_plot(const plot_options& given) {
         throw usage_error(message);
     }
     e.id = o.name.empty() ? o.kind : o.name;
-    if (e.id.find('/') != std::string::npos || e.id.empty() || e.id[0] == '.') {
-        throw usage_error("--name '" + e.id + "': a file name without a directory");
+    // The one rule for the names of figures' files (a spec file's name obeys it too).
+    if (const std::string why = figures::file_name_problem(e.id); !why.empty()) {
+        throw usage_error("--name '" + shown_text(e.id.substr(0, 80)) + "' " + why);
     }
     render_options r;
     r.dir = o.dir;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/report.hpp"
 
-#include <cstdio>
+#include "common/terminal_text.hpp"
+
 #include <iostream>
 
 namespace pendulum::cli {
@@ -10,21 +11,15 @@ void report_error(const std::string& message) {
     // Every line starts with the program's name, as gcc's do: a line break in a spec's key or
     // a file's name cannot begin a line of its own (a CI log's "::error ..." command).
     static constexpr std::string_view prefix = "pendulum-figures: error: ";
-    std::string out(prefix);
-    for (const char c : message) {
-        const auto u = static_cast<unsigned char>(c);
-        if (c == '\n') {
-            out += '\n';
-            out += prefix;
-        } else if (u < 0x20 || u == 0x7f) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\x%02x", u);
-            out += buf;
-        } else {
-            out += c;
-        }
+    std::string out;
+    std::string_view rest = message;
+    for (;;) {
+        const std::size_t end = rest.find('\n');
+        out += std::string(prefix) + common::terminal_text(rest.substr(0, end)) + '\n';
+        if (end == std::string_view::npos) break;
+        rest.remove_prefix(end + 1);
     }
-    std::cerr << out << '\n';
+    std::cerr << out;
 }
 
 int write_stdout(std::string_view bytes) {

@@ -7,7 +7,8 @@
 namespace pendulum::cli {
 
 /// Prints an error on standard error, one line per line of the message, with control
-/// characters shown escaped (a typed ESC or CR must not retitle or clear the terminal).
+/// characters shown escaped by common::terminal_text (a typed ESC, CR, CSI or U+202E must
+/// not retitle, clear or reorder the terminal).
 void report_error(const std::string& message);
 
 /// Writes bytes to standard output and flushes it: 0, or 1 after reporting that it could

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "figures/batch.hpp"
 
+#include "common/terminal_text.hpp"
 #include "figures/figure_data.hpp"
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
@@ -171,7 +172,8 @@ private:
         const plot::layout_notes notes;
         plot::save(f.panel < 0 ? whole : single_panel(whole, f.panel, whole.panel_width_cm), theme_, f.path, output_);
         for (const auto& line : notes.lines()) {
-            warnings += "pendulum-figures: warning: " + f.path.filename().string() + ": " + line + "\n";
+            warnings += "pendulum-figures: warning: " +
+                        common::terminal_text(f.path.filename().string() + ": " + line) + "\n";
         }
         return nullptr;
     }

@@ -406,7 +406,7 @@ std::string outside_problem(const std::filesystem::path& tree, const std::filesy
     if (ec) return "cannot be resolved: " + ec.message();
     const auto relative = target.lexically_relative(root);
     if (relative.empty() || *relative.begin() == "..") {
-        return "leads out of the spec's directory (through a symbolic link); a spec's style file stays inside it";
+        return "leads out of the spec's directory (through a symbolic link); a spec's style and data files stay inside it";
     }
     return {};
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pendulum/angle.hpp"
 
+#include "common/terminal_text.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/expression_lexer.hpp"
 #include "pendulum/expression_parser.hpp"
@@ -22,22 +23,9 @@
 
 namespace pendulum {
 
-/// Control characters and NUL as \xNN: a message is a C string, and NUL would cut it short.
-std::string message_text(std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-        const auto u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7f) {
-            constexpr char hex[] = "0123456789abcdef";
-            out += "\\x";
-            out += hex[u >> 4];
-            out += hex[u & 15];
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
+/// Control characters, bidirectional controls and bytes that are not UTF-8 escaped, as
+/// every message that reaches a terminal shows them (common::terminal_text).
+std::string message_text(std::string_view text) { return common::terminal_text(text); }
 
 namespace {
 
@@ -110,16 +98,28 @@ constexpr grammar::language angle_language = [] {
 
 const grammar::language& language_of(bool units) { return units ? angle_language : number_language; }
 
+/// A number's value with `bits`, never a silent 0: a number beyond MPFR's exponent range
+/// (1e-9999999999) is refused as one below the smallest double is (check_held).
+real number_value(std::string_view text, const std::string& digits, mpfr_prec_t bits) {
+    real v(bits);
+    mpfr_strtofr(v.get(), digits.c_str(), nullptr, 10, MPFR_RNDN);
+    const bool nonzero = lexer::mantissa_of(digits).find_first_not_of("0.") != std::string::npos;
+    if (nonzero && (v.is_zero() || !mpfr_number_p(v.get()))) {
+        // Past MPFR's exponents (where a huge one wraps to infinity): strtod says which end.
+        if (std::strtod(digits.c_str(), nullptr) != 0) angle_fail(text, "number " + digits + " is beyond a double's range");
+        angle_fail(text, "number " + digits + " is below the smallest double, 4.9406564584124654e-324, and it is not "
+                         "0: a double cannot hold it (write 0, or a larger value)");
+    }
+    return v;
+}
+
 /// The value of a tree with `bits`, correctly rounded; children come before their parents,
 /// so one pass with a stack evaluates it without recursion, however long the text.
 real evaluate_tree(std::string_view text, const grammar::tree& t, mpfr_prec_t bits) {
     std::vector<real> stack;
     for (const auto& n : t.nodes) {
         if (n.what == op::number || n.what == op::pi) {
-            real v(bits);
-            if (n.what == op::pi) v = mp::pi(bits);
-            else mpfr_strtofr(v.get(), n.digits.c_str(), nullptr, 10, MPFR_RNDN);
-            stack.push_back(std::move(v));
+            stack.push_back(n.what == op::pi ? mp::pi(bits) : number_value(text, n.digits, bits));
             continue;
         }
         if (n.what == op::neg) {

@@ -9,8 +9,9 @@
 
 namespace pendulum {
 
-/// A text for a message: control characters and DEL as \xNN (a message is a C string that
-/// a terminal shows, and NUL would cut it short); every other byte as it is.
+/// A text for a message: control characters (C0, DEL, C1), bidirectional controls and bytes
+/// that are not UTF-8 escaped (a message is a C string that a terminal shows, and NUL would
+/// cut it short); printable UTF-8 as it is.
 std::string message_text(std::string_view text);
 
 /// Evaluates an arithmetic expression with numbers, pi (or π), + - * / and parentheses;

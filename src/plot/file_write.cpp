@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <climits>
 #include <atomic>
 #include <chrono>
 #include <cerrno>
@@ -148,9 +149,38 @@ std::string refusal(const fs::path& path, mode_t mode) {
                    "that, e.g. -o - > '" + path.string() + "'";
 }
 
+/// The bytes of a temporary's name: the prefix, 16 hex digits, '-' and six characters.
+constexpr std::size_t temp_name_bytes = temp_prefix.size() + 16 + 1 + 6;
+
+/// A long path for a message: its first and last 40 bytes.
+std::string shortened(const std::string& path) {
+    return path.size() <= 100 ? path : path.substr(0, 40) + "..." + path.substr(path.size() - 40);
+}
+
+/// Refuses, as bad input, a path the system cannot name: a part of more than NAME_MAX bytes,
+/// or a path, or its temporary's beside it, of PATH_MAX bytes or more (the limit counts the NUL).
+void check_name_lengths(const fs::path& path) {
+    for (const auto& part : path) {
+        if (part.native().size() > NAME_MAX) {
+            throw bad_input("output path '" + shortened(path.native()) + "' has a name of " +
+                            std::to_string(part.native().size()) + " bytes; a file name holds at most " +
+                            std::to_string(NAME_MAX) + " (NAME_MAX): give a shorter name");
+        }
+    }
+    const std::size_t longest = std::max(path.native().size(), directory_of(path).native().size() + 1 + temp_name_bytes);
+    if (longest >= PATH_MAX) {
+        throw bad_input("output path '" + shortened(path.native()) + "' (or its temporary's beside it, " +
+                        std::to_string(temp_name_bytes) + " bytes of name) has " + std::to_string(longest) +
+                        " bytes; a path holds at most " + std::to_string(PATH_MAX - 1) +
+                        " (PATH_MAX less its NUL): give a shorter output directory");
+    }
+}
+
 /// True if a regular file stands at path, its status in st; false if nothing does. Throws
-/// plot::bad_input naming the path if anything else does (see check_output_file).
+/// plot::bad_input naming the path if anything else does, or if its name or its temporary's
+/// is too long (see check_output_file).
 bool check_existing_output(const fs::path& path, struct stat& st) {
+    check_name_lengths(path);
     // O_PATH opens nothing (a FIFO does not block, a device is not touched) and, with
     // O_NOFOLLOW, a symbolic link is the link itself, never what it leads to.
     const descriptor fd(::open(path.c_str(), O_PATH | O_NOFOLLOW | O_CLOEXEC));

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Performance without changing a pixel: Pango sorts the faces of the families a theme
 // names, not every installed font, and lays out a text they do not cover over all fonts.
+#include "plot/gif.hpp"
 #include "plot/text.hpp"
 
 #include "process.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -149,5 +151,58 @@ TEST(PerfFonts, UncoveredLabelsFallBackToOtherFonts) {
         EXPECT_EQ(star.find("[CMU"), std::string::npos) << star;  // another font's glyph
         EXPECT_EQ(star.find(" 0/"), std::string::npos) << star;    // not the missing glyph
     }
+    std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+/// The message check_gif_size throws, or "" if the GIF is accepted.
+std::string gif_refusal(double frames, int width, int height) {
+    try {
+        plot::check_gif_size(frames, width, height);
+    } catch (const plot::bad_input& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+// A GIF's size is bounded before work: at 720p, 1080p and 4K the most frames whose pixels
+// add up to at most max_gif_pixels are accepted, one frame more refused with the size and
+// what to lower.
+TEST(PerfGif, SizeBoundAcceptsNAndRefusesNPlusOne) {
+    for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}, std::pair{3840, 2160}}) {
+        const double most = std::floor(plot::max_gif_pixels / (static_cast<double>(w) * h));
+        EXPECT_EQ(gif_refusal(most, w, h), "") << w << "x" << h;
+        const std::string message = gif_refusal(most + 1, w, h);
+        EXPECT_NE(message.find(std::to_string(static_cast<long>(most + 1)) + " frames of " + std::to_string(w) + " x " +
+                               std::to_string(h) + " pixels"),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find("50 MB"), std::string::npos) << message;
+        EXPECT_NE(message.find("lower --size or --dpi"), std::string::npos) << message;
+    }
+    EXPECT_EQ(gif_refusal(4340, 1280, 720), "");  // the 30-period swing (3810 frames) fits
+    EXPECT_NE(gif_refusal(4341, 1280, 720), "");
+    EXPECT_EQ(gif_refusal(482, 3840, 2160), "");  // 4K: three periods of the swing (127 frames each)
+    EXPECT_NE(gif_refusal(483, 3840, 2160), "");
+}
+
+// The 30-period swing at 4K (about 165 MB) is refused before any work: exit 2, the message,
+// no file; the same GIF at the slides' 1280 x 720 stays accepted (SwingGifOf30PeriodsStaysWithin50MB).
+TEST(PerfGif, FourKSwingOf30PeriodsRefusedBeforeWork) {
+    const auto dir = temp_dir("perf-gif-4k");
+    std::string spec = slurp(std::filesystem::path(PENDULUM_TEST_DATA) / "../../src/figures/specs/swing.toml");
+    const std::size_t at = spec.find("\nperiods = 3\n");
+    ASSERT_NE(at, std::string::npos);
+    spec.replace(at, 13, "\nperiods = 30\n");
+    std::ofstream(dir / "swing30.toml") << spec;
+    const auto r = run_cli("render swing30.toml --theme slides --size 3840x2160 -f gif -o .", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("swing30.gif: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("x 2160 pixels"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("a GIF holds at most"), std::string::npos) << r.err;
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
     std::filesystem::remove_all(dir);
 }

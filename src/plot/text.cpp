@@ -486,15 +486,15 @@ std::vector<FcPattern*> faces_named(const std::vector<std::string>& names, FcCha
 /// handful of faces instead of every installed font for each new size and style.
 named_fonts make_named_fonts(const std::string& font_family) {
     named_fonts made;
-    made.covered = FcCharSetCreate();
-    if (!made.covered) throw std::bad_alloc();
     std::vector<std::string> names;
     for (const std::string& f : family_names(font_family)) {
         const auto name = compared_name(f.c_str());
         if (!name) return made;  // compared by fontconfig alone: all fonts serve
         names.push_back(*name);
     }
-    const std::vector<FcPattern*> faces = faces_named(names, made.covered);
+    const std::unique_ptr<FcCharSet, decltype(&FcCharSetDestroy)> covered(FcCharSetCreate(), &FcCharSetDestroy);
+    if (!covered) throw std::bad_alloc();
+    const std::vector<FcPattern*> faces = faces_named(names, covered.get());
     if (faces.empty()) return made;
     std::vector<std::string> dirs;
     std::string accepted;
@@ -512,13 +512,13 @@ named_fonts make_named_fonts(const std::string& font_family) {
     for (const std::string& d : dirs) xml += "<dir>" + xml_escaped(d.c_str()) + "</dir>";
     xml += "<selectfont><rejectfont><glob>*</glob></rejectfont><acceptfont>" + accepted +
            "</acceptfont></selectfont></fontconfig>";
-    FcConfig* c = FcConfigCreate();
-    if (!c || !FcConfigParseAndLoadFromMemory(c, reinterpret_cast<const FcChar8*>(xml.c_str()), FcTrue) ||
-        !FcConfigBuildFonts(c)) {
-        if (c) FcConfigDestroy(c);
+    std::unique_ptr<FcConfig, decltype(&FcConfigDestroy)> c(FcConfigCreate(), &FcConfigDestroy);
+    if (!c || !FcConfigParseAndLoadFromMemory(c.get(), reinterpret_cast<const FcChar8*>(xml.c_str()), FcTrue) ||
+        !FcConfigBuildFonts(c.get())) {
         throw std::runtime_error("cannot set up the font configuration of " + font_family);
     }
-    made.config = c;
+    made.config = c.release();
+    made.covered = FcCharSetCopy(covered.get());
     return made;
 }
 
@@ -526,10 +526,11 @@ named_fonts make_named_fonts(const std::string& font_family) {
 /// they live as long as it does).
 const named_fonts& named_fonts_of(const std::string& font_family) {
     static std::mutex mutex;
-    static std::map<std::string, named_fonts> made;
+    // Never destroyed, as the configurations it holds are not: they stay reachable.
+    static auto* const made = new std::map<std::string, named_fonts>;
     const std::lock_guard lock(mutex);
-    auto it = made.find(font_family);
-    if (it == made.end()) it = made.emplace(font_family, make_named_fonts(font_family)).first;
+    auto it = made->find(font_family);
+    if (it == made->end()) it = made->emplace(font_family, make_named_fonts(font_family)).first;
     return it->second;
 }
 

@@ -5,6 +5,7 @@
 #include "figures/spec_build.hpp"
 #include "pendulum/amplitude.hpp"
 #include "plot/frames.hpp"
+#include "plot/gif.hpp"
 #include "plot/streamed_file.hpp"
 #include "plot/video.hpp"
 #include "plot/workers.hpp"
@@ -217,6 +218,8 @@ void check_animation_work(const std::vector<animation_job>& animations, const st
             try {
                 if (f == "mp4") plot::check_video_memory(plot::mp4_video, w, h);
                 if (f == "webm") plot::check_video_memory(plot::webm_video, w, h);
+                // Beyond every animation's bound, that bound's message.
+                if (f == "gif" && pixels <= max_animation_pixels) plot::check_gif_size(frames, w, h);
             } catch (const plot::bad_input& err) {
                 throw bad_input(m.figure->id + "." + f + ": " + err.what());
             }

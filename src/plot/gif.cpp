@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/gif.hpp"
 
+#include "plot/errors.hpp"
+
 #include <gif_lib.h>
 
 #include <algorithm>
@@ -290,6 +292,17 @@ struct gif_encoder::state {
         }
     }
 };
+
+void check_gif_size(double frames, int width, int height) {
+    const double pixels = frames * width * height;
+    if (pixels <= max_gif_pixels) return;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%.0f frames of %d x %d pixels are %.4g pixels; a GIF holds at most %.4g so that it stays within "
+                  "50 MB (lower --size or --dpi, the fps, or the periods or duration_s; or write mp4 or webm)",
+                  frames, width, height, pixels, max_gif_pixels);
+    throw bad_input(text);
+}
 
 double gif_playback_rate(double fps) {
     if (!(fps > 0)) throw std::invalid_argument("a frame rate is above 0");

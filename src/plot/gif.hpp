@@ -18,6 +18,15 @@ double gif_playback_rate(double fps);
 /// A frame rate as text, to the hundredth without trailing zeros: "25", "33.33".
 std::string rate_text(double fps);
 
+/// The most pixels the frames of one GIF may add up to. The 30-period swing at 1280 x 720
+/// (3810 frames, 3.51e9 pixels) takes 38.8 MB, 11 bytes per thousand pixels, and one 4K
+/// period 7.5 bytes; at 11 bytes this many pixels are 44 MB, under the 50 MB promised.
+inline constexpr double max_gif_pixels = 4e9;
+
+/// Throws bad_input, before any work, if `frames` frames of width x height pixels add up to
+/// more than max_gif_pixels, naming the size and what to lower.
+void check_gif_size(double frames, int width, int height);
+
 /// An 8-bit RGB colour of a GIF palette.
 struct rgb8 {
     std::uint8_t r = 0;  ///< red

@@ -24,6 +24,7 @@
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -234,13 +235,17 @@ std::vector<std::string> loaded_font_dirs() {
     return out;
 }
 
+/// Where fontconfig keeps its caches, for every configuration made here.
+constexpr const char* cache_dirs =
+    "<cachedir>/var/cache/fontconfig</cachedir><cachedir prefix=\"xdg\">fontconfig</cachedir>";
+
 FcConfig* private_font_config() {
     static FcConfig* const config = [] {
         check_fontconfig_file();  // before fontconfig reads its configuration
         std::string xml =
             "<?xml version=\"1.0\"?><!DOCTYPE fontconfig SYSTEM \"urn:fontconfig:fonts.dtd\">"
-            "<fontconfig><dir>/usr/share/fonts</dir><cachedir>/var/cache/fontconfig</cachedir>"
-            "<cachedir prefix=\"xdg\">fontconfig</cachedir>";
+            "<fontconfig><dir>/usr/share/fonts</dir>" +
+            std::string(cache_dirs);
         const std::string first = "<dir>/usr/share/fonts</dir>";
         auto dirs = scanned_font_dirs();
         if (!dirs) dirs = loaded_font_dirs();
@@ -390,6 +395,186 @@ std::string with_letter_forms(std::string markup, const std::vector<letter_form>
     return markup;
 }
 
+namespace {
+
+/// The families of a comma-separated font family, split as Pango splits it (blanks kept:
+/// fontconfig ignores them when it compares names).
+std::vector<std::string> family_names(const std::string& font_family) {
+    std::vector<std::string> out;
+    for (std::size_t from = 0;;) {
+        const std::size_t comma = font_family.find(',', from);
+        out.push_back(font_family.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+        if (comma == std::string::npos) return out;
+        from = comma + 1;
+    }
+}
+
+/// A family name as fontconfig compares names made of printable ASCII: blanks left out,
+/// in lower case; nothing for a name with other characters (whose case folding and
+/// blanks are fontconfig's own).
+std::optional<std::string> compared_name(const char* name) {
+    std::string out;
+    for (const char* p = name; *p; ++p) {
+        const auto c = static_cast<unsigned char>(*p);
+        if (c == ' ') continue;
+        if (c < 0x21 || c > 0x7e) return std::nullopt;
+        out += static_cast<char>(std::tolower(c));
+    }
+    return out;
+}
+
+/// Whether a font is of one of the families `names` (compared names): surely, surely not,
+/// or perhaps (a family name this comparison does not decide).
+enum class named { no, yes, perhaps };
+
+named of_named_family(FcPattern* font, const std::vector<std::string>& names) {
+    named found = named::no;
+    FcChar8* family = nullptr;
+    for (int i = 0; FcPatternGetString(font, FC_FAMILY, i, &family) == FcResultMatch; ++i) {
+        const auto name = compared_name(reinterpret_cast<const char*>(family));
+        if (!name) found = named::perhaps;
+        else if (std::find(names.begin(), names.end(), *name) != names.end()) return named::yes;
+    }
+    return found;
+}
+
+/// True if Pango draws with the font: a file, in an OpenType format (Pango leaves out the
+/// others, Type 1 among them).
+bool pango_draws_with(FcPattern* font) {
+    FcChar8* file = nullptr;
+    FcChar8* format = nullptr;
+    if (FcPatternGetString(font, FC_FILE, 0, &file) != FcResultMatch ||
+        FcPatternGetString(font, FC_FONTFORMAT, 0, &format) != FcResultMatch) {
+        return false;
+    }
+    const std::string_view f(reinterpret_cast<const char*>(format));
+    return f == "TrueType" || f == "CFF";
+}
+
+/// The faces of the families a font family names, in a configuration of their own, and the
+/// characters they cover together.
+struct named_fonts {
+    FcConfig* config = nullptr;   ///< null: none installed (the private configuration serves)
+    FcCharSet* covered = nullptr; ///< the union of their character sets
+};
+
+/// The faces of the private configuration whose family `names` has (and those it perhaps
+/// has), in its order, and the characters the surely named ones cover.
+std::vector<FcPattern*> faces_named(const std::vector<std::string>& names, FcCharSet* covered) {
+    std::vector<FcPattern*> faces;
+    for (const FcSetName which : {FcSetSystem, FcSetApplication}) {
+        const FcFontSet* set = FcConfigGetFonts(private_font_config(), which);
+        for (int i = 0; set && i < set->nfont; ++i) {
+            FcPattern* font = set->fonts[i];
+            const named n = of_named_family(font, names);
+            if (n == named::no) continue;
+            faces.push_back(font);
+            FcCharSet* chars = nullptr;
+            if (n == named::yes && pango_draws_with(font) &&
+                FcPatternGetCharSet(font, FC_CHARSET, 0, &chars) == FcResultMatch) {
+                FcCharSetMerge(covered, chars, nullptr);
+            }
+        }
+    }
+    return faces;
+}
+
+/// A configuration holding the faces of the families `font_family` names and no other:
+/// their directories, read from the same caches, every other file refused. Fontconfig
+/// ranks a family the pattern names above every family it does not name, so for a text
+/// these faces cover Pango picks the very faces it picks among all fonts, after sorting a
+/// handful of faces instead of every installed font for each new size and style.
+named_fonts make_named_fonts(const std::string& font_family) {
+    named_fonts made;
+    std::vector<std::string> names;
+    for (const std::string& f : family_names(font_family)) {
+        const auto name = compared_name(f.c_str());
+        if (!name) return made;  // compared by fontconfig alone: all fonts serve
+        names.push_back(*name);
+    }
+    const std::unique_ptr<FcCharSet, decltype(&FcCharSetDestroy)> covered(FcCharSetCreate(), &FcCharSetDestroy);
+    if (!covered) throw std::bad_alloc();
+    const std::vector<FcPattern*> faces = faces_named(names, covered.get());
+    if (faces.empty()) return made;
+    std::vector<std::string> dirs;
+    std::string accepted;
+    for (FcPattern* font : faces) {
+        FcChar8* file = nullptr;
+        if (FcPatternGetString(font, FC_FILE, 0, &file) != FcResultMatch) continue;
+        const std::string path(reinterpret_cast<const char*>(file));
+        const std::string dir = path.substr(0, path.rfind('/'));
+        if (std::find(dirs.begin(), dirs.end(), dir) == dirs.end()) dirs.push_back(dir);
+        // A name with * or ? takes in more files of its directory, which is harmless.
+        accepted += "<glob>" + xml_escaped(path.c_str()) + "</glob>";
+    }
+    std::string xml = "<?xml version=\"1.0\"?><!DOCTYPE fontconfig SYSTEM \"urn:fontconfig:fonts.dtd\"><fontconfig>" +
+                      std::string(cache_dirs);
+    for (const std::string& d : dirs) xml += "<dir>" + xml_escaped(d.c_str()) + "</dir>";
+    xml += "<selectfont><rejectfont><glob>*</glob></rejectfont><acceptfont>" + accepted +
+           "</acceptfont></selectfont></fontconfig>";
+    std::unique_ptr<FcConfig, decltype(&FcConfigDestroy)> c(FcConfigCreate(), &FcConfigDestroy);
+    if (!c || !FcConfigParseAndLoadFromMemory(c.get(), reinterpret_cast<const FcChar8*>(xml.c_str()), FcTrue) ||
+        !FcConfigBuildFonts(c.get())) {
+        throw std::runtime_error("cannot set up the font configuration of " + font_family);
+    }
+    made.config = c.release();
+    made.covered = FcCharSetCopy(covered.get());
+    return made;
+}
+
+/// The named faces of a font family, made once a process (as the private configuration,
+/// they live as long as it does).
+const named_fonts& named_fonts_of(const std::string& font_family) {
+    static std::mutex mutex;
+    // Never destroyed, as the configurations it holds are not: they stay reachable.
+    static auto* const made = new std::map<std::string, named_fonts>;
+    const std::lock_guard lock(mutex);
+    auto it = made->find(font_family);
+    if (it == made->end()) it = made->emplace(font_family, make_named_fonts(font_family)).first;
+    return it->second;
+}
+
+/// True if an attribute sets a font family of its own.
+gboolean names_a_family(PangoAttribute* a, gpointer) {
+    if (a->klass->type == PANGO_ATTR_FAMILY) return TRUE;
+    if (a->klass->type != PANGO_ATTR_FONT_DESC) return FALSE;
+    const PangoFontDescription* d = reinterpret_cast<PangoAttrFontDesc*>(a)->desc;
+    return (pango_font_description_get_set_fields(d) & PANGO_FONT_MASK_FAMILY) != 0;
+}
+
+}  // namespace
+
+bool named_fonts_cover(const std::string& font_family, const char* text, PangoAttrList* attrs) {
+    const named_fonts& named = named_fonts_of(font_family);
+    if (!named.config || !text) return false;
+    if (attrs) {
+        PangoAttrList* found = pango_attr_list_filter(attrs, names_a_family, nullptr);
+        if (found) {
+            pango_attr_list_unref(found);
+            return false;
+        }
+    }
+    for (const char* p = text; *p; p = g_utf8_next_char(p)) {
+        if (!FcCharSetHasChar(named.covered, g_utf8_get_char(p))) return false;
+    }
+    return true;
+}
+
+PangoFontMap* named_font_map(const std::string& font_family) {
+    FcConfig* const config = named_fonts_of(font_family).config;
+    if (!config) return thread_font_map();
+    thread_local std::map<std::string, gobject_ptr<PangoFontMap>> maps;
+    auto it = maps.find(font_family);
+    if (it == maps.end()) {
+        thread_font_map();  // made first, so destroyed after these at the thread's end
+        gobject_ptr<PangoFontMap> m(pango_cairo_font_map_new_for_font_type(CAIRO_FONT_TYPE_FT));
+        if (!m.get()) throw std::runtime_error("cannot create a Pango font map");
+        pango_fc_font_map_set_config(PANGO_FC_FONT_MAP(m.get()), config);
+        it = maps.emplace(font_family, std::move(m)).first;
+    }
+    return it->second.get();
+}
+
 PangoFontMap* thread_font_map() {
     thread_local const gobject_ptr<PangoFontMap> map = [] {
         FcConfig* const config = private_font_config();  // before Pango's own start-up
@@ -425,7 +610,7 @@ bool first_family_resolves(PangoContext* context, const std::string& font_family
 }
 
 bool font_family_installed(const std::string& font_family) {
-    const gobject_ptr<PangoContext> context(pango_font_map_create_context(thread_font_map()));
+    const gobject_ptr<PangoContext> context(pango_font_map_create_context(named_font_map(font_family)));
     return first_family_resolves(context.get(), font_family);
 }
 

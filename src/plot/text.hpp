@@ -26,6 +26,16 @@ namespace plot {
 /// every machine. Font maps are not shared between threads.
 PangoFontMap* thread_font_map();
 
+/// This thread's Pango font map over the faces of the families `font_family` names and no
+/// other font (thread_font_map() where none is installed): for a text they cover it picks
+/// the faces thread_font_map() picks, after sorting a few faces instead of every font.
+PangoFontMap* named_font_map(const std::string& font_family);
+
+/// True if named_font_map(font_family) lays out `text` (with `attrs`, may be null) as
+/// thread_font_map() does: a face of a named family covers each of its characters and no
+/// attribute names a family of its own.
+bool named_fonts_cover(const std::string& font_family, const char* text, PangoAttrList* attrs);
+
 /// The font directories of that configuration, as fontconfig lists them: the machine's and
 /// the user's font directories (read from their fontconfig files, not their settings).
 std::vector<std::string> private_font_directories();
@@ -86,19 +96,7 @@ public:
 
     /// A shaper of `family` in this thread's font map.
     explicit text_shaper(const std::string& family)
-        : family_(family), context_(pango_font_map_create_context(thread_font_map())) {
-        // Text is measured and shaped in points alone, never in the target's pixels: the
-        // context keeps the identity matrix whatever cr's scale (a PNG at any dpi, a PDF),
-        // glyph positions are not rounded to device units, and there is no hinting, so that
-        // every format and every resolution get the same layout.
-        pango_context_set_matrix(context_.get(), nullptr);
-        pango_context_set_round_glyph_positions(context_.get(), FALSE);
-        pango_cairo_context_set_resolution(context_.get(), 72.0);
-        font_options_ptr options(cairo_font_options_create());
-        cairo_font_options_set_hint_style(options.get(), CAIRO_HINT_STYLE_NONE);
-        cairo_font_options_set_hint_metrics(options.get(), CAIRO_HINT_METRICS_OFF);
-        cairo_font_options_set_antialias(options.get(), CAIRO_ANTIALIAS_GRAY);
-        pango_cairo_context_set_font_options(context_.get(), options.get());
+        : family_(family), context_(shaping_context(named_font_map(family))) {
         check_font_installed();
         forms_ = distinct_letter_forms(context_.get(), family_);
         for (letter_form& f : text_font_primes(context_.get(), family_)) forms_.push_back(std::move(f));
@@ -499,21 +497,50 @@ private:
                 ink.height / double(PANGO_SCALE)};
     }
 
+    /// A context that shapes text in points alone, never in the target's pixels: the
+    /// identity matrix whatever cr's scale (a PNG at any dpi, a PDF), glyph positions not
+    /// rounded to device units, and no hinting, so that every format and every resolution
+    /// get the same layout.
+    static gobject_ptr<PangoContext> shaping_context(PangoFontMap* map) {
+        gobject_ptr<PangoContext> context(pango_font_map_create_context(map));
+        pango_context_set_matrix(context.get(), nullptr);
+        pango_context_set_round_glyph_positions(context.get(), FALSE);
+        pango_cairo_context_set_resolution(context.get(), 72.0);
+        font_options_ptr options(cairo_font_options_create());
+        cairo_font_options_set_hint_style(options.get(), CAIRO_HINT_STYLE_NONE);
+        cairo_font_options_set_hint_metrics(options.get(), CAIRO_HINT_METRICS_OFF);
+        cairo_font_options_set_antialias(options.get(), CAIRO_ANTIALIAS_GRAY);
+        pango_cairo_context_set_font_options(context.get(), options.get());
+        return context;
+    }
+
+    /// The context for markup whose text and attributes Pango parsed: the named faces'
+    /// where they lay it out as all fonts do, else all fonts' (made when first needed).
+    PangoContext* context_for(const char* text, PangoAttrList* attrs) const {
+        if (named_fonts_cover(family_, text, attrs)) return context_.get();
+        if (!all_fonts_.get()) all_fonts_ = shaping_context(thread_font_map());
+        return all_fonts_.get();
+    }
+
     /// A layout of markup (a piece of `whole`, named in errors) at size.
     gobject_ptr<PangoLayout> make(const std::string& markup, double size, const std::string& whole) const {
-        gobject_ptr<PangoLayout> layout(pango_layout_new(context_.get()));
-        font_description_ptr font(pango_font_description_new());
-        pango_font_description_set_family(font.get(), family_.c_str());
-        pango_font_description_set_size(font.get(), static_cast<gint>(std::lround(size * PANGO_SCALE)));
-        pango_layout_set_font_description(layout.get(), font.get());
         const std::string spans = scripts_as_spans(drawn(inline_fractions(markup)), size);
         // Checked first: Pango would only print a warning and show nothing.
         GError* error = nullptr;
-        if (!pango_parse_markup(spans.c_str(), -1, 0, nullptr, nullptr, nullptr, &error)) {
+        PangoAttrList* attrs = nullptr;
+        char* text = nullptr;
+        if (!pango_parse_markup(spans.c_str(), -1, 0, &attrs, &text, nullptr, &error)) {
             const std::string why = error ? error->message : "not valid";
             g_clear_error(&error);
             throw bad_input("invalid text markup '" + whole + "': " + why);
         }
+        const std::unique_ptr<PangoAttrList, decltype(&pango_attr_list_unref)> own_attrs(attrs, &pango_attr_list_unref);
+        const std::unique_ptr<char, decltype(&g_free)> own_text(text, &g_free);
+        gobject_ptr<PangoLayout> layout(pango_layout_new(context_for(text, attrs)));
+        font_description_ptr font(pango_font_description_new());
+        pango_font_description_set_family(font.get(), family_.c_str());
+        pango_font_description_set_size(font.get(), static_cast<gint>(std::lround(size * PANGO_SCALE)));
+        pango_layout_set_font_description(layout.get(), font.get());
         pango_layout_set_markup(layout.get(), spans.c_str(), -1);
         return layout;
     }
@@ -548,7 +575,8 @@ private:
     }
 
     std::string family_;
-    gobject_ptr<PangoContext> context_;
+    gobject_ptr<PangoContext> context_;          // over the named faces
+    mutable gobject_ptr<PangoContext> all_fonts_;  // over every font, for the texts they do not cover
     std::vector<letter_form> forms_;
     std::map<std::pair<std::string, double>, std::shared_ptr<const text_box>> boxes_;
 };

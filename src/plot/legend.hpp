@@ -31,6 +31,10 @@ int overlap(const rect& box, const std::vector<series>& data, const std::vector<
 /// The legend's entries (series with a label) and its size at the theme's legend font.
 legend_layout measure_legend(const text_engine& text, const panel& p, const theme& th);
 
+/// True if two series make one legend entry: the same glyph (colour, line, marker, style
+/// key) and one label, the second maybe said more fully ("E = 1.6" and "E = 1.6, libration").
+bool same_legend_entry(const series& a, const series& b);
+
 /// Draws a series' line and marker sample of width w centred at height y.
 void draw_legend_sample(cairo_t* cr, const theme& th, const series& s, double x, double y, double w);
 

@@ -25,6 +25,11 @@ struct page_size {
 /// fall below min_script_pt. The message names the key, its value and what to do.
 std::string text_size_problem(const theme& th);
 
+/// One legend per figure: an entry that an earlier panel of `panels` (in the figure's order)
+/// shows is left out of the later ones, the earlier taking the fuller label; every panel
+/// keeps the entries of its own. Still figures and animations alike.
+void one_legend(const std::vector<panel*>& panels);
+
 /// The size of a figure drawn with a theme: the theme's fixed size, or the panels' size.
 page_size figure_size(const figure& fig, const theme& th);
 

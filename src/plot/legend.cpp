@@ -103,7 +103,15 @@ void one_legend(const std::vector<panel*>& panels) {
     }
 }
 
+glyph_log& current_glyph_log() {
+    thread_local glyph_log log;
+    return log;
+}
+
 void draw_legend_sample(cairo_t* cr, const theme& th, const series& s, double x, double y, double w) {
+    if (glyph_log& log = current_glyph_log(); log.out) {
+        log.out->legend.push_back(glyph{s.label.markup, log.at, s.line, s.width_scale, s.marker, s.color, s.rgb_color});
+    }
     set_color(cr, th, s);
     if (s.line != line_style::none) {
         set_line_style(cr, th, s.line, s.width_scale);

@@ -334,6 +334,21 @@ void stroke_crowded(cairo_t* cr, const theme& th, const series& s, const panel_g
     stroke_polyline(cr, line, clip);
 }
 
+/// Logs series k as draw_series strokes it (glyphs_drawn): its line, or the thin line of a
+/// crowded series of markers only, and its marker where any is drawn.
+void log_series(const series& s, std::size_t k, const spaced_series& spaced) {
+    const glyph_log& log = current_glyph_log();
+    if (!log.out) return;
+    glyph g{s.label.markup, log.at, s.line, s.width_scale, marker_style::none, s.color, s.rgb_color};
+    if (log.given && k < log.given->data.size()) g.label = log.given->data[k].label.markup;
+    if (s.line == line_style::none && spaced.crowded[k]) {
+        g.line = line_style::solid;
+        g.width_scale = crowded_width * s.width_scale;
+    }
+    if (!spaced.markers[k].x.empty()) g.marker = s.marker;
+    if (g.line != line_style::none || g.marker != marker_style::none) log.out->series.push_back(g);
+}
+
 /// The panel's lines and error bars clipped to the axes, and its markers whole
 /// (matplotlib's clip_on=False), those whose centre is inside, spaced (space_markers).
 void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geometry& g, const spaced_series& spaced,
@@ -347,6 +362,7 @@ void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geome
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         const auto& s = p.data[k];
         if (!gate.draws(s.overlay)) continue;
+        log_series(s, k, spaced);
         if (s.line == line_style::none) {
             if (spaced.crowded[k]) stroke_crowded(cr, th, s, g, k, clip);
             continue;
@@ -1083,9 +1099,14 @@ void draw_placed(cairo_t* cr, const text_engine& text, const theme& th, figure_l
     const figure& fig = *f.fig;
     f.plans.resize(fig.panels.size());
     record_frames(fig, f.plans, f.cells, frames);
+    glyph_log& log = current_glyph_log();
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+        log.at = i;
+        log.given = &fig.panels[i];
         draw_panel(cr, text, th, f.planned[i], f.plans[i], placed[i], crowded[i], gate);
     }
+    log.at = 0;
+    log.given = nullptr;
 }
 
 }  // namespace
@@ -1162,6 +1183,21 @@ std::vector<panel_frame> panel_frames(const figure& fig, const theme& th) {
     std::vector<panel_frame> frames;
     draw_figure(cr.get(), fig, th, size, draw_pass::all, nullptr, false, &frames);
     return frames;
+}
+
+drawn_glyphs glyphs_drawn(const figure& fig, const theme& th) {
+    drawn_glyphs out;
+    glyph_log& log = current_glyph_log();
+    const glyph_log outer = log;
+    log = glyph_log{&out, 0, nullptr};
+    try {
+        panel_frames(fig, th);
+    } catch (...) {
+        log = outer;
+        throw;
+    }
+    log = outer;
+    return out;
 }
 
 std::vector<std::vector<marker_centres_of>> marker_centres(const figure& unstyled, const theme& th) {

@@ -6,6 +6,7 @@
 #include "pendulum/exact.hpp"
 #include "plot/gif.hpp"
 #include "plot/output.hpp"
+#include "plot/render.hpp"
 #include "pendulum/seconds.hpp"
 
 #include <cmath>
@@ -124,37 +125,20 @@ void plan_length(animation_plan& plan, const animation_spec& a, const std::vecto
     if (plan.seamless && plan.loop == loop_mode::periods) plan.history = plan.motion_frames * plan.step;
 }
 
-/// True if two legend labels name one thing, the second maybe said more fully
-/// ("E = 1.6" and "E = 1.6, libration").
-bool same_entry(const std::string& a, const std::string& b) {
-    return a == b || b.starts_with(a + ", ") || a.starts_with(b + ", ");
-}
-
-/// One legend for the animation: an entry (glyph and label) that an earlier panel shows is
-/// left out of the later ones, the earlier taking the fuller label; a drawing's dotted rays
-/// to its turning points get an entry of their own.
+/// One legend for the animation (plot::one_legend, as every figure has): a drawing's dotted
+/// rays to its turning points get an entry of their own, the first of them.
 void one_legend(plot::figure& f) {
-    std::vector<plot::series*> shown;
+    bool turn_named = false;
+    std::vector<plot::panel*> panels;
     for (auto& panel : f.panels) {
+        panels.push_back(&panel);
         for (auto& s : panel.data) {
-            if (s.id.starts_with("turn:") && shown.end() == std::find_if(shown.begin(), shown.end(), [](const plot::series* k) {
-                    return k->id.starts_with("turn:");
-                })) {
-                s.label = plot::label("turning points");
-            }
-            if (s.label.empty()) continue;
-            const auto same = std::find_if(shown.begin(), shown.end(), [&](const plot::series* k) {
-                return k->color == s.color && k->line == s.line && k->marker == s.marker && k->style_key == s.style_key &&
-                       same_entry(k->label.markup, s.label.markup);
-            });
-            if (same == shown.end()) {
-                shown.push_back(&s);
-                continue;
-            }
-            if (s.label.markup.size() > (*same)->label.markup.size()) (*same)->label = s.label;
-            s.label = {};
+            if (turn_named || !s.id.starts_with("turn:")) continue;
+            s.label = plot::label("turning points");
+            turn_named = true;
         }
     }
+    plot::one_legend(panels);
 }
 
 }  // namespace

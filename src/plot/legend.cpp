@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plot/legend.hpp"
 
+#include "plot/render.hpp"
 #include "plot/strokes.hpp"
 
 #include <algorithm>
+#include <string>
 
 namespace plot {
 
@@ -74,7 +76,42 @@ legend_layout measure_legend(const text_engine& text, const panel& p, const them
     return l;
 }
 
+bool same_legend_entry(const series& a, const series& b) {
+    const std::string& x = a.label.markup;
+    const std::string& y = b.label.markup;
+    const bool same_label = x == y || y.starts_with(x + ", ") || x.starts_with(y + ", ");
+    const bool same_colour = a.color == b.color && a.rgb_color.has_value() == b.rgb_color.has_value() &&
+                             (!a.rgb_color || (a.rgb_color->r == b.rgb_color->r && a.rgb_color->g == b.rgb_color->g &&
+                                               a.rgb_color->b == b.rgb_color->b));
+    return same_label && same_colour && a.line == b.line && a.marker == b.marker && a.style_key == b.style_key;
+}
+
+void one_legend(const std::vector<panel*>& panels) {
+    std::vector<series*> shown;
+    for (panel* p : panels) {
+        for (auto& s : p->data) {
+            if (s.label.empty()) continue;
+            const auto same =
+                std::find_if(shown.begin(), shown.end(), [&](const series* k) { return same_legend_entry(*k, s); });
+            if (same == shown.end()) {
+                shown.push_back(&s);
+                continue;
+            }
+            if (s.label.markup.size() > (*same)->label.markup.size()) (*same)->label = s.label;
+            s.label = {};
+        }
+    }
+}
+
+glyph_log& current_glyph_log() {
+    thread_local glyph_log log;
+    return log;
+}
+
 void draw_legend_sample(cairo_t* cr, const theme& th, const series& s, double x, double y, double w) {
+    if (glyph_log& log = current_glyph_log(); log.out) {
+        log.out->legend.push_back(glyph{s.label.markup, log.at, s.line, s.width_scale, s.marker, s.color, s.rgb_color});
+    }
     set_color(cr, th, s);
     if (s.line != line_style::none) {
         set_line_style(cr, th, s.line, s.width_scale);

@@ -3,6 +3,7 @@
 // Part of the plot layer's renderer; not a public interface.
 
 #include "plot/geometry.hpp"
+#include "plot/render.hpp"
 #include "plot/text.hpp"
 #include "plot/theme.hpp"
 
@@ -30,6 +31,19 @@ int overlap(const rect& box, const std::vector<series>& data, const std::vector<
 
 /// The legend's entries (series with a label) and its size at the theme's legend font.
 legend_layout measure_legend(const text_engine& text, const panel& p, const theme& th);
+
+/// True if two series make one legend entry: the same glyph (colour, line, marker, style
+/// key) and one label, the second maybe said more fully ("E = 1.6" and "E = 1.6, libration").
+bool same_legend_entry(const series& a, const series& b);
+
+/// Where draw_legend_sample and the series' strokes are logged (glyphs_drawn), or null;
+/// `at` the panel being drawn.
+struct glyph_log {
+    drawn_glyphs* out = nullptr;
+    std::size_t at = 0;
+    const panel* given = nullptr;  // the panel being drawn as the figure gave it (its labels)
+};
+glyph_log& current_glyph_log();
 
 /// Draws a series' line and marker sample of width w centred at height y.
 void draw_legend_sample(cairo_t* cr, const theme& th, const series& s, double x, double y, double w);

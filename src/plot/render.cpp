@@ -226,49 +226,94 @@ placed_panel place_with_legend(const theme& th, const panel& p, const panel_plan
     return out;
 }
 
-/// The markers of a series (indices into d) that stand at least `spacing` apart on the
-/// page from every marker kept before them, the first kept: a series sampled finely where
-/// it moves slowly (a plateau) or drawn small keeps a marker every `spacing`.
-std::vector<std::size_t> spaced_markers(const device_series& d, double spacing) {
-    std::vector<std::size_t> kept;
-    for (std::size_t i = 0; i < d.x.size() && i < d.y.size(); ++i) {
-        if (!std::isfinite(d.x[i]) || !std::isfinite(d.y[i])) continue;
-        const bool apart = std::all_of(kept.begin(), kept.end(), [&](std::size_t j) {
-            return std::hypot(d.x[i] - d.x[j], d.y[i] - d.y[j]) >= spacing;
-        });
-        if (apart) kept.push_back(i);
-    }
-    return kept;
-}
-
 /// Whether a series' markers are spaced on the page (a method's circles; not measured data,
 /// whose every point is a measurement, nor what moves in an animation).
 bool spaces_markers(const series& s) {
     return s.marker != marker_style::none && s.data_slot < 0 && !s.overlay;
 }
 
-/// The series as drawn: markers centred at least 1.5 diameters apart (spaced_markers); one
-/// whose markers would crowd is drawn as a thin line through all its points, with the
-/// markers that stand apart. `crowded` says which series that is.
+/// The markers of a series (indices into d) that stand at least `spacing` apart on the
+/// page from every marker kept before them, the first kept, and from every disc of `taken`
+/// (x, y and the least distance to it): a series sampled finely where it moves slowly (a
+/// plateau) or drawn small keeps a marker every `spacing`.
+struct disc {
+    double x = 0;
+    double y = 0;
+    double apart = 0;
+};
+
+std::vector<std::size_t> spaced_markers(const device_series& d, double spacing, const std::vector<disc>& taken = {}) {
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < d.x.size() && i < d.y.size(); ++i) {
+        if (!std::isfinite(d.x[i]) || !std::isfinite(d.y[i])) continue;
+        const bool apart = std::all_of(kept.begin(), kept.end(), [&](std::size_t j) {
+            return std::hypot(d.x[i] - d.x[j], d.y[i] - d.y[j]) >= spacing;
+        });
+        const bool free = std::all_of(taken.begin(), taken.end(), [&](const disc& t) {
+            return std::hypot(d.x[i] - t.x, d.y[i] - t.y) >= t.apart;
+        });
+        if (apart && free) kept.push_back(i);
+    }
+    return kept;
+}
+
+/// The markers a panel draws of each series (indices into dev) and whether a series' own
+/// markers crowd: a series' markers stand 1.5 diameters apart (spaced_markers), and as far
+/// (1.5 times the two diameters' mean) from every marker an earlier series of the panel
+/// draws inside `area`: where markers of two series would pile, the earlier stands for
+/// both. Measured data and what moves keep every point and keep nothing off (spaces_markers).
+struct marker_choice {
+    std::vector<std::vector<std::size_t>> kept;
+    std::vector<bool> crowded;
+};
+
+marker_choice choose_markers(const theme& th, const panel& p, const std::vector<device_series>& dev, const rect& area) {
+    marker_choice out{std::vector<std::vector<std::size_t>>(p.data.size()), std::vector<bool>(p.data.size(), false)};
+    std::vector<std::pair<std::pair<double, double>, double>> placed;  // centre, diameter
+    for (std::size_t k = 0; k < p.data.size() && k < dev.size(); ++k) {
+        const device_series& d = dev[k];
+        const std::size_t n = std::min(d.x.size(), d.y.size());
+        if (!spaces_markers(p.data[k])) {
+            for (std::size_t i = 0; i < n; ++i) out.kept[k].push_back(i);
+            continue;
+        }
+        const double diameter = 2 * th.marker_radius_pt * p.data[k].marker_scale;
+        std::vector<disc> taken;
+        for (const auto& [c, other] : placed) taken.push_back({c.first, c.second, 0.75 * (diameter + other)});
+        out.kept[k] = spaced_markers(d, 1.5 * diameter, taken);
+        std::size_t finite = 0;
+        for (std::size_t i = 0; i < n; ++i) finite += std::isfinite(d.x[i] + d.y[i]);
+        out.crowded[k] = spaced_markers(d, 1.5 * diameter).size() != finite;
+        for (std::size_t i : out.kept[k]) {
+            const bool inside =
+                d.x[i] >= area.x && d.x[i] <= area.x + area.w && d.y[i] >= area.y && d.y[i] <= area.y + area.h;
+            if (inside) placed.push_back({{d.x[i], d.y[i]}, diameter});
+        }
+    }
+    return out;
+}
+
+/// The series as drawn: markers chosen by choose_markers; a series whose own markers would
+/// crowd is drawn as a thin line through all its points, with the markers that stand
+/// apart, and so is one that `alike` names (a series of the same legend entry crowds in
+/// another panel: the entry's glyph shows what each of its series draws). `crowded` says
+/// which series are drawn with that line.
 struct spaced_series {
     std::vector<device_series> markers;  // per series: the markers drawn
     std::vector<bool> crowded;           // per series: drawn as a line too
 };
 
-spaced_series space_markers(const theme& th, const panel& p, const panel_geometry& g) {
-    spaced_series out{g.dev, std::vector<bool>(p.data.size(), false)};
+spaced_series space_markers(const theme& th, const panel& p, const panel_geometry& g,
+                            const std::vector<bool>& alike = {}) {
+    const marker_choice chosen = choose_markers(th, p, g.dev, g.area);
+    spaced_series out{g.dev, chosen.crowded};
     for (std::size_t k = 0; k < p.data.size(); ++k) {
+        if (k < alike.size() && alike[k] && spaces_markers(p.data[k])) out.crowded[k] = true;
         if (!spaces_markers(p.data[k])) continue;
-        const double diameter = 2 * th.marker_radius_pt * p.data[k].marker_scale;
-        const std::vector<std::size_t> kept = spaced_markers(g.dev[k], 1.5 * diameter);
-        std::size_t finite = 0;
-        for (std::size_t i = 0; i < g.dev[k].x.size(); ++i) finite += std::isfinite(g.dev[k].x[i] + g.dev[k].y[i]);
-        if (kept.size() == finite) continue;
-        out.crowded[k] = true;
         device_series& d = out.markers[k];
         d.x.clear();
         d.y.clear();
-        for (std::size_t i : kept) {
+        for (std::size_t i : chosen.kept[k]) {
             d.x.push_back(g.dev[k].x[i]);
             d.y.push_back(g.dev[k].y[i]);
         }
@@ -276,14 +321,32 @@ spaced_series space_markers(const theme& th, const panel& p, const panel_geometr
     return out;
 }
 
+/// The width of the line through a crowded series, in units of the series' line width.
+constexpr double crowded_width = 0.6;
+
 /// The line through a crowded series: through its points (the markers stand on it).
 void stroke_crowded(cairo_t* cr, const theme& th, const series& s, const panel_geometry& g, std::size_t k,
                     const rect& clip) {
     device_series line = g.dev[k];
     line.sampled = false;
     set_color(cr, th, s);
-    set_line_style(cr, th, line_style::solid, 0.6 * s.width_scale);
+    set_line_style(cr, th, line_style::solid, crowded_width * s.width_scale);
     stroke_polyline(cr, line, clip);
+}
+
+/// Logs series k as draw_series strokes it (glyphs_drawn): its line, or the thin line of a
+/// crowded series of markers only, and its marker where any is drawn.
+void log_series(const series& s, std::size_t k, const spaced_series& spaced) {
+    const glyph_log& log = current_glyph_log();
+    if (!log.out) return;
+    glyph g{s.label.markup, log.at, s.line, s.width_scale, marker_style::none, s.color, s.rgb_color};
+    if (log.given && k < log.given->data.size()) g.label = log.given->data[k].label.markup;
+    if (s.line == line_style::none && spaced.crowded[k]) {
+        g.line = line_style::solid;
+        g.width_scale = crowded_width * s.width_scale;
+    }
+    if (!spaced.markers[k].x.empty()) g.marker = s.marker;
+    if (g.line != line_style::none || g.marker != marker_style::none) log.out->series.push_back(g);
 }
 
 /// The panel's lines and error bars clipped to the axes, and its markers whole
@@ -299,6 +362,7 @@ void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geome
     for (std::size_t k = 0; k < p.data.size(); ++k) {
         const auto& s = p.data[k];
         if (!gate.draws(s.overlay)) continue;
+        log_series(s, k, spaced);
         if (s.line == line_style::none) {
             if (spaced.crowded[k]) stroke_crowded(cr, th, s, g, k, clip);
             continue;
@@ -343,11 +407,16 @@ std::vector<keep_out> drawn_markers(const theme& th, const panel& p, const space
     return discs;
 }
 
-/// The panel as its legend shows it: a crowded series (space_markers) with its line.
-panel as_shown(const panel& p, const spaced_series& spaced) {
+/// The panel as its legend shows it: a series of markers only that crowds (space_markers)
+/// with the thin line it is drawn with (stroke_crowded); a series with a line of its own
+/// shows that line.
+panel as_shown(const panel& p, const std::vector<bool>& crowded) {
     panel shown = p;
-    for (std::size_t k = 0; k < shown.data.size(); ++k) {
-        if (spaced.crowded[k]) shown.data[k].line = line_style::solid;
+    for (std::size_t k = 0; k < shown.data.size() && k < crowded.size(); ++k) {
+        series& s = shown.data[k];
+        if (!crowded[k] || s.line != line_style::none) continue;
+        s.line = line_style::solid;
+        s.width_scale *= crowded_width;
     }
     return shown;
 }
@@ -409,14 +478,13 @@ void draw_axis_labels(const text_engine& text, const theme& th, const panel& p, 
     }
 }
 
-/// Draws one panel, its legend where `spot` puts it (in `band` for legend_spot::band).
+/// Draws one panel as `placed` (place_with_legend) puts it and its legend; `alike` names
+/// the series drawn crowded (space_markers) for a series of their legend entry elsewhere.
 void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
-                const rect& cell, legend_spot spot, const std::optional<rect>& band, const pass_gate& gate) {
+                const placed_panel& placed, const std::vector<bool>& alike, const pass_gate& gate) {
     const double pad = th.padding_pt;
-    const double tolerance = curve_tolerance(cr);
-    const placed_panel placed = place_with_legend(th, p, plan, cell, spot, band, tolerance);
     const rect& area = placed.g.area;
-    const spaced_series spaced = space_markers(th, p, placed.g);
+    const spaced_series spaced = space_markers(th, p, placed.g, alike);
     draw_series(cr, th, p, placed.g, spaced, gate);
     if (!p.overlay_label.empty() && gate.draws(true)) {
         set_foreground(cr, th);
@@ -433,11 +501,10 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         draw_axis_labels(text, th, p, plan, area, x_baseline);
     }
     if (!placed.legend_box && !placed.legend_band) return;
-    const panel shown = as_shown(p, spaced);
+    const panel shown = as_shown(p, spaced.crowded);
     if (placed.legend_box) draw_legend(cr, text, th, shown, plan.legend, *placed.legend_box);
     if (placed.legend_band) draw_legend_band(cr, text, th, shown, plan.legend, *placed.legend_band);
 }
-
 
 /// True if every panel's legend would list the same entries, drawn alike: one legend can
 /// then stand for all. Panels of different kinds each keep their own.
@@ -956,6 +1023,92 @@ void check_drawable(const figure& fig, const theme& th, draw_pass pass) {
     }
 }
 
+/// The planned panels (the figure's, then its peers) in the set's order (set_order).
+std::vector<panel*> in_order(std::vector<panel>& planned, const std::vector<std::size_t>& order) {
+    std::vector<panel*> out;
+    for (std::size_t i : order) {
+        if (i < planned.size()) out.push_back(&planned[i]);
+    }
+    return out;
+}
+
+/// The series (planned panel, series) that one legend entry stands for, for every entry of
+/// the planned panels (same_legend_entry), taken before one_legend leaves the later ones
+/// unlabelled.
+using entry_groups = std::vector<std::vector<std::pair<std::size_t, std::size_t>>>;
+
+entry_groups legend_entries(const std::vector<panel>& planned, const std::vector<std::size_t>& order) {
+    entry_groups groups;
+    for (std::size_t i : order) {
+        for (std::size_t k = 0; i < planned.size() && k < planned[i].data.size(); ++k) {
+            const series& s = planned[i].data[k];
+            if (s.label.empty()) continue;
+            const auto same = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
+                return same_legend_entry(planned[g.front().first].data[g.front().second], s);
+            });
+            if (same == groups.end()) {
+                groups.push_back({{i, k}});
+            } else {
+                same->push_back({i, k});
+            }
+        }
+    }
+    return groups;
+}
+
+/// Whether a peer (a panel of another file of the set) has a series whose markers are
+/// spaced and that shares a legend entry with another series.
+bool peer_shares_markers(const figure_layout& f, std::size_t i, const entry_groups& entries) {
+    return std::any_of(entries.begin(), entries.end(), [&](const auto& g) {
+        return g.size() > 1 && std::any_of(g.begin(), g.end(), [&](const auto& m) {
+                   return m.first == i && spaces_markers(f.planned[i].data[m.second]);
+               });
+    });
+}
+
+/// Which series of each planned panel are drawn crowded (space_markers): those whose own
+/// markers crowd in their panel as placed (a peer in a cell of the figure's size), and every
+/// series of a legend entry one of whose series does, so that the entry's glyph draws
+/// what each of them draws.
+std::vector<std::vector<bool>> crowded_alike(cairo_t* cr, const theme& th, const figure_layout& f,
+                                             const std::vector<placed_panel>& placed, const entry_groups& entries) {
+    std::vector<std::vector<bool>> crowded(f.planned.size());
+    for (std::size_t i = 0; i < f.planned.size(); ++i) {
+        const panel& p = f.planned[i];
+        if (i < placed.size()) {
+            crowded[i] = space_markers(th, p, placed[i].g).crowded;
+        } else if (!f.cells.empty() && peer_shares_markers(f, i, entries)) {
+            const rect area = panel_area(p, f.plans[i], f.cells.front());
+            crowded[i] = space_markers(th, p, place_panel(p, f.plans[i], area, curve_tolerance(cr), th.line_width_pt))
+                             .crowded;
+        }
+        crowded[i].resize(p.data.size(), false);
+    }
+    for (const auto& g : entries) {
+        const bool any = std::any_of(g.begin(), g.end(), [&](const auto& m) { return crowded[m.first][m.second]; });
+        for (const auto& m : g) crowded[m.first][m.second] = crowded[m.first][m.second] || any;
+    }
+    return crowded;
+}
+
+/// Draws the figure's panels as placed, their series drawn crowded as `crowded` says
+/// (crowded_alike), after recording their frames.
+void draw_placed(cairo_t* cr, const text_engine& text, const theme& th, figure_layout& f,
+                 const std::vector<placed_panel>& placed, const std::vector<std::vector<bool>>& crowded,
+                 std::vector<panel_frame>* frames, const pass_gate& gate) {
+    const figure& fig = *f.fig;
+    f.plans.resize(fig.panels.size());
+    record_frames(fig, f.plans, f.cells, frames);
+    glyph_log& log = current_glyph_log();
+    for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+        log.at = i;
+        log.given = &fig.panels[i];
+        draw_panel(cr, text, th, f.planned[i], f.plans[i], placed[i], crowded[i], gate);
+    }
+    log.at = 0;
+    log.given = nullptr;
+}
+
 }  // namespace
 
 void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
@@ -980,35 +1133,45 @@ void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size
     figure_layout f;
     f.fig = &fig;
     f.planned = panels_with_peers(fig);
+    // One legend per figure: shared, where every panel lists the same entries; else each
+    // panel's own entries, those an earlier panel of the set shows left out (one_legend).
+    const bool shared = fig.shared_legend && !fig.panels.empty() && same_legend_entries(f.planned);
+    const entry_groups entries = legend_entries(f.planned, set_order(fig));
+    if (!shared) one_legend(in_order(f.planned, set_order(fig)));
     f.deciding = deciding_theme(th);
     f.title_h = draw_title(cr, text, fig, th, size, gate);
     f.cells = make_cells(fig, size, f.title_h);
     const std::vector<rect> cells = planned_cells(f.cells, f.planned.size());
     f.decided = plan_panels(text, f.planned, f.deciding, cells, fig.cols, nullptr);
     f.plans = plan_panels(text, f.planned, th, cells, fig.cols, &f.decided);
-    if (!fig.shared_legend || fig.panels.empty() || !same_legend_entries(f.planned)) {
+    if (!shared) {
         const own_legends own = place_own_legends(cr, text, th, f, gate);
         if (gate.draws(false)) note_route_changes(cr, text, f, th, size, false);
-        f.plans.resize(fig.panels.size());
         check_room(fig, f.plans, f.cells, th, size);
-        record_frames(fig, f.plans, f.cells, frames);
+        std::vector<placed_panel> placed;
         for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-            draw_panel(cr, text, th, fig.panels[i], f.plans[i], f.cells[i], own.spots[i], own.bands[i], gate);
+            placed.push_back(place_with_legend(th, f.planned[i], f.plans[i], f.cells[i], own.spots[i], own.bands[i],
+                                               curve_tolerance(cr)));
         }
+        draw_placed(cr, text, th, f, placed, crowded_alike(cr, th, f, placed, entries), frames, gate);
         return;
     }
-    const shared_legend shared = place_shared_legend(cr, text, th, f, size);
+    const shared_legend one = place_shared_legend(cr, text, th, f, size);
     if (gate.draws(false)) note_route_changes(cr, text, f, th, size, true);
-    f.plans.resize(fig.panels.size());
     check_room(fig, f.plans, f.cells, th, size);
-    record_frames(fig, f.plans, f.cells, frames);
-    if (shared.band && gate.draws(false)) draw_legend_band(cr, text, th, fig.panels[0], shared.lg, *shared.band);
+    std::vector<placed_panel> placed;
     for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-        const bool here = shared.panel && i == *shared.panel;
-        if (here) f.plans[i].legend = shared.lg;
-        draw_panel(cr, text, th, fig.panels[i], f.plans[i], f.cells[i], here ? legend_spot::inside : legend_spot::none,
-                   std::nullopt, gate);
+        const bool here = one.panel && i == *one.panel;
+        if (here) f.plans[i].legend = one.lg;
+        placed.push_back(place_with_legend(th, f.planned[i], f.plans[i], f.cells[i],
+                                           here ? legend_spot::inside : legend_spot::none, std::nullopt,
+                                           curve_tolerance(cr)));
     }
+    const std::vector<std::vector<bool>> crowded = crowded_alike(cr, th, f, placed, entries);
+    if (one.band && gate.draws(false)) {
+        draw_legend_band(cr, text, th, as_shown(f.planned[0], crowded[0]), one.lg, *one.band);
+    }
+    draw_placed(cr, text, th, f, placed, crowded, frames, gate);
 }
 
 std::vector<panel_frame> panel_frames(const figure& fig, const theme& th) {
@@ -1022,6 +1185,21 @@ std::vector<panel_frame> panel_frames(const figure& fig, const theme& th) {
     return frames;
 }
 
+drawn_glyphs glyphs_drawn(const figure& fig, const theme& th) {
+    drawn_glyphs out;
+    glyph_log& log = current_glyph_log();
+    const glyph_log outer = log;
+    log = glyph_log{&out, 0, nullptr};
+    try {
+        panel_frames(fig, th);
+    } catch (...) {
+        log = outer;
+        throw;
+    }
+    log = outer;
+    return out;
+}
+
 std::vector<std::vector<marker_centres_of>> marker_centres(const figure& unstyled, const theme& th) {
     const figure fig = with_theme_styles(unstyled, th);
     const std::vector<panel_frame> frames = panel_frames(fig, th);
@@ -1031,27 +1209,21 @@ std::vector<std::vector<marker_centres_of>> marker_centres(const figure& unstyle
         const panel_frame& f = frames[i];
         const axis_map mx{f.x_lo, f.x_hi, p.x.kind == scale::log, f.x, f.x + f.w};
         const axis_map my{f.y_lo, f.y_hi, p.y.kind == scale::log, f.y + f.h, f.y};
+        std::vector<device_series> dev;
+        for (const auto& s : p.data) dev.push_back(to_device(s, mx, my));
+        const rect area{f.x, f.y, f.w, f.h};
+        const marker_choice chosen = choose_markers(th, p, dev, area);
         std::vector<marker_centres_of> panel_centres;
-        for (const auto& s : p.data) {
+        for (std::size_t k = 0; k < p.data.size(); ++k) {
             marker_centres_of c;
-            c.radius = th.marker_radius_pt * s.marker_scale;
-            c.spaced = spaces_markers(s);
-            if (s.marker == marker_style::none) {
-                panel_centres.push_back(c);
-                continue;
-            }
-            const device_series d = to_device(s, mx, my);
-            std::vector<std::size_t> kept;
-            if (c.spaced) {
-                kept = spaced_markers(d, 3 * c.radius);
-            } else {
-                for (std::size_t k = 0; k < d.x.size(); ++k) kept.push_back(k);
-            }
-            for (std::size_t k : kept) {
+            c.radius = th.marker_radius_pt * p.data[k].marker_scale;
+            c.spaced = spaces_markers(p.data[k]);
+            for (std::size_t j : chosen.kept[k]) {
+                if (p.data[k].marker == marker_style::none) break;
+                const double x = dev[k].x[j];
+                const double y = dev[k].y[j];
                 // Drawn where the centre is inside the axes (draw_series).
-                if (d.x[k] >= f.x && d.x[k] <= f.x + f.w && d.y[k] >= f.y && d.y[k] <= f.y + f.h) {
-                    c.centres.emplace_back(d.x[k], d.y[k]);
-                }
+                if (x >= f.x && x <= f.x + f.w && y >= f.y && y <= f.y + f.h) c.centres.emplace_back(x, y);
             }
             panel_centres.push_back(std::move(c));
         }

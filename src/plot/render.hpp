@@ -7,6 +7,7 @@
 
 #include <cairo.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -24,6 +25,11 @@ struct page_size {
 /// below min_text_pt, or one whose superscripts and subscripts (script_metrics::size of it)
 /// fall below min_script_pt. The message names the key, its value and what to do.
 std::string text_size_problem(const theme& th);
+
+/// One legend per figure: an entry that an earlier panel of `panels` (in the figure's order)
+/// shows is left out of the later ones, the earlier taking the fuller label; every panel
+/// keeps the entries of its own. Still figures and animations alike.
+void one_legend(const std::vector<panel*>& panels);
 
 /// The size of a figure drawn with a theme: the theme's fixed size, or the panels' size.
 page_size figure_size(const figure& fig, const theme& th);
@@ -110,6 +116,26 @@ struct marker_centres_of {
 /// Every panel's series' markers as draw_figure draws them at the figure's size: a method's
 /// markers spaced at least 1.5 diameters apart on the page, measured data's every point.
 std::vector<std::vector<marker_centres_of>> marker_centres(const figure& fig, const theme& th);
+
+/// A glyph as stroked: a legend entry's sample, or a series in its panel.
+struct glyph {
+    std::string label;                           ///< the entry's label; a series' label in the figure given
+    std::size_t panel = 0;                       ///< the panel drawn in (a legend band: the first)
+    line_style line = line_style::none;          ///< the line stroked; none: no line
+    double width_scale = 1.0;                    ///< its width in units of the theme's line width
+    marker_style marker = marker_style::none;    ///< the marker drawn; none: no marker
+    int color = 0;                               ///< palette index
+    std::optional<rgb> rgb_color;                ///< a colour of its own
+};
+
+/// What draw_figure strokes of a figure's legends and series, glyph by glyph.
+struct drawn_glyphs {
+    std::vector<glyph> legend;  ///< every legend entry drawn, in the order drawn
+    std::vector<glyph> series;  ///< every series drawn with a line or markers
+};
+
+/// The legend entries and series of a figure as draw_figure draws them with `th`.
+drawn_glyphs glyphs_drawn(const figure& fig, const theme& th);
 
 /// One series as a raster draws it, in data values: a sampled curve's vertices (NaN
 /// between the pieces of a broken line), or the points of any other series.

@@ -228,7 +228,9 @@ void survey(const still_case& c, tick_survey& out) {
             const double along = across_x ? t.x0 : t.y0;
             const double lo = across_x ? f->x : f->y;
             const double hi = across_x ? f->x + f->w : f->y + f->h;
-            if (std::min(along - lo, hi - along) < c.theme.tick_length_pt - 1e-9) {
+            // A tick length and the ticks' clearance (half their width and half a point).
+            const double corner = c.theme.tick_length_pt + 0.5 * plot::line_width(c.theme, c.theme.frame_width_pt) + 0.5;
+            if (std::min(along - lo, hi - along) < corner - 1e-9) {
                 ++out.corner;
                 bad("a tick mark " + std::to_string(std::min(along - lo, hi - along)) + " pt from a corner");
             }
@@ -259,7 +261,8 @@ void survey(const still_case& c, tick_survey& out) {
 // Every built-in still figure x theme x three panel sizes: no tick mark's ink within half
 // a point of a drawn line's ink (the reproductions: Fig. 5(c)'s 0.2 tick, Fig. 7(a)'s 3.5
 // tick, Fig. 7(b)'s -15 tick in slides, regimes (a)'s zero tick at the cusp), no tick mark
-// within a tick length of the perpendicular side (Fig. 6's +-pi ticks), none a stub.
+// within a tick length and half a point of the perpendicular side's tick marks (Fig. 6's
+// corner boxes), none a stub.
 TEST(FramesTicks, NoTickMarkOverALineNorInACornerNorAStub) {
     tick_survey s;
     const auto counts =

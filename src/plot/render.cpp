@@ -118,13 +118,14 @@ double tick_gap(const theme& th) { return 0.5 * line_width(th, th.frame_width_pt
 
 /// Tick marks of an axis, from the frame inwards, on both sides, by the tick rules
 /// (tick_mark_length): each stops tick_gap short of the markers' and lines' ink, or is not
-/// drawn where that leaves a stub or where it would close a box in a corner of the frame.
+/// drawn where that leaves a stub, or within a tick length and tick_gap of the perpendicular
+/// side, where it would close a box with that side's tick marks in a corner of the frame.
 void draw_ticks(cairo_t* cr, const theme& th, const tick_set& t, const axis_map& m, const rect& area, bool horizontal,
                 const tick_clearance& ink) {
     const double width = line_width(th, th.frame_width_pt);
     const double gap = tick_gap(th);
     const auto mark = [&](double x, double y, double ux, double uy, double len) {
-        const double l = tick_mark_length(x, y, ux, uy, len, ink, gap, area, th.tick_length_pt);
+        const double l = tick_mark_length(x, y, ux, uy, len, ink, gap, area, th.tick_length_pt + gap);
         if (!(l > 0)) return;
         cairo_move_to(cr, x, y);
         cairo_line_to(cr, x + l * ux, y + l * uy);

@@ -292,7 +292,8 @@ void stroke_crowded(cairo_t* cr, const theme& th, const series& s, const panel_g
 
 /// The panel's lines, error bars and markers (those whose centre is inside, spaced by
 /// space_markers) clipped to the axes: automatic limits leave the markers room (layout), a
-/// range the user set may put them on the frame, where they are cut cleanly.
+/// range the user set may put them on the frame, where they are cut cleanly. A drawing's
+/// markers are whole.
 void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geometry& g, const spaced_series& spaced,
                  const pass_gate& gate) {
     const rect& area = g.area;
@@ -317,6 +318,10 @@ void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geome
         if (g.dev[k].bars.empty() || !gate.draws(p.data[k].overlay)) continue;
         set_color(cr, th, p.data[k]);
         draw_error_bars(cr, th, p.data[k], g.dev[k].bars);
+    }
+    if (p.frameless) {  // a drawing (a pendulum's bob) has no frame to cut its markers at
+        cairo_restore(cr);
+        cairo_save(cr);
     }
     // draw_markers keeps markers whose centre is within a radius of the rect it is given.
     const double inward = th.marker_radius_pt - 1e-6 * (area.w + area.h);

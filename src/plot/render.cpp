@@ -465,8 +465,10 @@ void note_markers_on_frame(const panel& p, const panel_plan& plan, const std::ve
     if (p.y.exact_range) set += (set.empty() ? "" : " and ") + range("y", plan.yt);
     const bool papers = p.y.paper_range && p.y.min == p.y.paper_range->first && p.y.max == p.y.paper_range->second;
     const std::string name = p.label.empty() ? "a panel" : "panel " + markup_text(p.label.markup);
-    layout_notes::note(name + (papers ? ": the paper's range (" : ": the range set (") + (set.empty() ? "its axes'" : set) + ") puts " + std::to_string(cut) +
-                       (cut == 1 ? " marker" : " markers") +
+    const std::string whose = set.empty()       ? ": its axes' range"
+                              : papers ? ": the paper's range (" + set + ")"
+                                       : ": the range set (" + set + ")";
+    layout_notes::note(name + whose + " puts " + std::to_string(cut) + (cut == 1 ? " marker" : " markers") +
                        " on the frame, cut there; widen the range to show them whole");
 }
 

@@ -113,19 +113,23 @@ double curve_tolerance(cairo_t* cr) {
     return curve_tolerance(units_per_point, cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE);
 }
 
-/// Tick marks of an axis, from the frame inwards, on both sides; each stops short of the
-/// markers in `discs` by half its width and half a point (tick_length_clear), so that no
-/// tick mark is drawn under a marker, at any size or dpi.
+/// The gap a tick mark keeps from the ink of markers and lines: half its width and half a point.
+double tick_gap(const theme& th) { return 0.5 * line_width(th, th.frame_width_pt) + 0.5; }
+
+/// Tick marks of an axis, from the frame inwards, on both sides, by the tick rules
+/// (tick_mark_length): each stops tick_gap short of the markers' and lines' ink, or is not
+/// drawn where that leaves a stub, or within a tick length and tick_gap of the perpendicular
+/// side, where it would close a box with that side's tick marks in a corner of the frame.
 void draw_ticks(cairo_t* cr, const theme& th, const tick_set& t, const axis_map& m, const rect& area, bool horizontal,
-                const std::vector<keep_out>& discs) {
+                const tick_clearance& ink) {
     const double width = line_width(th, th.frame_width_pt);
-    const double gap = 0.5 * width + 0.5;
+    const double gap = tick_gap(th);
     const auto mark = [&](double x, double y, double ux, double uy, double len) {
-        const double l = tick_length_clear(x, y, ux, uy, len, discs, gap);
-        if (!(l > 0.01)) return;
+        const double l = tick_mark_length(x, y, ux, uy, len, ink, gap, area, th.tick_length_pt + gap);
+        if (!(l > 0)) return;
         cairo_move_to(cr, x, y);
         cairo_line_to(cr, x + l * ux, y + l * uy);
-        tick_marks_record::add({x, y, x + l * ux, y + l * uy, width});
+        tick_marks_record::add({x, y, x + l * ux, y + l * uy, width, len});
     };
     auto tick = [&](double v, double len) {
         const double d = m(v);
@@ -349,8 +353,10 @@ void log_series(const series& s, std::size_t k, const spaced_series& spaced) {
     if (g.line != line_style::none || g.marker != marker_style::none) log.out->series.push_back(g);
 }
 
-/// The panel's lines and error bars clipped to the axes, and its markers whole
-/// (matplotlib's clip_on=False), those whose centre is inside, spaced (space_markers).
+/// The panel's lines, error bars and markers (those whose centre is inside, spaced by
+/// space_markers) clipped to the axes: automatic limits leave the markers room (layout), a
+/// range the user set may put them on the frame, where they are cut cleanly. A drawing's
+/// markers are whole.
 void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geometry& g, const spaced_series& spaced,
                  const pass_gate& gate) {
     const rect& area = g.area;
@@ -377,7 +383,10 @@ void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geome
         set_color(cr, th, p.data[k]);
         draw_error_bars(cr, th, p.data[k], g.dev[k].bars);
     }
-    cairo_restore(cr);
+    if (p.frameless) {  // a drawing (a pendulum's bob) has no frame to cut its markers at
+        cairo_restore(cr);
+        cairo_save(cr);
+    }
     // draw_markers keeps markers whose centre is within a radius of the rect it is given.
     const double inward = th.marker_radius_pt - 1e-6 * (area.w + area.h);
     const rect centres{area.x + inward, area.y + inward, area.w - 2 * inward, area.h - 2 * inward};
@@ -386,10 +395,11 @@ void draw_series(cairo_t* cr, const theme& th, const panel& p, const panel_geome
         set_color(cr, th, p.data[k]);
         draw_markers(cr, th, p.data[k], spaced.markers[k], centres);
     }
+    cairo_restore(cr);
 }
 
 /// The markers draw_series draws that stay put (those of an animation's moving parts
-/// move), as discs of their ink: what tick marks stop short of.
+/// move), as discs of their ink.
 std::vector<keep_out> drawn_markers(const theme& th, const panel& p, const spaced_series& spaced, const rect& area) {
     std::vector<keep_out> discs;
     for (std::size_t k = 0; k < p.data.size(); ++k) {
@@ -405,6 +415,35 @@ std::vector<keep_out> drawn_markers(const theme& th, const panel& p, const space
         }
     }
     return discs;
+}
+
+/// The ink that stays put which tick marks stop short of: drawn_markers, and the lines and
+/// error bars draw_series strokes, where they pass near the frame.
+tick_clearance tick_ink(const theme& th, const panel& p, const panel_geometry& g, const spaced_series& spaced) {
+    tick_clearance ink{drawn_markers(th, p, spaced, g.area), {}};
+    const double band = th.tick_length_pt + tick_gap(th);
+    for (std::size_t k = 0; k < p.data.size(); ++k) {
+        const series& s = p.data[k];
+        if (s.overlay) continue;
+        const device_series& d = g.dev[k];
+        if (s.line != line_style::none) {
+            add_ink_near_frame(ink.segments, d.line_x(), d.line_y(),
+                               0.5 * line_width(th, th.line_width_pt * s.width_scale), g.area, band);
+        } else if (spaced.crowded[k]) {
+            add_ink_near_frame(ink.segments, d.x, d.y,
+                               0.5 * line_width(th, crowded_width * th.line_width_pt * s.width_scale), g.area, band);
+        }
+        const double r = 0.5 * line_width(th, th.line_width_pt * s.width_scale);
+        const double c = cap_half_width(th, s);
+        for (const device_bar& b : d.bars) {
+            ink.segments.push_back({b.x0, b.y0, b.x1, b.y1, r});
+            for (const auto& [x, y] : {std::pair{b.x0, b.y0}, std::pair{b.x1, b.y1}}) {
+                ink.segments.push_back({b.vertical ? x - c : x, b.vertical ? y : y - c, b.vertical ? x + c : x,
+                                        b.vertical ? y : y + c, r});
+            }
+        }
+    }
+    return ink;
 }
 
 /// The panel as its legend shows it: a series of markers only that crowds (space_markers)
@@ -426,7 +465,7 @@ panel as_shown(const panel& p, const std::vector<bool>& crowded) {
 /// baseline), y labels with their ink ending there, centred on a digit's height. Returns the
 /// x labels' baseline.
 double draw_frame_and_ticks(cairo_t* cr, const text_engine& text, const theme& th, const panel_plan& plan,
-                            const panel_geometry& g, const std::vector<keep_out>& discs) {
+                            const panel_geometry& g, const tick_clearance& ink) {
     const rect& area = g.area;
     set_foreground(cr, th);
     cairo_set_dash(cr, nullptr, 0, 0);
@@ -435,8 +474,8 @@ double draw_frame_and_ticks(cairo_t* cr, const text_engine& text, const theme& t
     cairo_set_line_width(cr, line_width(th, th.frame_width_pt));
     cairo_rectangle(cr, area.x, area.y, area.w, area.h);
     cairo_stroke(cr);
-    draw_ticks(cr, th, plan.xt, g.mx, area, true, discs);
-    draw_ticks(cr, th, plan.yt, g.my, area, false, discs);
+    draw_ticks(cr, th, plan.xt, g.mx, area, true, ink);
+    draw_ticks(cr, th, plan.yt, g.my, area, false, ink);
     const double x_baseline = area.y + area.h + plan.xtick_gap + plan.xtick_up;
     for (std::size_t i = 0; i < plan.xt.major.size(); ++i) {
         const double d = g.mx(plan.xt.major[i]);
@@ -478,6 +517,30 @@ void draw_axis_labels(const text_engine& text, const theme& th, const panel& p, 
     }
 }
 
+/// Notes the drawn markers whose ink reaches across the frame, which draw_series cuts at
+/// it: a range the user set puts them there (automatic limits leave them room).
+void note_markers_on_frame(const panel& p, const panel_plan& plan, const std::vector<keep_out>& discs,
+                           const rect& area) {
+    const auto cut = std::count_if(discs.begin(), discs.end(), [&](const keep_out& d) {
+        return d.x - d.r < area.x || d.x + d.r > area.x + area.w || d.y - d.r < area.y || d.y + d.r > area.y + area.h;
+    });
+    if (cut == 0) return;
+    const auto range = [](const char* axis, const tick_set& t) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%s from %.6g to %.6g", axis, t.lo, t.hi);
+        return std::string(buf);
+    };
+    std::string set = p.x.exact_range ? range("x", plan.xt) : "";
+    if (p.y.exact_range) set += (set.empty() ? "" : " and ") + range("y", plan.yt);
+    const bool papers = p.y.paper_range && p.y.min == p.y.paper_range->first && p.y.max == p.y.paper_range->second;
+    const std::string name = p.label.empty() ? "a panel" : "panel " + markup_text(p.label.markup);
+    const std::string whose = set.empty()       ? ": its axes' range"
+                              : papers ? ": the paper's range (" + set + ")"
+                                       : ": the range set (" + set + ")";
+    layout_notes::note(name + whose + " puts " + std::to_string(cut) + (cut == 1 ? " marker" : " markers") +
+                       " on the frame, cut there; widen the range to show them whole");
+}
+
 /// Draws one panel as `placed` (place_with_legend) puts it and its legend; `alike` names
 /// the series drawn crowded (space_markers) for a series of their legend entry elsewhere.
 void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
@@ -497,7 +560,9 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
         set_foreground(cr, th);
         if (!p.label.empty()) text.draw(p.label, th.label_font_pt, area.x, area.y - 0.4 * pad, 0.0, 1.0);
     } else {
-        const double x_baseline = draw_frame_and_ticks(cr, text, th, plan, placed.g, drawn_markers(th, p, spaced, area));
+        const tick_clearance ink = tick_ink(th, p, placed.g, spaced);
+        note_markers_on_frame(p, plan, ink.discs, area);
+        const double x_baseline = draw_frame_and_ticks(cr, text, th, plan, placed.g, ink);
         draw_axis_labels(text, th, p, plan, area, x_baseline);
     }
     if (!placed.legend_box && !placed.legend_band) return;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -185,6 +186,93 @@ double tick_length_clear(double x, double y, double ux, double uy, double length
         length = std::min(length, -b - std::sqrt(disc));
     }
     return std::max(length, 0.0);
+}
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+/// The values of s where k0 + s k1 lies in [lo, hi], as an interval (empty: lo > hi).
+std::pair<double, double> linear_within(double k0, double k1, double lo, double hi) {
+    if (std::abs(k1) < 1e-12) return k0 >= lo && k0 <= hi ? std::pair{-infinity, infinity} : std::pair{1.0, -1.0};
+    const double a = (lo - k0) / k1;
+    const double b = (hi - k0) / k1;
+    return {std::min(a, b), std::max(a, b)};
+}
+
+/// The values of s where (x, y) + s (ux, uy) lies within `reach` of (cx, cy) (empty: lo > hi).
+std::pair<double, double> within_disc(double x, double y, double ux, double uy, double cx, double cy, double reach) {
+    const double wx = x - cx;
+    const double wy = y - cy;
+    const double b = ux * wx + uy * wy;
+    const double disc = b * b - (wx * wx + wy * wy - reach * reach);
+    if (disc < 0) return {1.0, -1.0};
+    return {-b - std::sqrt(disc), -b + std::sqrt(disc)};
+}
+
+/// The first s in [0, length] where (x, y) + s (ux, uy) comes within `reach` of the
+/// segment's centre line (a capsule: its end discs and the band between); infinity if none.
+double entry_into(double x, double y, double ux, double uy, double length, const ink_segment& g, double reach) {
+    double first = infinity;
+    const auto consider = [&](std::pair<double, double> s) {
+        if (s.first <= s.second && s.second >= 0 && s.first <= length) first = std::min(first, std::max(s.first, 0.0));
+    };
+    consider(within_disc(x, y, ux, uy, g.x0, g.y0, reach));
+    consider(within_disc(x, y, ux, uy, g.x1, g.y1, reach));
+    const double len = std::hypot(g.x1 - g.x0, g.y1 - g.y0);
+    if (len > 0) {
+        const double vx = (g.x1 - g.x0) / len;
+        const double vy = (g.y1 - g.y0) / len;
+        const double wx = x - g.x0;
+        const double wy = y - g.y0;
+        // Across the segment within reach, along it between its ends.
+        const auto across = linear_within(wx * vy - wy * vx, ux * vy - uy * vx, -reach, reach);
+        const auto along = linear_within(wx * vx + wy * vy, ux * vx + uy * vy, 0, len);
+        consider({std::max(across.first, along.first), std::min(across.second, along.second)});
+    }
+    return first;
+}
+
+}  // namespace
+
+void add_ink_near_frame(std::vector<ink_segment>& out, const std::vector<double>& x, const std::vector<double>& y,
+                        double r, const rect& area, double band) {
+    const double m = r + band;
+    const rect outer{area.x - m, area.y - m, area.w + 2 * m, area.h + 2 * m};
+    const rect inner{area.x + m, area.y + m, area.w - 2 * m, area.h - 2 * m};
+    for (std::size_t i = 1; i < x.size() && i < y.size(); ++i) {
+        const double x0 = x[i - 1], y0 = y[i - 1], x1 = x[i], y1 = y[i];
+        if (std::isnan(x0 + y0 + x1 + y1)) continue;
+        const double left = std::min(x0, x1), right = std::max(x0, x1);
+        const double top = std::min(y0, y1), bottom = std::max(y0, y1);
+        const bool meets_outer =
+            right >= outer.x && left <= outer.x + outer.w && bottom >= outer.y && top <= outer.y + outer.h;
+        const bool inside_inner =
+            left > inner.x && right < inner.x + inner.w && top > inner.y && bottom < inner.y + inner.h;
+        if (meets_outer && !inside_inner) out.push_back({x0, y0, x1, y1, r});
+    }
+}
+
+double tick_length_clear(double x, double y, double ux, double uy, double length, const tick_clearance& ink,
+                         double gap) {
+    length = tick_length_clear(x, y, ux, uy, length, ink.discs, gap);
+    for (const ink_segment& g : ink.segments) {
+        if (!(length > 0)) break;
+        length = std::min(length, entry_into(x, y, ux, uy, length, g, g.r + gap));
+    }
+    return std::max(length, 0.0);
+}
+
+double tick_mark_length(double x, double y, double ux, double uy, double length, const tick_clearance& ink,
+                        double gap, const rect& area, double corner) {
+    // Along its side: a tick mark across x (ux == 0) lies on the top or bottom side.
+    const bool across_x = std::abs(ux) < std::abs(uy);
+    const double along = across_x ? x : y;
+    const double lo = across_x ? area.x : area.y;
+    const double hi = across_x ? area.x + area.w : area.y + area.h;
+    if (along - lo < corner || hi - along < corner) return 0;
+    const double l = tick_length_clear(x, y, ux, uy, length, ink, gap);
+    return l >= min_tick_fraction * length ? l : 0;
 }
 
 namespace {

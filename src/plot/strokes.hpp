@@ -57,6 +57,45 @@ struct keep_out {
 double tick_length_clear(double x, double y, double ux, double uy, double length, const std::vector<keep_out>& discs,
                          double gap);
 
+/// A straight piece of a drawn line's ink: the segment from (x0, y0) to (x1, y1) and the
+/// ink's half width `r` on each side of it (round caps included).
+struct ink_segment {
+    double x0 = 0;  ///< one end, device points
+    double y0 = 0;  ///< one end, device points
+    double x1 = 0;  ///< other end, device points
+    double y1 = 0;  ///< other end, device points
+    double r = 0;   ///< half the ink's width
+};
+
+/// The ink tick marks keep clear of: the drawn markers, and the pieces of the drawn lines
+/// (curves, lines through crowded markers, error bars) near the frame.
+struct tick_clearance {
+    std::vector<keep_out> discs;        ///< markers
+    std::vector<ink_segment> segments;  ///< lines' pieces near the frame
+};
+
+/// Adds to `out` the pieces of the polyline (x, y), half width r, whose ink comes within
+/// `band` of the frame of `area` on either side (a NaN vertex breaks the line).
+void add_ink_near_frame(std::vector<ink_segment>& out, const std::vector<double>& x, const std::vector<double>& y,
+                        double r, const rect& area, double band);
+
+/// tick_length_clear over markers and lines: the length up to where the tick mark would
+/// come within `gap` of a disc's or a segment's ink (0 where it starts there).
+double tick_length_clear(double x, double y, double ux, double uy, double length, const tick_clearance& ink,
+                         double gap);
+
+/// The least length a shortened tick mark is drawn at, as a fraction of its own length: a
+/// shorter one would be a stub, and is not drawn.
+inline constexpr double min_tick_fraction = 0.5;
+
+/// The tick rules, one place for every axis, figure, theme and size: a tick mark from (x, y)
+/// on a side of `area` in the direction (ux, uy) into it is drawn at the returned length,
+/// which is 0 (not drawn) where its line lies within `corner` of the perpendicular side of
+/// the frame (it would close a box in the corner), or where keeping `gap` clear of `ink`
+/// (tick_length_clear) leaves less than min_tick_fraction of `length`.
+double tick_mark_length(double x, double y, double ux, double uy, double length, const tick_clearance& ink,
+                        double gap, const rect& area, double corner);
+
 /// A tick mark as stroked, from the frame inwards, and its stroke's width.
 struct tick_mark {
     double x0 = 0;     ///< on the frame
@@ -64,6 +103,7 @@ struct tick_mark {
     double x1 = 0;     ///< inner end
     double y1 = 0;     ///< inner end
     double width = 0;  ///< stroke width
+    double full = 0;   ///< its length before tick_mark_length shortened it
 };
 
 /// While one lives, the tick marks stroked on its thread are added to it (what a test

@@ -164,7 +164,8 @@ TEST(Describe, EveryBuiltinFigureInWords) {
         {"separatrix", "An animation over 1 period of"},
         // The drawing: what it shows, how each pendulum looks, where they start.
         {"swing", "is a drawing, seen from the side, of 3 pendulums"},
-        {"swing", "exact (solid rod, filled bob), harmonic (solid rod, open bob)"},
+        // The rods as the default theme draws them: the paper theme's dotted harmonic.
+        {"swing", "exact (solid rod, filled bob), harmonic (dotted rod, open bob)"},
         {"swing", "released from rest at theta0 = 170 degrees"},
         {"swing", "fading trail of its last 0.3 periods"},
         // A curve that leaves the axes is described as far as they show it.

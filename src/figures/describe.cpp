@@ -229,9 +229,9 @@ std::string panel_opening(const plot::panel& p, std::size_t index, std::size_t c
     return out;
 }
 
-/// A drawing's description: the kind's own, or what it shows and its starts.
-std::string drawing_words(const panel_words& w, bool animated) {
-    if (w.spec.plot->describe_drawing) return w.spec.plot->describe_drawing(w.spec, animated);
+/// A drawing's description: the kind's own (its glyphs in theme `th`), or what it shows and its starts.
+std::string drawing_words(const panel_words& w, bool animated, const plot::theme& th) {
+    if (w.spec.plot->describe_drawing) return w.spec.plot->describe_drawing(w.spec, animated, th);
     std::vector<std::string> names;
     for (const auto* s : w.shown) names.push_back(spoken_label(s->label.markup));
     return " is a drawing" + (names.empty() ? "" : ", with " + join(names)) + "." + start_motions(w.spec);
@@ -432,13 +432,13 @@ std::string line_words(const panel_words& w, const reference_line& line) {
 
 /// The panel's paragraph.
 std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::size_t index, std::size_t count,
-                           const plot::panel_frame* frame, bool animated) {
+                           const plot::panel_frame* frame, bool animated, const plot::theme& th) {
     panel_words w{p, spec, {}, axis_name(p.x, "x"), axis_name(p.y, "y")};
     for (const auto& s : p.data) {
         if (s.autoscale && !s.overlay && !s.label.empty()) w.shown.push_back(&s);
     }
     std::string out = panel_opening(p, index, count);
-    if (p.frameless) return out + drawing_words(w, animated);
+    if (p.frameless) return out + drawing_words(w, animated, th);
     out += axes_words(w, frame);
     out += curves_words(w);
     if (spec.plot->describe_curves) out += spec.plot->describe_curves({p, w.shown, w.x, w.y});
@@ -470,10 +470,12 @@ figure_description describe(const entry& e, const plot::figure& built, const bui
 }
 
 figure_description describe(const figure_spec& spec, const plot::figure& unstyled, const build_options& options) {
-    // The lines as the default theme draws them (its named styles: harmonic dotted), as
-    // the limits are the ones it lays out.
+    // The lines as the theme it is drawn in draws them (the paper theme's named styles:
+    // harmonic dotted; the paper theme's unless the options say), as the limits are the
+    // ones the paper theme lays out.
     static const plot::theme paper = load_theme("paper", {});
-    const plot::figure built = plot::with_theme_styles(unstyled, paper);
+    const plot::theme& th = options.theme ? *options.theme : paper;
+    const plot::figure built = plot::with_theme_styles(unstyled, th);
     const auto panels = panels_with(spec, options);
     figure_description d;
     d.alt = (spec.description.empty() ? plot::tex_to_plain(spec.title) : spec.description) + ".";
@@ -499,7 +501,7 @@ figure_description describe(const figure_spec& spec, const plot::figure& unstyle
     const std::vector<plot::panel_frame> frames = drawn_frames(built);
     for (std::size_t i = 0; i < built.panels.size() && i < panels.size(); ++i) {
         d.text += describe_panel(built.panels[i], panels[i], i, built.panels.size(),
-                                 i < frames.size() ? &frames[i] : nullptr, spec.animation.has_value()) +
+                                 i < frames.size() ? &frames[i] : nullptr, spec.animation.has_value(), th) +
                   "\n";
     }
     return d;

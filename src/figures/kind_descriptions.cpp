@@ -14,18 +14,14 @@ namespace figures {
 
 namespace {
 
-/// Each pendulum of the drawing: "exact (solid rod, filled bob)".
-std::vector<std::string> pendulum_styles(const panel_spec& spec) {
+/// Each pendulum of the drawing as it is drawn (pendulum_glyphs): "exact (solid rod, filled
+/// bob)", "E = 2 mgL (dashed rod, filled bob)".
+std::vector<std::string> pendulum_styles(const panel_spec& spec, const plot::theme& th) {
     static const char* const lines[] = {"solid", "solid", "dashed", "dotted", "dash-dot", "dash-dot-dot"};
     std::vector<std::string> who;
-    for (std::size_t i = 0; i < spec.methods.size(); ++i) {
-        const method_spec& m = spec.methods[i];
-        const plot::line_style line = m.style.value_or(plot::line_style::solid);
-        const plot::marker_style bob =
-            m.marker.value_or(is_exact(m) ? plot::marker_style::filled_circle : plot::marker_style::open_circle);
-        who.push_back(spoken_label(style_of(m, static_cast<int>(i)).label.markup) + " (" +
-                      lines[static_cast<int>(line)] + " rod, " +
-                      (bob == plot::marker_style::filled_circle ? "filled" : "open") + " bob)");
+    for (const pendulum_glyph& g : pendulum_glyphs(spec, th)) {
+        who.push_back(spoken_label(g.label) + " (" + lines[static_cast<int>(g.rod)] + " rod, " +
+                      (g.bob == plot::marker_style::filled_circle ? "filled" : "open") + " bob)");
     }
     return who;
 }
@@ -74,15 +70,16 @@ void add_orbit(orbit_shapes& shapes, const described_curves& d, const plot::seri
 
 }  // namespace
 
-std::string describe_pendulum_drawing(const panel_spec& spec, bool animated) {
-    const std::vector<std::string> who = pendulum_styles(spec);
-    const std::size_t n = spec.methods.size() * std::max<std::size_t>(1, spec.starts.size());
+std::string describe_pendulum_drawing(const panel_spec& spec, bool animated, const plot::theme& th) {
+    const std::vector<std::string> who = pendulum_styles(spec, th);
+    const std::size_t n = who.size();
     std::string out = " is a drawing, seen from the side, of " +
                       (n == 1 ? std::string("a pendulum") : std::to_string(n) + " pendulums of one length") +
                       " hanging from one pivot: " + join(who) + ".";
     if (!spec.theta0.empty()) {
-        out += std::string(n == 1 ? " It is" : " They are") + " released from rest at theta0 = " +
-               spoken_amplitude(spec.theta0.front()) +
+        std::vector<std::string> amplitudes;
+        for (const auto& a : spec.theta0) amplitudes.push_back(spoken_amplitude(a));
+        out += std::string(n == 1 ? " It is" : " They are") + " released from rest at theta0 = " + join(amplitudes) +
                " from the vertical; dotted lines mark that angle on either side, and a faint circle the path of "
                "the bobs.";
     }

@@ -195,8 +195,13 @@ std::string typeset_angle(std::string_view text) {
     return out;
 }
 
-plot::series moving_dot(const series_style& st) {
+std::string start_id(const std::string& id, std::size_t i, std::size_t n) {
+    return n > 1 ? id + ":" + std::to_string(i + 1) : id;
+}
+
+plot::series moving_dot(const series_style& st, std::size_t i, std::size_t n) {
     plot::series dot = series_of(st);
+    dot.id = "dot:" + start_id(st.id, i, n);
     dot.label.clear();
     dot.style_key.clear();
     dot.line = line_style::none;

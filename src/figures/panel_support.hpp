@@ -44,8 +44,13 @@ plot::series series_of(const series_style& st);
 /// A series in the style with y = f(x) at every x.
 plot::series make_series(const series_style& st, std::vector<double> x, const std::function<double(double)>& f);
 
-/// A dot that moves with a method in an animation, in its style, with no legend entry.
-plot::series moving_dot(const series_style& st);
+/// The series id of start i (from 0) of a panel's n starts: `id` itself for one start, else
+/// "id:N" (N = i + 1), so that each start's parts have ids of their own.
+std::string start_id(const std::string& id, std::size_t i, std::size_t n);
+
+/// A dot that moves with a method in an animation, in its style, with no legend entry; its
+/// id "dot:" and start_id's of start i of n.
+plot::series moving_dot(const series_style& st, std::size_t i = 0, std::size_t n = 1);
 
 /// True for the exact solution.
 bool is_exact(const method_spec& m);

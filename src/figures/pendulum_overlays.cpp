@@ -248,30 +248,13 @@ std::string timer_time(const figure_spec& spec, double w0_t) {
     return buf;
 }
 
-/// The top of the drawing with a timer (rod lengths): room for its line above the circle.
-constexpr double timer_top = 1.9;
-
-/// Keeps the legend off the timer's line: an invisible stroke across it, which the legend's
-/// placement avoids as it avoids data.
-void reserve_timer_line(plot::panel& panel, double right) {
-    plot::series room;
-    room.id = "timer-room";
-    room.alpha = 0;
-    room.autoscale = false;
-    room.x = {-1.2, right, std::nan(""), -1.2, right};
-    room.y = {timer_top - 0.15, timer_top - 0.15, std::nan(""), timer_top - 0.5, timer_top - 0.5};
-    panel.data.push_back(std::move(room));
-}
-
 }  // namespace
 
 void add_overlays_still(plot::panel& panel, const panel_spec& p, const std::vector<overlay_start>& starts,
                         bool clock) {
-    // The line of the timer or of an animation's clock above the circle, not over a bob near the top.
-    if (p.timer || clock) {
-        panel.y.max = timer_top;
-        reserve_timer_line(panel, p.energy_bars ? energy_bars_right : 1.2);
-    }
+    // The line of the timer or of an animation's clock: the plot layer keeps it above the
+    // drawing, beside its label, measured in points (never over a bob near the top).
+    panel.overlay_line = p.timer || clock;
     if (!p.energy_bars || starts.empty()) return;
     panel.x.max = energy_bars_right;
     const double largest = largest_energy(starts);

@@ -69,8 +69,8 @@ inline constexpr double energy_bars_base = -1.1;
 inline constexpr double energy_bars_height = 2.2;
 
 /// The parts of the overlays that do not move: the room for the bars on the right, each
-/// start's total energy bar, and a line above the circle for the timer or for an animation's
-/// clock (`clock`), which is drawn at the drawing's top left.
+/// start's total energy bar, and a line above the drawing for the timer or for an animation's
+/// clock (`clock`): plot::panel::overlay_line.
 void add_overlays_still(plot::panel& panel, const panel_spec& p, const std::vector<overlay_start>& starts,
                         bool clock = false);
 

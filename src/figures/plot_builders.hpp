@@ -5,6 +5,7 @@
 #include "figures/plots.hpp"
 #include "figures/spec.hpp"
 #include "plot/figure.hpp"
+#include "plot/theme.hpp"
 
 #include <functional>
 #include <vector>
@@ -27,9 +28,21 @@ void spectrum_keys(key_reading& k);
 /// The keys of a pendulum panel.
 void pendulum_keys(key_reading& k);
 
+/// How the drawing shows one pendulum (start i by method j): the one source of its look for
+/// the drawing and for its description.
+struct pendulum_glyph {
+    std::string label;           ///< its legend text (markup): the method, the start, or both
+    plot::line_style rod;        ///< the rod's line before a theme's style (never none: solid)
+    plot::marker_style bob;      ///< the bob's marker: filled for the exact pendulum, else open
+};
+
+/// The look of each pendulum of a pendulum panel, start by start, method by method, as drawn
+/// in theme `th` (its style of a method's line, applied to the rod as the drawing's is).
+std::vector<pendulum_glyph> pendulum_glyphs(const panel_spec& p, const plot::theme& th);
+
 /// The pendulum drawing's description (kind_descriptions.cpp): what is drawn, each
 /// pendulum's rod and bob, where they start.
-std::string describe_pendulum_drawing(const panel_spec& spec, bool animated);
+std::string describe_pendulum_drawing(const panel_spec& spec, bool animated, const plot::theme& th);
 /// Each orbit of a phase plot: its shape and how far it reaches on both axes.
 std::string describe_phase_orbits(const described_curves& d);
 

@@ -10,6 +10,7 @@
 #include "pendulum/exact.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/motion.hpp"
+#include "plot/render.hpp"
 #include "plot/tex_markup.hpp"
 
 #include <algorithm>
@@ -57,6 +58,7 @@ std::pair<double, double> bob_place(double a) { return {std::sin(a), -std::cos(a
 series_style bob_style(const panel_spec& p, const std::vector<bob_start>& starts, std::size_t i, std::size_t j) {
     const auto& m = p.methods[j];
     series_style st = style_of(m, static_cast<int>(j));
+    st.id = start_id(st.id, i, starts.size());
     if (starts.size() > 1) {
         // The phase panel's line of the start's orbit, so that one palette colour (the paper
         // theme's black) still tells the starts apart, in the drawing and in its legend.
@@ -69,6 +71,27 @@ series_style bob_style(const panel_spec& p, const std::vector<bob_start>& starts
         st.style_key.clear();
     }
     return st;
+}
+
+/// The glyph of start i by method j, from its style (bob_style), before a theme's style.
+pendulum_glyph glyph_of(const panel_spec& p, const std::vector<bob_start>& starts, std::size_t i, std::size_t j) {
+    const series_style st = bob_style(p, starts, i, j);
+    const auto& m = p.methods[j];
+    return {st.label.markup, st.line == line_style::none ? line_style::solid : st.line,
+            m.marker.value_or(is_exact(m) ? marker_style::filled_circle : marker_style::open_circle)};
+}
+
+/// The rod of a glyph in its style, not yet placed: the glyph's line, which the theme's
+/// style of the method replaces where that is a drawn line (style_line_only).
+plot::series rod_of(const series_style& st, const pendulum_glyph& glyph) {
+    plot::series rod = series_of(st);
+    rod.label.clear();
+    rod.style_line_only = true;
+    rod.line = glyph.rod;
+    rod.marker = marker_style::none;
+    rod.width_scale = 1.2;
+    rod.id = "rod:" + st.id;
+    return rod;
 }
 
 /// A moving part of the drawing in the start's style: no legend entry (the panel's key
@@ -85,7 +108,7 @@ plot::series drawn_part(const series_style& st) {
 plot::series legend_key(const panel_spec& p, const std::vector<bob_start>& starts, std::size_t i, std::size_t j) {
     plot::series key = series_of(bob_style(p, starts, i, j));
     if (starts.size() > 1) key.marker = marker_style::none;  // the rod's line in the start's colour
-    key.id = "key:" + std::to_string(i + 1) + ":" + key.id;
+    key.id = "key:" + key.id;
     return key;
 }
 
@@ -108,6 +131,22 @@ plot::series trail_key(const panel_context& c, const panel_spec& p, const std::v
 }
 
 }  // namespace
+
+std::vector<pendulum_glyph> pendulum_glyphs(const panel_spec& p, const plot::theme& th) {
+    const auto starts = starts_of(p);
+    std::vector<pendulum_glyph> out;
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+        for (std::size_t j = 0; j < p.methods.size(); ++j) {
+            pendulum_glyph g = glyph_of(p, starts, i, j);
+            // The rod as the theme draws it: the plot layer's styling of the drawing's rod.
+            plot::figure one;
+            one.panels.emplace_back().data.push_back(rod_of(bob_style(p, starts, i, j), g));
+            g.rod = plot::with_theme_styles(one, th).panels.front().data.front().line;
+            out.push_back(std::move(g));
+        }
+    }
+    return out;
+}
 
 plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
     // The drawing: x to the right, y up, the pivot at the origin and a rod of length 1.
@@ -142,7 +181,7 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
             mark.line = line_style::dotted;
             mark.alpha = 0.5;
             mark.width_scale = 0.6;
-            mark.id = "turn:" + std::to_string(i + 1);
+            mark.id = start_id(side > 0 ? "turn:right" : "turn:left", i, starts.size());
             if (starts.size() > 1) mark.color = static_cast<int>(i);
             panel.data.push_back(std::move(mark));
         }
@@ -173,7 +212,7 @@ void add_trail(plot::panel& panel, const series_style& st, const Theta& theta, d
         trail.line = line_style::solid;
         trail.marker = marker_style::none;
         trail.alpha = 0.08 + 0.06 * k;
-        trail.id = "trail:" + st.id;
+        trail.id = "trail:" + st.id + ":" + std::to_string(k + 1);  // oldest first
         const double t0 = w0_t - span * (8 - k) / 8;
         const double t1 = w0_t - span * (7 - k) / 8;
         // Drawn after this function returns: holds its own copy of the motion.
@@ -191,14 +230,16 @@ void add_trail(plot::panel& panel, const series_style& st, const Theta& theta, d
 template <class Theta>
 void add_streak(plot::panel& panel, const series_style& st, const Theta& theta, double w0_t, double frame_step,
                 marker_style bob_marker) {
-    for (const auto& ghost : motion_streak(theta, w0_t, frame_step)) {
+    const auto ghosts = motion_streak(theta, w0_t, frame_step);
+    for (std::size_t k = 0; k < ghosts.size(); ++k) {
+        const auto& ghost = ghosts[k];
         plot::series s = drawn_part(st);
         s.line = line_style::none;
         // A blur, also behind an outlined bob: filled, fainter for an outline.
         s.marker = marker_style::filled_circle;
         s.marker_scale = bob_marker_scale;
         s.width_scale = 1.5;
-        s.id = "streak:" + st.id;
+        s.id = "streak:" + st.id + ":" + std::to_string(k + 1);  // oldest first
         s.alpha = bob_marker == marker_style::filled_circle ? ghost.alpha : 0.5 * ghost.alpha;
         s.x = {bob_place(ghost.angle).first};
         s.y = {bob_place(ghost.angle).second};
@@ -206,22 +247,16 @@ void add_streak(plot::panel& panel, const series_style& st, const Theta& theta, 
     }
 }
 
-/// The rod and the bob at angle a.
-void add_rod_and_bob(plot::panel& panel, const series_style& st, line_style line, marker_style bob_marker, double a) {
-    // The method's line, themed (a theme's dotted harmonic), solid where it has none (exact).
-    plot::series rod = series_of(st);
-    rod.label.clear();
-    rod.style_line_only = true;
-    rod.line = line == line_style::none ? line_style::solid : line;
-    rod.marker = marker_style::none;
-    rod.width_scale = 1.2;
-    rod.id = "rod:" + st.id;
+/// The rod and the bob at angle a, as the glyph shows them.
+void add_rod_and_bob(plot::panel& panel, const series_style& st, const pendulum_glyph& glyph, double a) {
+    // The glyph's line, themed (a theme's dotted harmonic).
+    plot::series rod = rod_of(st, glyph);
     rod.x = {0, std::sin(a)};
     rod.y = {0, -std::cos(a)};
     plot::series bob = drawn_part(st);
     bob.line = line_style::none;
     // The exact pendulum's bob is solid; the approximations' are outlines.
-    bob.marker = bob_marker;
+    bob.marker = glyph.bob;
     bob.marker_scale = bob_marker_scale;
     bob.width_scale = 1.5;
     bob.id = "bob:" + st.id;
@@ -256,10 +291,9 @@ void add_pendulum_state(plot::panel& panel, const panel_spec& p, double w0_t, do
             const auto theta = angle_of(m, motion);
             const series_style st = bob_style(p, starts, i, j);
             if (p.trail > 0) add_trail(panel, st, theta, w0_t, std::min(p.trail * period, w0_t + history));
-            const marker_style bob_marker =
-                m.marker.value_or(is_exact(m) ? marker_style::filled_circle : marker_style::open_circle);
-            add_streak(panel, st, theta, w0_t, frame_step, bob_marker);
-            add_rod_and_bob(panel, st, st.line, bob_marker, theta(w0_t));
+            const pendulum_glyph glyph = glyph_of(p, starts, i, j);
+            add_streak(panel, st, theta, w0_t, frame_step, glyph.bob);
+            add_rod_and_bob(panel, st, glyph, theta(w0_t));
         }
     }
     add_pivot(panel);

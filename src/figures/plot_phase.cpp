@@ -222,10 +222,11 @@ plot::panel phase_panel(const panel_context&, const panel_spec& p) {
 
 void add_phase_frame(plot::panel& panel, const panel_context&, const panel_spec& p, double w0_t) {
     const double angle = p.degrees ? 180 / pi : 1.0;
+    const std::size_t starts = p.starts.size() + p.theta0.size();
     for (std::size_t i = 0; i < p.starts.size(); ++i) {
         const auto& m = p.starts[i].motion;
         for (std::size_t j = 0; j < p.methods.size(); ++j) {
-            plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(p.methods.size() == 1 ? i : j)));
+            plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(p.methods.size() == 1 ? i : j)), i, starts);
             if (is_exact(p.methods[j])) {
                 dot.x = {angle * wrapped(m.theta(w0_t))};
                 dot.y = {m.velocity(w0_t)};
@@ -242,7 +243,7 @@ void add_phase_frame(plot::panel& panel, const panel_context&, const panel_spec&
         for (std::size_t j = 0; j < p.methods.size(); ++j) {
             // One method: each orbit its own colour, as the orbits are drawn.
             const int index = static_cast<int>(p.methods.size() == 1 ? i : j);
-            plot::series dot = moving_dot(style_of(p.methods[j], index));
+            plot::series dot = moving_dot(style_of(p.methods[j], index), p.starts.size() + i, starts);
             const auto [theta, velocity] = state_at(p.methods[j], exact, w0_t);
             dot.x = {angle * theta};
             dot.y = {velocity};

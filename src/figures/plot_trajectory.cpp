@@ -58,9 +58,10 @@ std::pair<double, std::string> start_time_unit(const figure_spec& spec, const pa
     return {m.period(), m.kind() == pendulum::regime::rotation ? "<i>t</i>/<i>T</i><sub>rev</sub>" : "<i>t</i>/<i>T</i>"};
 }
 
-/// The time cursor of an animated trajectory: a faint vertical line at x.
-plot::series time_cursor(double x) {
+/// The time cursor of an animated trajectory: a faint vertical line at x, with its start's id.
+plot::series time_cursor(double x, const std::string& id) {
     plot::series cursor;
+    cursor.id = id;
     cursor.x = {x, x};
     cursor.y = {-1e5, 1e5};
     cursor.autoscale = false;
@@ -234,28 +235,32 @@ plot::panel trajectory_panel(const panel_context& c, const panel_spec& p) {
 
 void add_trajectory_frame(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t) {
     const double angle = p.degrees ? 180 / pi : 1.0;
+    const std::size_t starts = p.starts.size() + p.theta0.size();
+    std::size_t i = 0;
     for (const auto& start : p.starts) {
         const double x_now = w0_t / start_time_unit(c.spec, p, start.motion).first;
-        panel.data.push_back(time_cursor(x_now));
+        panel.data.push_back(time_cursor(x_now, start_id("cursor", i, starts)));
         for (std::size_t j = 0; j < p.methods.size(); ++j) {
-            plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(j)));
+            plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(j)), i, starts);
             dot.x = {x_now};
             dot.y = {angle * start_theta(p.methods[j], start.motion)(w0_t)};
             panel.data.push_back(std::move(dot));
         }
+        ++i;
     }
     for (const auto& a : p.theta0) {
         const pendulum::exact_solution exact(a.theta0());
         const double period = 4 * exact.quarter_period();
         // The time cursor.
         const double x_now = w0_t / period * time_unit_of(c.spec, p, exact).first;
-        panel.data.push_back(time_cursor(x_now));
+        panel.data.push_back(time_cursor(x_now, start_id("cursor", i, starts)));
         for (std::size_t j = 0; j < p.methods.size(); ++j) {
-            plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(j)));
+            plot::series dot = moving_dot(style_of(p.methods[j], static_cast<int>(j)), i, starts);
             dot.x = {x_now};
             dot.y = {angle * state_at(p.methods[j], exact, w0_t).first};
             panel.data.push_back(std::move(dot));
         }
+        ++i;
     }
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "plot/figure.hpp"
+#include "plot/theme.hpp"
 
 #include <span>
 #include <string>
@@ -74,7 +75,7 @@ struct plot_row {
     void (*add_frame)(plot::panel& panel, const panel_context& c, const panel_spec& p, double w0_t);
     /// A drawing's description after "Panel (a)" (for alt text), in place of the general one;
     /// null for the general one.
-    std::string (*describe_drawing)(const panel_spec& p, bool animated);
+    std::string (*describe_drawing)(const panel_spec& p, bool animated, const plot::theme& th);
     /// Sentences of its own added to the description of a plot's curves; null for none.
     std::string (*describe_curves)(const described_curves& d);
 };

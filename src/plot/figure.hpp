@@ -191,6 +191,9 @@ struct panel {
     bool frameless = false;               ///< no frame, ticks or axis labels (a drawing, not a plot)
     bool equal_aspect = false;            ///< one unit is as long on both axes
     plot::label overlay_label;            ///< text that changes per frame (a clock), top left inside, overlay pass
+    /// A drawing (frameless) keeps a line above it for overlay_label, beside its label, in
+    /// every frame alike: the text never covers the drawing, whatever its size.
+    bool overlay_line = false;
 };
 
 /// A figure in words, plain text, for readers who cannot see it.

@@ -120,9 +120,12 @@ panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th, 
     if (!p.x.label.empty()) plan.xlabel_h = text.ink(p.x.label.markup, th.label_font_pt).h;
     const double pad = th.padding_pt;
     const double last_xtick_w = plan.xt.labels.empty() ? 0.0 : text.ink(plan.xt.labels.back(), th.tick_font_pt).w;
-    const double panel_label_h = p.label.empty() ? 0.0 : text.ink(p.label.markup, th.label_font_pt).h;
+    // A drawing's line for its changing text holds it beside its label.
+    const bool overlay_line = p.frameless && p.overlay_line;
+    const double panel_label_h = std::max(p.label.empty() ? 0.0 : text.ink(p.label.markup, th.label_font_pt).h,
+                                          overlay_line ? overlay_line_ink(text, th).h : 0.0);
     // The panel label sits above the top y tick label, never beside it.
-    plan.top = pad + std::max(0.5 * digit.h, p.label.empty() ? 0.0 : 0.5 * digit.h + plan.label_gap + panel_label_h);
+    plan.top = pad + std::max(0.5 * digit.h, panel_label_h > 0 ? 0.5 * digit.h + plan.label_gap + panel_label_h : 0.0);
     plan.right = pad + 0.5 * last_xtick_w;
     plan.legend = measure_legend(text, p, th);
     return plan;
@@ -145,6 +148,10 @@ bool tick_labels_fit(const tick_set& t, const std::vector<double>& extents, cons
         last_half = half;
     }
     return true;
+}
+
+text_ink overlay_line_ink(const text_engine& text, const theme& th) {
+    return text.ink("(<i>t</i> = 0 <i>T</i><sub>0</sub>)", th.label_font_pt);
 }
 
 namespace {

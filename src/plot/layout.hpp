@@ -51,6 +51,10 @@ struct panel_plan {
     tick_limit y_limit;     // what the y locator was allowed
 };
 
+/// The ink of the tallest line an overlay_label may be (digits, italics, a subscript,
+/// parentheses): the line a drawing keeps for it (panel::overlay_line), the same in every frame.
+text_ink overlay_line_ink(const text_engine& text, const theme& th);
+
 /// Measures a panel's ticks, labels and legend; margins come from share_margins. The
 /// limits, where given, allow fewer ticks than the axes ask for.
 panel_plan plan_panel(const text_engine& text, const panel& p, const theme& th, const tick_limit& x_limit = {},

@@ -541,6 +541,23 @@ void note_markers_on_frame(const panel& p, const panel_plan& plan, const std::ve
                        " on the frame, cut there; widen the range to show them whole");
 }
 
+/// A panel's changing text (a clock): a drawing's on the line it keeps above itself, after
+/// its label (panel::overlay_line); else inside the top left corner, which a phase portrait
+/// leaves free.
+void draw_overlay_label(const text_engine& text, const theme& th, const panel& p, const rect& area) {
+    const double pad = th.padding_pt;
+    if (!(p.frameless && p.overlay_line)) {
+        text.draw(p.overlay_label, th.label_font_pt, area.x + pad, area.y + pad, 0.0, 0.0);
+        return;
+    }
+    double x = area.x;
+    if (!p.label.empty()) {
+        const text_ink ink = text.ink(p.label.markup, th.label_font_pt);
+        x += ink.x + ink.w + th.label_font_pt;
+    }
+    text.draw(p.overlay_label, th.label_font_pt, x, area.y - 0.4 * pad, 0.0, 1.0);  // as the label
+}
+
 /// Draws one panel as `placed` (place_with_legend) puts it and its legend; `alike` names
 /// the series drawn crowded (space_markers) for a series of their legend entry elsewhere.
 void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const panel& p, const panel_plan& plan,
@@ -551,8 +568,7 @@ void draw_panel(cairo_t* cr, const text_engine& text, const theme& th, const pan
     draw_series(cr, th, p, placed.g, spaced, gate);
     if (!p.overlay_label.empty() && gate.draws(true)) {
         set_foreground(cr, th);
-        // Inside the top left corner, which a drawing of the pendulum and a phase portrait leave free.
-        text.draw(p.overlay_label, th.label_font_pt, area.x + pad, area.y + pad, 0.0, 0.0);
+        draw_overlay_label(text, th, p, area);
     }
     if (!gate.draws(false)) return;
     if (p.frameless) {
@@ -833,6 +849,30 @@ bool legend_fits_inside(cairo_t* cr, const figure_layout& f, std::size_t i, doub
     return d.legend.entries.empty() || legend_inside(p, d.legend, g, f.deciding).has_value();
 }
 
+/// The least share of its cell's height a panel keeps under a legend band above it, where
+/// the cells beside it leave the band room: a drawing of the pendulum under the five entries
+/// of two starts' legend stays a drawing.
+constexpr double least_panel_share = 0.6;
+
+/// The cell a band above panel i spans: its own; or, where the band over its own cell would
+/// leave it less than least_panel_share of the cell's height, also the cells to its right in
+/// its row up to the first panel with a legend of its own (their row moves down by the band
+/// anyway), so that the band takes fewer lines. Decided at the deciding sizes, as
+/// band_spans_axes is.
+rect band_cell(const figure_layout& f, std::size_t i) {
+    const figure& fig = *f.fig;
+    rect cell = f.cells[i];
+    const panel_plan& d = f.decided[i];
+    const double h = legend_band_rect(d.legend, f.deciding, d, cell, 0, band_spans_axes(d, f.deciding, cell)).h;
+    if (cell.h - h >= least_panel_share * cell.h) return cell;
+    const auto cols = static_cast<std::size_t>(fig.cols);
+    const std::size_t row_end = std::min(fig.panels.size(), (i / cols + 1) * cols);
+    for (std::size_t k = i + 1; k < row_end && f.plans[k].legend.entries.empty(); ++k) {
+        cell.w = f.cells[k].x + f.cells[k].w - cell.x;
+    }
+    return cell;
+}
+
 /// One round of place_own_legends: each panel's spot with its row moved down by row_band,
 /// and the band each row then needs (its highest band; the peers' in row 0).
 struct row_bands {
@@ -857,7 +897,7 @@ row_bands own_legend_round(cairo_t* cr, const theme& th, const figure_layout& f,
         if (own) out.spots[i] = automatic ? legend_spot::band : legend_spot::none;
         if (!automatic) continue;
         // Decided at the deciding sizes, so that every route spans alike.
-        const rect cell = own ? f.cells[i] : f.cells.front();
+        const rect cell = own ? band_cell(f, i) : f.cells.front();
         const bool over_axes = band_spans_axes(f.decided[i], f.deciding, cell);
         const rect band = legend_band_rect(f.plans[i].legend, th, f.plans[i], cell, cell.y + (own ? 0.3 * pad : 0),
                                            over_axes);

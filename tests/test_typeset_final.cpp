@@ -1,2 +1,246 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Typesetting and drawing details from a 1200-dpi review: lines drawn from dense samples,
+// the energy unit set one way in every route, one line for a theme below its minimum.
+#include "figures/build_options.hpp"
+#include "figures/catalog.hpp"
+#include "figures/themes.hpp"
+#include "plot/geometry.hpp"
+#include "plot/output.hpp"
+#include "plot/render.hpp"
+#include "process.hpp"
+
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+using test_support::run_cli;
+using test_support::slurp;
+using test_support::temp_dir;
+
+namespace {
+
+using point = std::pair<double, double>;
+
+/// The stroked polylines of an SVG (paths without fill and without Bezier pieces), in page points.
+std::vector<std::vector<point>> stroked_polylines(const std::string& svg) {
+    std::vector<std::vector<point>> out;
+    const auto attribute = [](const std::string& attrs, const std::string& name) -> std::string {
+        const auto at = attrs.find(" " + name + "=\"");
+        if (at == std::string::npos) return {};
+        const auto from = at + name.size() + 3;
+        return attrs.substr(from, attrs.find('"', from) - from);
+    };
+    for (std::size_t at = svg.find("<path "); at != std::string::npos; at = svg.find("<path ", at + 1)) {
+        const std::string attrs = svg.substr(at + 5, svg.find('>', at) - at - 5);
+        if (attrs.find("fill:none") == std::string::npos) continue;
+        const std::string d = attribute(attrs, "d");
+        if (d.empty() || d.find('C') != std::string::npos) continue;
+        double m[6] = {1, 0, 0, 1, 0, 0};
+        if (const std::string tr = attribute(attrs, "transform"); !tr.empty()) {
+            std::string text = tr.substr(tr.find('(') + 1);
+            std::replace(text.begin(), text.end(), ',', ' ');
+            std::istringstream in(text);
+            for (double& v : m) in >> v;
+        }
+        std::istringstream in(d);
+        std::string token;
+        std::vector<std::vector<point>> here;
+        while (in >> token) {
+            if (std::isalpha(static_cast<unsigned char>(token[0]))) {
+                if (token[0] == 'M') here.emplace_back();
+                continue;
+            }
+            const double x = std::stod(token);
+            double y = 0;
+            in >> y;
+            if (here.empty()) here.emplace_back();
+            here.back().emplace_back(m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5]);
+        }
+        for (auto& s : here) {
+            if (s.size() >= 2) out.push_back(std::move(s));
+        }
+    }
+    return out;
+}
+
+/// A curve sampled on the page finely enough (vertices within 0.02 pt of each other) that
+/// the distance to its nearest vertex is its distance to the curve within 0.01 pt, with a
+/// grid of 1-pt cells to find the vertices near a point.
+class dense_curve {
+public:
+    dense_curve(const plot::curve& c, const plot::axis_map& mx, const plot::axis_map& my) {
+        const auto at = [&](double u) {
+            const auto [x, y] = c.at(u);
+            return point{mx(x), my(y)};
+        };
+        const int n = 4096;
+        point prev = at(c.u0);
+        add(prev);
+        for (int i = 1; i <= n; ++i) {
+            const double u0 = c.u0 + (c.u1 - c.u0) * (i - 1) / n;
+            const double u1 = c.u0 + (c.u1 - c.u0) * i / n;
+            const point next = at(u1);
+            const double gap = std::hypot(next.first - prev.first, next.second - prev.second);
+            const int steps = std::isfinite(gap) ? std::min(4000, static_cast<int>(std::ceil(gap / 0.02))) : 1;
+            for (int j = 1; j <= steps; ++j) add(at(u0 + (u1 - u0) * j / steps));
+            prev = next;
+        }
+    }
+
+    /// The distance from p to the nearest vertex within 1 pt (2 pt if none is that near).
+    double distance(point p) const {
+        double best = 2.0;
+        const long cx = cell(p.first);
+        const long cy = cell(p.second);
+        for (long i = cx - 1; i <= cx + 1; ++i) {
+            for (long j = cy - 1; j <= cy + 1; ++j) {
+                const auto it = cells_.find({i, j});
+                if (it == cells_.end()) continue;
+                for (const point& q : it->second) best = std::min(best, std::hypot(q.first - p.first, q.second - p.second));
+            }
+        }
+        return best;
+    }
+
+private:
+    static long cell(double v) { return static_cast<long>(std::floor(v)); }
+    void add(point p) {
+        if (std::isfinite(p.first) && std::isfinite(p.second)) cells_[{cell(p.first), cell(p.second)}].push_back(p);
+    }
+    std::map<std::pair<long, long>, std::vector<point>> cells_;
+};
+
+/// The largest distance from the exact curve of a segment of a drawn polyline whose two
+/// ends lie on that curve (within 0.01 pt) and that is longer than 0.3 pt: such a segment is
+/// the curve drawn, and must stay within the README's 0.05 pt of it everywhere.
+double worst_deviation(const std::vector<std::vector<point>>& lines, const dense_curve& exact) {
+    double worst = 0;
+    for (const auto& line : lines) {
+        for (std::size_t i = 1; i < line.size(); ++i) {
+            const point a = line[i - 1];
+            const point b = line[i];
+            if (std::hypot(b.first - a.first, b.second - a.second) < 0.3) continue;
+            if (exact.distance(a) > 0.01 || exact.distance(b) > 0.01) continue;
+            for (int j = 1; j < 16; ++j) {
+                const double t = j / 16.0;
+                worst = std::max(worst, exact.distance({a.first + t * (b.first - a.first), a.second + t * (b.second - a.second)}));
+            }
+        }
+    }
+    return worst;
+}
+
+}  // namespace
+
+// Every line drawn along an exact curve (a method's line, or the thin line through markers
+// that would crowd) stays within 0.05 pt of the curve: it comes from the curve sampler, not
+// from straight segments between marker samples (regimes (b)-(d), Fig. 6 had kinks ~2.5 mm apart).
+TEST(TypesetFinal, EveryDrawnLineAlongACurveStaysWithinTheTolerance) {
+    for (const char* theme_name : {"paper", "slides"}) {
+        const plot::theme th = figures::load_theme(theme_name);
+        for (const auto& e : figures::catalog()) {
+            if (e.spec.animation) continue;
+            const plot::figure fig = figures::build(e, figures::sized_by({}, th));
+            const std::string svg = plot::render(fig, th, "svg", {});
+            const auto lines = stroked_polylines(svg);
+            const plot::figure styled = plot::with_theme_styles(fig, th);
+            const auto frames = plot::panel_frames(styled, th);
+            for (std::size_t i = 0; i < styled.panels.size() && i < frames.size(); ++i) {
+                const plot::panel& p = styled.panels[i];
+                const plot::panel_frame& f = frames[i];
+                // Linear axes only: a log axis' sharp dips (an error through zero) need a
+                // finer reference than this even sampling (the curves test measures those).
+                if (f.frameless || p.x.kind == plot::scale::log || p.y.kind == plot::scale::log) continue;
+                const plot::axis_map mx{f.x_lo, f.x_hi, p.x.kind == plot::scale::log, f.x, f.x + f.w};
+                const plot::axis_map my{f.y_lo, f.y_hi, p.y.kind == plot::scale::log, f.y + f.h, f.y};
+                for (std::size_t k = 0; k < p.data.size(); ++k) {
+                    if (!p.data[k].curve) continue;
+                    const double worst = worst_deviation(lines, dense_curve(*p.data[k].curve, mx, my));
+                    EXPECT_LE(worst, 0.05 + 0.01) <<  // 0.01: the dense sampling's own error
+                         e.id << " " << theme_name << " panel " << i << " series " << k;
+                }
+            }
+        }
+    }
+}
+
+// The energy unit is set as TeX sets $E = 1\,mgL$ in every route: a thin space (U+2009)
+// in the PDF and SVG text, \, in pdf_tex (in math mode, titles too), a space in the alt text.
+TEST(TypesetFinal, TheEnergyUnitIsSetOneWayInEveryRoute) {
+    const auto dir = temp_dir("typeset-energy");
+    std::filesystem::create_directories(dir / "tex");
+    const auto r = run_cli("render regimes -f svg -o '" + dir.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto t = run_cli("render regimes -f pdf_tex -o '" + (dir / "tex").string() + "'");
+    ASSERT_EQ(t.status, 0) << t.err;
+    const std::string tex = slurp(dir / "tex" / "regimes.pdf_tex");
+    for (const char* e : {"1", "2", "3"}) {
+        const std::string n(e);
+        EXPECT_NE(tex.find("$E = " + n + "\\,mgL,$"), std::string::npos) << tex;  // legends
+        EXPECT_NE(tex.find("$E=" + n + "\\,mgL$"), std::string::npos) << tex;     // titles, "=" in math
+        EXPECT_EQ(tex.find("$E$"), std::string::npos) << tex;
+        EXPECT_EQ(tex.find(n + " mgL"), std::string::npos) << tex;
+        EXPECT_EQ(tex.find(n + "mgL"), std::string::npos) << tex;
+    }
+    const std::string svg = slurp(dir / "regimes.svg");
+    // The alt text (title, Subject) in plain words: one ASCII space.
+    EXPECT_NE(svg.find("Panel (b), libration, E = 1 mgL, shows"), std::string::npos);
+    EXPECT_NE(svg.find("Curves: E = 1 mgL, libration"), std::string::npos);
+    EXPECT_EQ(svg.find("1\u2009mgL"), std::string::npos) << "a thin space in the alt text";
+    std::filesystem::remove_all(dir);
+}
+
+// The figure's labels, as the plot layer draws them (PDF, PNG and SVG set the same markup):
+// every energy with a thin space before mgL, in legends and titles alike.
+TEST(TypesetFinal, TheEnergyUnitHasAThinSpaceInLegendsAndTitles) {
+    const plot::theme th = figures::load_theme("paper");
+    for (const char* id : {"regimes", "over-the-top"}) {
+        const plot::figure fig = figures::build(figures::find(id), figures::sized_by({}, th));
+        int energies = 0;
+        for (const auto& p : fig.panels) {
+            std::vector<std::string> texts{p.label.markup};
+            for (const auto& s : p.data) texts.push_back(s.label.markup);
+            for (const auto& text : texts) {
+                if (text.find("mgL") == std::string::npos) continue;
+                ++energies;
+                EXPECT_NE(text.find("\u2009<i>mgL</i>"), std::string::npos) << id << ": " << text;
+                EXPECT_EQ(text.find(" <i>mgL</i>"), std::string::npos) << id << ": " << text;
+            }
+        }
+        EXPECT_GE(energies, 3) << id;
+    }
+}
+
+// A theme below its minimum is one error line naming the key, the value and what to change.
+TEST(TypesetFinal, AThemeBelowItsMinimumIsOneLine) {
+    const auto dir = temp_dir("typeset-theme");
+    const auto r = run_cli("render fig1 --set tick_font_pt=7 -o '" + dir.string() + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("tick_font_pt = 7 is below the theme's min_text_pt = 8"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("raise tick_font_pt to 8 or more"), std::string::npos) << r.err;
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+    // The boundary of the tick labels' scripts (0.7 of the text, at least 6 pt): 8.58 is
+    // accepted, 8.57 refused in one line.
+    const auto ok = run_cli("render fig1 --set tick_font_pt=8.58 -f svg -o '" + dir.string() + "'");
+    EXPECT_EQ(ok.status, 0) << ok.err;
+    const auto below = run_cli("render fig1 --set tick_font_pt=8.57 -f svg -o '" + dir.string() + "'");
+    EXPECT_EQ(below.status, 2);
+    EXPECT_EQ(std::count(below.err.begin(), below.err.end(), '\n'), 1) << below.err;
+    EXPECT_NE(below.err.find("raise tick_font_pt to 8.58 or more"), std::string::npos) << below.err;
+    // A style file's problem: one line too, with the file and line.
+    std::ofstream(dir / "small.toml") << "tick_font_pt = 7\n";
+    const auto f = run_cli("render fig1 --theme '" + (dir / "small.toml").string() + "' -f svg -o '" + dir.string() + "'");
+    EXPECT_EQ(f.status, 2);
+    EXPECT_EQ(std::count(f.err.begin(), f.err.end(), '\n'), 1) << f.err;
+    EXPECT_EQ(f.err.find("bad theme:\n"), std::string::npos) << f.err;
+    std::filesystem::remove_all(dir);
+}

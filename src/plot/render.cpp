@@ -276,11 +276,13 @@ spaced_series space_markers(const theme& th, const panel& p, const panel_geometr
     return out;
 }
 
-/// The line through a crowded series: through its points (the markers stand on it).
+/// The line through a crowded series: its curve sampled as a line of its own is (within
+/// curve_tolerance of it; the markers stand on it), or through its points if it has none.
 void stroke_crowded(cairo_t* cr, const theme& th, const series& s, const panel_geometry& g, std::size_t k,
                     const rect& clip) {
     device_series line = g.dev[k];
-    line.sampled = false;
+    line.sampled = static_cast<bool>(s.curve);
+    if (s.curve) sample_curve(*s.curve, g.mx, g.my, clip, curve_tolerance(cr), line.lx, line.ly);
     set_color(cr, th, s);
     set_line_style(cr, th, line_style::solid, 0.6 * s.width_scale);
     stroke_polyline(cr, line, clip);

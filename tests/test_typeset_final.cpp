@@ -15,6 +15,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -243,4 +244,117 @@ TEST(TypesetFinal, AThemeBelowItsMinimumIsOneLine) {
     EXPECT_EQ(std::count(f.err.begin(), f.err.end(), '\n'), 1) << f.err;
     EXPECT_EQ(f.err.find("bad theme:\n"), std::string::npos) << f.err;
     std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+/// WCAG's relative luminance of an sRGB colour.
+double luminance(const plot::rgb& c) {
+    const auto lin = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+    return 0.2126 * lin(c.r) + 0.7152 * lin(c.g) + 0.0722 * lin(c.b);
+}
+
+/// WCAG's contrast ratio of two colours, 1 to 21.
+double contrast(const plot::rgb& a, const plot::rgb& b) {
+    const double la = luminance(a);
+    const double lb = luminance(b);
+    return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+/// A series' colour as drawn in the theme.
+plot::rgb colour_of(const plot::series& s, const plot::theme& th) {
+    return s.rgb_color ? *s.rgb_color : th.palette[static_cast<std::size_t>(s.color) % th.palette.size()];
+}
+
+/// The curve's points on the page, at most 0.05 pt apart.
+std::vector<point> page_points(const plot::curve& c, const plot::axis_map& mx, const plot::axis_map& my) {
+    std::vector<point> out;
+    const int n = 20000;
+    for (int i = 0; i <= n; ++i) {
+        const auto [x, y] = c.at(c.u0 + (c.u1 - c.u0) * i / n);
+        if (std::isfinite(mx(x)) && std::isfinite(my(y))) out.emplace_back(mx(x), my(y));
+    }
+    return out;
+}
+
+/// The least distance between two point sets, by a grid of 2-pt cells.
+double least_distance(const std::vector<point>& a, const std::vector<point>& b) {
+    std::map<std::pair<long, long>, std::vector<point>> cells;
+    for (const point& q : b) cells[{static_cast<long>(std::floor(q.first / 2)), static_cast<long>(std::floor(q.second / 2))}].push_back(q);
+    double best = 4.0;
+    for (const point& p : a) {
+        const long cx = static_cast<long>(std::floor(p.first / 2));
+        const long cy = static_cast<long>(std::floor(p.second / 2));
+        for (long i = cx - 1; i <= cx + 1; ++i) {
+            for (long j = cy - 1; j <= cy + 1; ++j) {
+                const auto it = cells.find({i, j});
+                if (it == cells.end()) continue;
+                for (const point& q : it->second) best = std::min(best, std::hypot(q.first - p.first, q.second - p.second));
+            }
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+// The separatrix stands 3:1 or more against the background in every built-in theme (WCAG's
+// contrast, from the theme's colours; slides-dark's was 2.88:1), and apart from every
+// orbit's colour.
+TEST(TypesetFinal, TheSeparatrixContrastsWithTheBackgroundInEveryTheme) {
+    for (const auto& t : figures::builtin_themes()) {
+        const plot::theme th = figures::load_theme(t.name);
+        const plot::figure fig = plot::with_theme_styles(figures::build(figures::find("phase-portrait"), figures::sized_by({}, th)), th);
+        int separatrix = 0;
+        for (const auto& s : fig.panels.front().data) {
+            if (s.label.markup != "separatrix") continue;
+            ++separatrix;
+            EXPECT_GE(contrast(colour_of(s, th), th.background), 3.0) << t.name;
+            for (const auto& o : fig.panels.front().data) {
+                if (o.rgb_color || !o.curve) continue;  // the separatrix' own halves
+                const plot::rgb a = colour_of(s, th);
+                const plot::rgb b = colour_of(o, th);
+                EXPECT_FALSE(a.r == b.r && a.g == b.g && a.b == b.b) << t.name << " " << o.label.markup;
+                // In the paper theme (black orbits) distinct in greyscale too. The slides
+                // palettes hold greys as light as it (their orbits are told apart by colour).
+                if (std::string(t.name) == "paper") EXPECT_GE(contrast(a, b), 3.0) << o.label.markup;
+            }
+        }
+        EXPECT_EQ(separatrix, 1) << t.name;  // its upper half carries the label
+    }
+}
+
+// No two inks of the phase portrait (orbits and separatrix) come closer than 0.2 mm, in
+// every built-in theme at its size: the separatrix is not hidden by an orbit beside it.
+TEST(TypesetFinal, NoTwoPhaseInksCloserThanAFifthOfAMillimetre) {
+    constexpr double mm = 72 / 25.4;
+    for (const auto& t : figures::builtin_themes()) {
+        const plot::theme th = figures::load_theme(t.name);
+        const plot::figure fig = plot::with_theme_styles(figures::build(figures::find("phase-portrait"), figures::sized_by({}, th)), th);
+        const auto frames = plot::panel_frames(fig, th);
+        const plot::panel& p = fig.panels.front();
+        const plot::panel_frame& f = frames.front();
+        const plot::axis_map mx{f.x_lo, f.x_hi, false, f.x, f.x + f.w};
+        const plot::axis_map my{f.y_lo, f.y_hi, false, f.y + f.h, f.y};
+        std::vector<std::vector<point>> inks;
+        std::vector<const plot::series*> series;
+        for (const auto& s : p.data) {
+            if (!s.curve || s.line == plot::line_style::none) continue;
+            inks.push_back(page_points(*s.curve, mx, my));
+            series.push_back(&s);
+        }
+        ASSERT_GE(inks.size(), 6u) << t.name;
+        double least = 1e9;
+        for (std::size_t a = 0; a < inks.size(); ++a) {
+            for (std::size_t b = a + 1; b < inks.size(); ++b) {
+                // The separatrix' two halves meet at +-pi: one line.
+                if (series[a]->rgb_color && series[b]->rgb_color) continue;
+                const double half_widths = 0.5 * th.line_width_pt * (series[a]->width_scale + series[b]->width_scale);
+                const double gap = least_distance(inks[a], inks[b]) - half_widths;
+                least = std::min(least, gap);
+                EXPECT_GE(gap, 0.2 * mm) << t.name << " series " << a << " and " << b;
+            }
+        }
+        std::cout << t.name << ": least ink gap " << least / mm << " mm\n";
+    }
 }

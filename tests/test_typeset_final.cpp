@@ -358,3 +358,43 @@ TEST(TypesetFinal, NoTwoPhaseInksCloserThanAFifthOfAMillimetre) {
         std::cout << t.name << ": least ink gap " << least / mm << " mm\n";
     }
 }
+
+// Markers on evenly spaced data (the iteration's orders, a trajectory's time grid) stand at
+// a whole step: every k-th point from the first, k constant per series (convergence had
+// circles 1 and 2 orders apart by turns), and reach the last point where the data does
+// (Fig. 6 had circles at t/T = 0 and none at 1).
+TEST(TypesetFinal, MarkersOnEvenDataStandAtAWholeStep) {
+    int strided = 0;
+    for (const auto& t : figures::builtin_themes()) {
+        const plot::theme th = figures::load_theme(t.name);
+        for (const char* id : {"convergence", "trajectory-second", "trajectory-first"}) {
+            const plot::figure fig = plot::with_theme_styles(figures::build(figures::find(id), figures::sized_by({}, th)), th);
+            const auto frames = plot::panel_frames(fig, th);
+            const auto centres = plot::marker_centres(fig, th);
+            for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+                const plot::panel_frame& f = frames[i];
+                for (std::size_t k = 0; k < fig.panels[i].data.size(); ++k) {
+                    const plot::series& s = fig.panels[i].data[k];
+                    const auto& m = centres[i][k];
+                    if (!m.spaced || m.centres.size() < 2 || s.x.size() < 3) continue;
+                    // Each drawn marker's index in the data, from its x on the page.
+                    std::vector<long> index;
+                    for (const auto& c : m.centres) {
+                        const double x = f.x_lo + (c.first - f.x) / f.w * (f.x_hi - f.x_lo);
+                        index.push_back(std::lround((x - s.x.front()) / (s.x[1] - s.x[0])));
+                    }
+                    const long step = index[1] - index[0];
+                    for (std::size_t j = 1; j < index.size(); ++j) {
+                        EXPECT_EQ(index[j] - index[j - 1], step) << id << " " << t.name << " panel " << i << " series " << k;
+                    }
+                    EXPECT_EQ(index.front(), 0) << id << " " << t.name;
+                    if (std::string(id) != "convergence") {
+                        EXPECT_EQ(index.back(), static_cast<long>(s.x.size()) - 1) << id << " " << t.name << " panel " << i;
+                    }
+                    ++strided;
+                }
+            }
+        }
+    }
+    EXPECT_GE(strided, 12);
+}

@@ -226,10 +226,48 @@ placed_panel place_with_legend(const theme& th, const panel& p, const panel_plan
     return out;
 }
 
+/// Whether the kept markers stand at least `spacing` apart from one another.
+bool all_apart(const device_series& d, const std::vector<std::size_t>& kept, double spacing) {
+    for (std::size_t a = 0; a < kept.size(); ++a) {
+        for (std::size_t b = a + 1; b < kept.size(); ++b) {
+            if (std::hypot(d.x[kept[a]] - d.x[kept[b]], d.y[kept[a]] - d.y[kept[b]]) < spacing) return false;
+        }
+    }
+    return true;
+}
+
+/// The markers of a series whose points stand evenly along x (orders 0, 1, 2, ...; times
+/// on a grid) at a whole step: every k-th point from the first, the least k that keeps them
+/// `spacing` apart, one that reaches the last point where one does (markers symmetric where
+/// the data is); points not finite (gaps) are skipped. Empty if the points are not evenly
+/// spaced along x.
+std::vector<std::size_t> strided_markers(const device_series& d, double spacing) {
+    const std::size_t n = std::min(d.x.size(), d.y.size());
+    if (n < 3) return {};
+    const auto finite = [&d](std::size_t i) { return std::isfinite(d.x[i]) && std::isfinite(d.y[i]); };
+    if (!finite(0) || !finite(1)) return {};
+    const double step = d.x[1] - d.x[0];
+    for (std::size_t i = 2; i < n; ++i) {
+        const double want = d.x[0] + static_cast<double>(i) * step;
+        if (finite(i) && !(std::fabs(d.x[i] - want) <= 1e-6 * std::fabs(step) * static_cast<double>(i))) return {};
+    }
+    std::vector<std::size_t> best;
+    for (std::size_t k = 1; k < n; ++k) {
+        std::vector<std::size_t> kept;
+        for (std::size_t i = 0; i < n; i += k) {
+            if (finite(i)) kept.push_back(i);
+        }
+        if (!all_apart(d, kept, spacing)) continue;
+        if (best.empty()) best = kept;
+        if (kept.back() == n - 1) return kept.size() * 4 >= best.size() * 3 ? kept : best;
+        if (kept.size() * 4 < best.size() * 3) break;
+    }
+    return best;
+}
+
 /// The markers of a series (indices into d) that stand at least `spacing` apart on the
-/// page from every marker kept before them, the first kept: a series sampled finely where
-/// it moves slowly (a plateau) or drawn small keeps a marker every `spacing`.
-std::vector<std::size_t> spaced_markers(const device_series& d, double spacing) {
+/// page from every marker kept before them, the first kept.
+std::vector<std::size_t> greedy_markers(const device_series& d, double spacing) {
     std::vector<std::size_t> kept;
     for (std::size_t i = 0; i < d.x.size() && i < d.y.size(); ++i) {
         if (!std::isfinite(d.x[i]) || !std::isfinite(d.y[i])) continue;
@@ -238,6 +276,18 @@ std::vector<std::size_t> spaced_markers(const device_series& d, double spacing) 
         });
         if (apart) kept.push_back(i);
     }
+    return kept;
+}
+
+/// The markers of a series (indices into d) that stand at least `spacing` apart on the
+/// page: evenly spaced points at a whole step (strided_markers) where that keeps half as
+/// many as the spacing below or more; else those apart from every marker kept before
+/// them, the first kept: a series sampled finely where it moves slowly (a plateau) or drawn
+/// small keeps a marker every `spacing`.
+std::vector<std::size_t> spaced_markers(const device_series& d, double spacing) {
+    std::vector<std::size_t> kept = greedy_markers(d, spacing);
+    std::vector<std::size_t> strided = strided_markers(d, spacing);
+    if (!strided.empty() && 2 * strided.size() >= kept.size()) return strided;
     return kept;
 }
 

@@ -7,6 +7,7 @@
 #include "plot/geometry.hpp"
 #include "plot/output.hpp"
 #include "plot/render.hpp"
+#include "plot/ticks.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
@@ -397,4 +398,31 @@ TEST(TypesetFinal, MarkersOnEvenDataStandAtAWholeStep) {
         }
     }
     EXPECT_GE(strided, 12);
+}
+
+// A log axis with limits the spec fixes labels both its ends where a step up to twice the
+// thinnest that fits divides its span: period-formulas (b), 1e-10 to 1, was labelled at
+// 1e-10 and 1e-2 only (every 8 decades), the top 10^0 bare.
+TEST(TypesetFinal, AFixedLogAxisLabelsBothEnds) {
+    const plot::tick_set three = plot::log_ticks(1e-10, 1, 3, false);
+    ASSERT_EQ(three.major.size(), 3u);
+    EXPECT_DOUBLE_EQ(three.major.front(), 1e-10);
+    EXPECT_DOUBLE_EQ(three.major[1], 1e-5);
+    EXPECT_DOUBLE_EQ(three.major.back(), 1.0);
+    EXPECT_EQ(three.labels.back(), "10<sup>0</sup>");
+    const plot::tick_set two = plot::log_ticks(1e-10, 1, 2, false);
+    ASSERT_EQ(two.major.size(), 2u);
+    EXPECT_DOUBLE_EQ(two.major.back(), 1.0);
+    // No divisor within twice the step: 11 decades (prime) keep the thinnest step.
+    const plot::tick_set prime = plot::log_ticks(1e-11, 1, 3, false);
+    EXPECT_DOUBLE_EQ(prime.major.front(), 1e-11);
+    EXPECT_LE(prime.major.size(), 3u);
+    // The built-in, as drawn: (b)'s labels end at 10^0.
+    const plot::theme th = figures::load_theme("paper");
+    const plot::figure fig = figures::build(figures::find("period-formulas"), figures::sized_by({}, th));
+    const auto frames = plot::panel_frames(plot::with_theme_styles(fig, th), th);
+    ASSERT_EQ(frames.size(), 2u);
+    ASSERT_FALSE(frames[1].y_labels.empty());
+    EXPECT_EQ(frames[1].y_labels.back(), "10<sup>0</sup>");
+    EXPECT_EQ(frames[1].y_labels.front(), "10<sup>\u221210</sup>");
 }

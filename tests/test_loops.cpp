@@ -396,9 +396,9 @@ TEST(Loops, OneLegendPerAnimation) {
             first.push_back(s.label.markup);
             alphas.push_back(s.alpha);
         }
-        EXPECT_EQ(first, (std::vector<std::string>{"turning points", "<i>E</i> = 1.6 <i>mgL</i>, libration",
-                                                   "<i>E</i> = 2 <i>mgL</i>, separatrix",
-                                                   "<i>E</i> = 2.6 <i>mgL</i>, rotation",
+        EXPECT_EQ(first, (std::vector<std::string>{"turning points", "<i>E</i> = 1.6\u2009<i>mgL</i>, libration",
+                                                   "<i>E</i> = 2\u2009<i>mgL</i>, separatrix",
+                                                   "<i>E</i> = 2.6\u2009<i>mgL</i>, rotation",
                                                    "paths of the last 0.15 periods"}))
             << "frame " << i;
         // A cross-fade fades the drawing, not its legend: its glyphs as in the first frame.

@@ -180,8 +180,8 @@ TEST(TeachingRest, EnergiesHaveTheirUnit) {
     const auto& e = figures::find("over-the-top");
     const auto& p = e.spec.panels.at(0);
     ASSERT_EQ(p.starts.size(), 3U);
-    EXPECT_EQ(p.starts[0].label, "<i>E</i> = 1.6 <i>mgL</i>");
-    EXPECT_EQ(p.starts[1].label, "<i>E</i> = 2 <i>mgL</i>");
+    EXPECT_EQ(p.starts[0].label, "<i>E</i> = 1.6\u2009<i>mgL</i>");
+    EXPECT_EQ(p.starts[1].label, "<i>E</i> = 2\u2009<i>mgL</i>");
     const auto built = figures::build(e, {});
     const auto d = figures::describe(e, built);
     EXPECT_NE(d.text.find("E = 1.6 mgL swings between two turning points"), std::string::npos) << d.text;

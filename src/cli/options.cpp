@@ -335,7 +335,8 @@ plot::theme chosen_theme(const std::string& name, const std::vector<std::string>
     try {
         return figures::load_theme(name, sets);
     } catch (const figures::spec_error& e) {
-        throw usage_error(std::string("bad theme:\n") + e.what());
+        // The message names the theme (or the style file and line), the key and what to change.
+        throw usage_error(e.what());
     }
 }
 

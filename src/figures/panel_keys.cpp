@@ -261,12 +261,18 @@ void add_start(key_reading& k, const toml::node& where, std::string label, bool 
     }
 }
 
+/// An energy with its unit, as TeX sets $E = 1\,mgL$: a thin space (U+2009, \\, in LaTeX, a
+/// space in plain text) between the number and mgL. The one source of the energy text in
+/// legends, titles and descriptions, in every route.
+std::string energy_markup(const std::string& text) {
+    return "<i>E</i> = " + typeset_angle(text) + "\u2009<i>mgL</i>";
+}
+
 /// energy = [...]: launches from the bottom.
 void read_energy_starts(key_reading& k, const toml::node& energy) {
     for (const toml::node* e : items_of(energy)) {
         if (auto v = k.r.expression(*e, "energy", false)) {
-            // An energy with its unit, mgL (set as TeX sets $mgL$), wherever it is shown (titles, legends, descriptions).
-            add_start(k, *e, "<i>E</i> = " + typeset_angle(v->first) + " <i>mgL</i>", true,
+            add_start(k, *e, energy_markup(v->first), true,
                       [text = v->first] { return pendulum::motion::from_energy(pendulum::written_number::expression(text)); });
         }
     }

@@ -239,7 +239,8 @@ std::string plain_text(const std::string& markup) {
         }
     }
     const std::pair<std::string, std::string> entities[] = {
-        {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}};
+        {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"},
+        {"\u2009", " "}};  // a thin space (E = 1 mgL) is a space in plain words
     for (const auto& [from, to] : entities) {
         for (std::size_t pos = 0; (pos = out.find(from, pos)) != std::string::npos; pos += to.size()) {
             out.replace(pos, from.size(), to);

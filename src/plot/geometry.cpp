@@ -254,7 +254,7 @@ std::function<void(const sampled_curve&)>& observer() {
 }  // namespace
 
 void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
-                  std::vector<double>& x, std::vector<double>& y, std::vector<double>* vertex_u) {
+                  std::vector<double>& x, std::vector<double>& y, std::vector<double>* vertex_u, bool observed) {
     const std::vector<double> key{mx.lo, mx.hi, mx.log ? 1.0 : 0.0, mx.d0, mx.d1, my.lo, my.hi, my.log ? 1.0 : 0.0,
                                   my.d0, my.d1, clip.x, clip.y, clip.w, clip.h, tolerance};
     std::vector<double> u;
@@ -276,7 +276,7 @@ void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const 
     } else {
         curve_sampler(c, mx, my, clip, tolerance, x, y, u, nullptr).run();
     }
-    if (observer()) observer()(sampled_curve{&c, mx, my, clip, tolerance, x, y, u});
+    if (observed && observer()) observer()(sampled_curve{&c, mx, my, clip, tolerance, x, y, u});
     if (vertex_u) *vertex_u = std::move(u);
 }
 

@@ -69,9 +69,11 @@ device_series to_device(const series& s, const axis_map& mx, const axis_map& my)
 /// recursive subdivision of the parameter; NaN where the curve is not finite. The last
 /// sampling of a curve is remembered, so that drawing it again with the same maps costs
 /// nothing (the frames of an animation).
-/// With `u`, the parameter of each vertex goes there.
+/// With `u`, the parameter of each vertex goes there. `observed` false keeps the sampling
+/// from observe_sampled_curves (a crowded series' thin line, drawn in some layouts tried).
 void sample_curve(const curve& c, const axis_map& mx, const axis_map& my, const rect& clip, double tolerance,
-                  std::vector<double>& x, std::vector<double>& y, std::vector<double>* u = nullptr);
+                  std::vector<double>& x, std::vector<double>& y, std::vector<double>* u = nullptr,
+                  bool observed = true);
 
 /// The curve at parameter u, through its memo: the value its sampling drew.
 std::pair<double, double> curve_at(const curve& c, double u);

@@ -236,28 +236,83 @@ bool spaces_markers(const series& s) {
     return s.marker != marker_style::none && s.data_slot < 0 && !s.overlay;
 }
 
-/// The markers of a series (indices into d) that stand at least `spacing` apart on the
-/// page from every marker kept before them, the first kept, and from every disc of `taken`
-/// (x, y and the least distance to it): a series sampled finely where it moves slowly (a
-/// plateau) or drawn small keeps a marker every `spacing`.
+/// A marker already placed by an earlier series of the panel: its centre and the least
+/// distance another marker keeps from it.
 struct disc {
     double x = 0;
     double y = 0;
     double apart = 0;
 };
 
-std::vector<std::size_t> spaced_markers(const device_series& d, double spacing, const std::vector<disc>& taken = {}) {
+/// Whether point i of d stands clear of every disc of `taken`.
+bool clear_of(const device_series& d, std::size_t i, const std::vector<disc>& taken) {
+    return std::all_of(taken.begin(), taken.end(),
+                       [&](const disc& t) { return std::hypot(d.x[i] - t.x, d.y[i] - t.y) >= t.apart; });
+}
+
+/// Whether the kept markers stand at least `spacing` apart from one another.
+bool all_apart(const device_series& d, const std::vector<std::size_t>& kept, double spacing) {
+    for (std::size_t a = 0; a < kept.size(); ++a) {
+        for (std::size_t b = a + 1; b < kept.size(); ++b) {
+            if (std::hypot(d.x[kept[a]] - d.x[kept[b]], d.y[kept[a]] - d.y[kept[b]]) < spacing) return false;
+        }
+    }
+    return true;
+}
+
+/// The markers of a series whose points stand evenly along x (orders 0, 1, 2, ...; times
+/// on a grid) at a whole step: every k-th point from the first, the least k that keeps them
+/// `spacing` apart, one that reaches the last point where one does (markers symmetric where
+/// the data is); points not finite (gaps) are skipped. Empty if the points are not evenly
+/// spaced along x.
+std::vector<std::size_t> strided_markers(const device_series& d, double spacing) {
+    const std::size_t n = std::min(d.x.size(), d.y.size());
+    if (n < 3) return {};
+    const auto finite = [&d](std::size_t i) { return std::isfinite(d.x[i]) && std::isfinite(d.y[i]); };
+    if (!finite(0) || !finite(1)) return {};
+    const double step = d.x[1] - d.x[0];
+    for (std::size_t i = 2; i < n; ++i) {
+        const double want = d.x[0] + static_cast<double>(i) * step;
+        if (finite(i) && !(std::fabs(d.x[i] - want) <= 1e-6 * std::fabs(step) * static_cast<double>(i))) return {};
+    }
+    std::vector<std::size_t> best;
+    for (std::size_t k = 1; k < n; ++k) {
+        std::vector<std::size_t> kept;
+        for (std::size_t i = 0; i < n; i += k) {
+            if (finite(i)) kept.push_back(i);
+        }
+        if (!all_apart(d, kept, spacing)) continue;
+        if (best.empty()) best = kept;
+        if (kept.back() == n - 1) return kept.size() * 4 >= best.size() * 3 ? kept : best;
+        if (kept.size() * 4 < best.size() * 3) break;
+    }
+    return best;
+}
+
+/// The markers of a series (indices into d) that stand at least `spacing` apart on the
+/// page from every marker kept before them, the first kept, and clear of `taken`.
+std::vector<std::size_t> greedy_markers(const device_series& d, double spacing, const std::vector<disc>& taken = {}) {
     std::vector<std::size_t> kept;
     for (std::size_t i = 0; i < d.x.size() && i < d.y.size(); ++i) {
         if (!std::isfinite(d.x[i]) || !std::isfinite(d.y[i])) continue;
         const bool apart = std::all_of(kept.begin(), kept.end(), [&](std::size_t j) {
             return std::hypot(d.x[i] - d.x[j], d.y[i] - d.y[j]) >= spacing;
         });
-        const bool free = std::all_of(taken.begin(), taken.end(), [&](const disc& t) {
-            return std::hypot(d.x[i] - t.x, d.y[i] - t.y) >= t.apart;
-        });
-        if (apart && free) kept.push_back(i);
+        if (apart && clear_of(d, i, taken)) kept.push_back(i);
     }
+    return kept;
+}
+
+/// The markers of a series (indices into d) that stand at least `spacing` apart on the
+/// page and clear of the markers of earlier series (`taken`): evenly spaced points at a
+/// whole step (strided_markers, less those an earlier series' marker stands for) where
+/// that keeps half as many as greedy_markers or more; else greedy_markers: a series sampled
+/// finely where it moves slowly (a plateau) or drawn small keeps a marker every `spacing`.
+std::vector<std::size_t> spaced_markers(const device_series& d, double spacing, const std::vector<disc>& taken = {}) {
+    std::vector<std::size_t> kept = greedy_markers(d, spacing, taken);
+    std::vector<std::size_t> strided = strided_markers(d, spacing);
+    std::erase_if(strided, [&](std::size_t i) { return !clear_of(d, i, taken); });
+    if (!strided.empty() && 2 * strided.size() >= kept.size()) return strided;
     return kept;
 }
 
@@ -287,7 +342,7 @@ marker_choice choose_markers(const theme& th, const panel& p, const std::vector<
         out.kept[k] = spaced_markers(d, 1.5 * diameter, taken);
         std::size_t finite = 0;
         for (std::size_t i = 0; i < n; ++i) finite += std::isfinite(d.x[i] + d.y[i]);
-        out.crowded[k] = spaced_markers(d, 1.5 * diameter).size() != finite;
+        out.crowded[k] = greedy_markers(d, 1.5 * diameter).size() != finite;
         for (std::size_t i : out.kept[k]) {
             const bool inside =
                 d.x[i] >= area.x && d.x[i] <= area.x + area.w && d.y[i] >= area.y && d.y[i] <= area.y + area.h;
@@ -328,11 +383,15 @@ spaced_series space_markers(const theme& th, const panel& p, const panel_geometr
 /// The width of the line through a crowded series, in units of the series' line width.
 constexpr double crowded_width = 0.6;
 
-/// The line through a crowded series: through its points (the markers stand on it).
+/// The line through a crowded series: its curve sampled as a line of its own is (within
+/// curve_tolerance of it; the markers stand on it), or through its points if it has none.
 void stroke_crowded(cairo_t* cr, const theme& th, const series& s, const panel_geometry& g, std::size_t k,
                     const rect& clip) {
     device_series line = g.dev[k];
-    line.sampled = false;
+    line.sampled = static_cast<bool>(s.curve);
+    // Not observed: whether a series crowds depends on the layout tried (the curves test
+    // looks for every observed sampling in the file); the typeset test measures these lines.
+    if (s.curve) sample_curve(*s.curve, g.mx, g.my, clip, curve_tolerance(cr), line.lx, line.ly, nullptr, false);
     set_color(cr, th, s);
     set_line_style(cr, th, line_style::solid, crowded_width * s.width_scale);
     stroke_polyline(cr, line, clip);

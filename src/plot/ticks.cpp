@@ -238,6 +238,14 @@ decades labelled_decades(double lo, double hi, int max_ticks, bool expand) {
     d.first = expand ? static_cast<long long>(std::floor(a + 1e-9)) : static_cast<long long>(std::ceil(a - 1e-9));
     d.last = expand ? static_cast<long long>(std::ceil(b - 1e-9)) : static_cast<long long>(std::floor(b + 1e-9));
     while ((d.last - d.first) / d.every + 1 > std::max(max_ticks, 2)) d.every *= 2;
+    // Fixed limits: a step up to twice as long that divides the span labels both ends
+    // (1e-10 ... 1 every 5 decades, not 1e-10 and 1e-2 every 8 with 10^0 bare).
+    for (long long k = d.every; !expand && d.last > d.first && k <= 2 * d.every; ++k) {
+        if ((d.last - d.first) % k == 0) {
+            d.every = k;
+            break;
+        }
+    }
     if (expand) {
         // Keep the limits on labelled decades.
         d.first = static_cast<long long>(std::floor(static_cast<double>(d.first) / d.every)) * d.every;

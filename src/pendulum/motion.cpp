@@ -57,11 +57,37 @@ double am_reduced(double r, double quarter, double kp) {
     return sign * std::atan2(j.cn, kp * j.sn);
 }
 
-/// dn(r | k) for r in [-K, K]: dn(K - u) = k'/dn(u) beyond K/2.
-double dn_reduced(double r, double quarter, double kp) {
-    r = std::fabs(r);
-    if (r <= 0.5 * quarter) return jacobi(r, kp).dn;
-    return kp / jacobi(quarter - r, kp).dn;
+/// A double-double: hi + lo with |lo| below half an ulp of hi (to rounding).
+struct double_double {
+    double hi;
+    double lo;
+};
+
+/// a + b exactly as a double-double (Knuth's two-sum).
+double_double two_sum(double a, double b) {
+    const double s = a + b;
+    const double v = s - a;
+    return {s, (a - (s - v)) + (b - v)};
+}
+
+/// x + y for double-doubles, to about 2^-104 of the larger.
+double_double add(double_double x, double_double y) {
+    const double_double s = two_sum(x.hi, y.hi);
+    return two_sum(s.hi, s.lo + x.lo + y.lo);
+}
+
+/// x / y for double-doubles, y > 0: the quotient's double and, by an exact fma, its remainder.
+double_double divide(double_double x, double_double y) {
+    const double q = x.hi / y.hi;
+    const double rest = std::fma(-q, y.hi, x.hi);
+    return two_sum(q, (rest + x.lo - q * y.lo) / y.hi);
+}
+
+/// dn(x | k) at the double-double x: dn at its double, less k^2 sn cn times its low part
+/// (dn' = -k^2 sn cn).
+double dn_at(double_double x, double kp) {
+    const auto j = jacobi(x.hi, kp);
+    return j.dn - (1.0 - kp) * (1.0 + kp) * j.sn * j.cn * x.lo;
 }
 
 }  // namespace
@@ -226,7 +252,11 @@ void motion::prepare(const start_numbers& n, double half_speed) {
         offset_ = std::asinh(std::tan(0.5 * angle));
         return;
     }
-    quarter_ = 0.5 * pi / agm(1.0, kp_);
+    quarter_ = n.quarter;
+    quarter_lo_ = n.quarter_lo;
+    half_turn_ = n.half_turn;
+    half_turn_lo_ = n.half_turn_lo;
+    k_lo_ = n.k_lo;
     // theta = 2 am(tau / k): tau = k F(theta/2 | k), with theta/2 in (-pi/2, pi/2].
     const double half = 0.5 * angle;
     const double f = elliptic_f(std::fabs(std::sin(half)), std::cos(half), kp_);
@@ -326,13 +356,24 @@ double motion::forward_velocity(double tau) const {
     switch (kind_) {
     case regime::libration: return pendulum::velocity_at_fraction(*libration_, tau / (4.0 * quarter_));
     case regime::separatrix: return 2.0 / std::cosh(tau);
-    case regime::rotation: {
-        const double revolution = 2.0 * k_ * quarter_;
-        const double r = (tau - std::nearbyint(tau / revolution) * revolution) / k_;
-        return 2.0 / k_ * dn_reduced(r, quarter_, kp_);
-    }
+    case regime::rotation: return rotation_velocity(tau, 0.0);
     }
     return 0.0;
+}
+
+double motion::rotation_velocity(double tau, double tau_lo) const {
+    // u = tau / k less the nearest whole revolutions 2 K, then dn(u) = dn(|r|) within K/2 of
+    // the bottom and k'/dn(K - |r|) beyond, every step a double-double: next to the top
+    // omega is k'/dn(K - |r|), whose relative digits are the absolute digits of K - |r|.
+    const double n = std::nearbyint(tau / (2.0 * half_turn_));
+    const double whole = -2.0 * n * half_turn_;  // rounded; the fma below keeps what it lost
+    const double_double turns{whole, std::fma(-2.0 * n, half_turn_, -whole) - 2.0 * n * half_turn_lo_};
+    const double_double rest = add(two_sum(tau, tau_lo), turns);
+    double_double r = divide(rest, {k_, k_lo_});
+    if (r.hi < 0) r = {-r.hi, -r.lo};
+    if (r.hi <= 0.5 * quarter_) return 2.0 / k_ * dn_at(r, kp_);
+    const double_double u = add({quarter_, quarter_lo_}, {-r.hi, -r.lo});
+    return 2.0 / k_ * (kp_ / dn_at(u, kp_));
 }
 
 namespace {
@@ -375,10 +416,16 @@ double motion::theta(double w0_t) const {
     return mirror_ * (turns_ * two_pi_hi + forward_theta(w0_t + offset_) + turns_ * two_pi_lo);
 }
 
-double motion::velocity(double w0_t) const {
+double motion::velocity(double w0_t) const { return velocity(w0_t, 0.0); }
+
+double motion::velocity(double w0_t, double low) const {
     if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
-    if (w0_t == 0) return start_.omega;
-    return mirror_ * forward_velocity(w0_t + offset_);
+    if (w0_t == 0 && low == 0) return start_.omega;
+    if (kind_ == regime::rotation) {
+        const double_double tau = add(two_sum(w0_t, offset_), {low, 0.0});
+        return mirror_ * rotation_velocity(tau.hi, tau.lo);
+    }
+    return mirror_ * forward_velocity(w0_t + offset_) + acceleration(w0_t) * low;
 }
 
 }  // namespace pendulum

@@ -6,8 +6,10 @@
 #include "figures/describe.hpp"
 #include "figures/figure_data.hpp"
 #include "figures/themes.hpp"
+#include "pendulum/amplitude.hpp"
 #include "pendulum/start_energy.hpp"
 #include "plot/render.hpp"
+#include "figures/panel_support.hpp"
 #include "process.hpp"
 #include "reference.hpp"
 
@@ -130,6 +132,131 @@ TEST(StartPrecision, AMotionADoubleCannotHoldIsRefused) {
     const auto far = run_cli("trajectory --theta0 2pi+1e-400 --omega0 0 --at 0.5");
     EXPECT_EQ(far.status, 2);
     EXPECT_NE(far.err.find("its amplitude is 1e-400"), std::string::npos) << far.err;
+}
+
+// --- digits on error axes ------------------------------------------------------------------
+
+/// True for an error axis by its label: a relative error, or |T_m/T - 1| (|T_N/T - 1|).
+bool error_label(const std::string& label) {
+    return label.find("error") != std::string::npos || label.find("\u2212 1|") != std::string::npos ||
+           label.find("- 1|") != std::string::npos;
+}
+
+/// The significant digits of a number as printed ("0.00123" 3, "1.5e-07" 2, "120" 3).
+int significant_digits(const std::string& text) {
+    const std::string mantissa = text.substr(0, text.find_first_of("eE"));
+    std::string digits;
+    for (const char c : mantissa) {
+        if (c >= '0' && c <= '9') digits += c;
+    }
+    const auto first = digits.find_first_not_of('0');
+    return first == std::string::npos ? 1 : static_cast<int>(digits.size() - first);
+}
+
+/// Every still built-in with its panels' numbers, as `data` makes them with the paper theme.
+std::vector<figures::figure_numbers> still_builtins() {
+    static const plot::theme paper = figures::load_theme("paper");
+    std::vector<figures::figure_numbers> out;
+    for (const auto& e : figures::catalog()) {
+        if (e.spec.animation) continue;
+        out.push_back(figures::numbers_of(e, {}, paper, paper.dpi));
+    }
+    return out;
+}
+
+// The values on an error axis are right to 1e-12 relative (period_error's drawing precision)
+// and were printed with 17 digits (period-error's |T_m/T - 1| off by 2.8e-14 of itself showed
+// its noise). One rule, figures::printed_digits: an error axis' values get the 12 digits
+// they are right to, in every format; every other axis keeps every digit of a double. Every
+// still built-in: its error axes found by their labels (Fig. 7(b), period-error,
+// period-formulas, convergence), each printed value at most 12 digits and its double's
+// rounding to 12 (within 5e-12 of itself); the other axes untouched.
+TEST(ErrorAxes, PrintedValuesCarryTheDigitsTheyDeserve) {
+    EXPECT_EQ(figures::error_axis_relative, 1e-12);
+    int error_panels = 0;
+    std::size_t printed = 0;
+    for (const auto& n : still_builtins()) {
+        for (std::size_t i = 0; i < n.panels.size(); ++i) {
+            const auto& p = n.panels[i];
+            const bool error = error_label(p.y.label);
+            error_panels += error ? 1 : 0;
+            for (const auto& s : p.series) {
+                EXPECT_EQ(s.y_digits, error ? 12 : 0) << n.id << " " << p.name << " " << s.id << ": " << p.y.label;
+                if (!error || s.reference_line) continue;
+                for (const double v : s.y) {
+                    if (!std::isfinite(v) || v == 0) continue;
+                    const std::string text = figures::format_digits(v, s.y_digits);
+                    EXPECT_LE(significant_digits(text), 12) << n.id << " " << p.name << ": " << text;
+                    EXPECT_LE(std::fabs(number(text) - v), 5e-12 * std::fabs(v)) << n.id << ": " << text;
+                    ++printed;
+                }
+            }
+        }
+        // Every format: the long and wide CSV and the JSON print what format_digits gives.
+        const std::string csv = figures::numbers_csv(n, figures::data_layout::long_rows);
+        const std::string wide = figures::numbers_csv(n, figures::data_layout::wide);
+        const std::string json = figures::numbers_json(n);
+        for (const auto& p : n.panels) {
+            for (const auto& s : p.series) {
+                if (s.y_digits == 0 || s.y.empty()) continue;
+                for (const double v : s.y) {
+                    if (!std::isfinite(v)) continue;
+                    const std::string text = figures::format_digits(v, s.y_digits);
+                    EXPECT_NE(csv.find("," + text + ","), std::string::npos) << n.id << ": " << text;
+                    EXPECT_NE(wide.find(text), std::string::npos) << n.id << ": " << text;
+                    EXPECT_NE(json.find(text), std::string::npos) << n.id << ": " << text;
+                    break;  // one value per series and format is enough to show the path
+                }
+            }
+        }
+    }
+    EXPECT_GE(error_panels, 4);
+    EXPECT_GT(printed, 500u);
+}
+
+// A value printed to its digits: rounded once to `digits` significant digits, written shortest,
+// every digit of a double where digits is 0 (and for what is not finite).
+TEST(ErrorAxes, FormatDigitsRoundsOnceAndWritesShortest) {
+    EXPECT_EQ(figures::format_digits(0.0012300000000000001, 12), "0.00123");
+    EXPECT_EQ(figures::format_digits(1.2345678901234567, 12), "1.23456789012");
+    EXPECT_EQ(figures::format_digits(9.9999999999996e-5, 12), pendulum::format_double(1e-4));  // "1e-04"
+    EXPECT_EQ(figures::format_digits(-2.71828182845904523e-200, 12), "-2.71828182846e-200");
+    EXPECT_EQ(figures::format_digits(1.2345678901234567, 0), "1.2345678901234567");
+    EXPECT_EQ(figures::format_digits(0.1, 12), "0.1");
+}
+
+// Tick labels on every error axis, in the paper and slides themes: the fewest decimals that
+// show every tick (not every label ending in 0 after its point) and at most 3 significant
+// digits (steps 1, 2, 2.5 and 5 times a power of ten), on the linear and the log axes.
+TEST(ErrorAxes, TickLabelsCarryNoDigitBeyondTheirStep) {
+    int axes = 0;
+    for (const char* name : {"paper", "slides"}) {
+        const plot::theme theme = figures::load_theme(name);
+        for (const auto& e : figures::catalog()) {
+            if (e.spec.animation) continue;
+            const plot::figure f = plot::with_theme_styles(figures::build(e, figures::sized_by({}, theme)), theme);
+            const auto frames = plot::panel_frames(f, theme);
+            for (std::size_t i = 0; i < f.panels.size() && i < frames.size(); ++i) {
+                if (!error_label(figures::plain_text(f.panels[i].y.label.markup))) continue;
+                ++axes;
+                bool all_trailing_zero = true;
+                bool any_point = false;
+                for (const auto& label : frames[i].y_labels) {
+                    // The mantissa: before "x10<sup>" or a power's "<sup>" (10^-12 is one digit).
+                    const std::string plain = figures::plain_text(label);
+                    const std::string mantissa =
+                        figures::plain_text(label.substr(0, std::min(label.find("\u00d7"), label.find("<sup>"))));
+                    if (mantissa.find('.') != std::string::npos) {
+                        any_point = true;
+                        all_trailing_zero = all_trailing_zero && mantissa.back() == '0';
+                    }
+                    EXPECT_LE(significant_digits(mantissa), 3) << e.id << " " << name << ": " << plain;
+                }
+                EXPECT_FALSE(any_point && all_trailing_zero) << e.id << " " << name << " panel " << i;
+            }
+        }
+    }
+    EXPECT_GE(axes, 8);
 }
 
 // --- describe's axis ranges ---------------------------------------------------------------

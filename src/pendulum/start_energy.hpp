@@ -39,7 +39,10 @@ inline constexpr mpfr_prec_t start_ceiling_bits = 65536;
 /// at the ceiling (2 - E below 2^-32760 of its terms at 32768 bits and 2^-65528 at 65536, as
 /// for 2pi/3 with 1); otherwise throws domain_error naming the ceiling: the inputs cannot
 /// decide (a gap only the ceiling sees), or the energy is 0 to every bit (an angle whose
-/// place in the turn needs more bits than the ceiling, or at rest at a multiple of 2 pi).
+/// place in the turn needs more bits than the ceiling, or at rest at a multiple of 2 pi). A
+/// decided libration or rotation that doubles cannot hold is refused too: 2 k' (its distance
+/// from the top) below 2.2250738585072014e-308, as an amplitude's distance from pi may not be,
+/// or a libration's amplitude that rounds to 0.
 start_energy decide_start(const std::function<start_energy(mpfr_prec_t)>& at, const std::string& what);
 
 /// The doubles of a decided start, each rounded once from the exact energy and gap.

@@ -18,6 +18,7 @@ the regime of a start only a precision past 2560 bits decides."""
 
 from mpmath import mp
 
+from make_state_long_times import point as long_time_point
 from reference_csv import write_reference
 
 mp.prec = 1300
@@ -89,19 +90,14 @@ def far_start(theta_text, second):
 
 def rotation_far(theta_text, omega_text, s):
     """theta and omega of the rotation at s small-amplitude periods T0 (s the double its text
-    rounds to), at 2600 bits; a backwards start is the mirror image of the forward motion."""
-    with mp.workprec(2600):
+    rounds to), at 3500 bits, by make_state_long_times.point (the amplitude am(r) by Newton
+    on F, not mpmath's ellipfun, which next to the top, dn ~ 1e-271, keeps too few digits);
+    a backwards start is the mirror image of the forward motion."""
+    with mp.workprec(3500):
         th, w = far_start(theta_text, omega_text)
         mirror = -1 if w < 0 else 1
-        th, w = mirror * th, mirror * w
-        energy = w ** 2 / 2 + 2 * mp.sin(th / 2) ** 2
-        m = 2 / energy
-        v = 2 * mp.pi * mp.mpf(float(s)) / mp.sqrt(m) + mp.ellipf(th / 2, m)
-        quarter = mp.ellipk(m)
-        j = mp.floor((v + quarter) / (2 * quarter))
-        r = v - 2 * quarter * j
-        theta = 2 * mp.pi * j + 2 * mp.atan2(mp.ellipfun("sn", r, m=m), mp.ellipfun("cn", r, m=m))
-        return mirror * theta, mirror * mp.sqrt(2 * energy) * mp.ellipfun("dn", r, m=m)
+        theta, omega = long_time_point(mirror * th, mirror * w, mp.mpf(float(s)))
+        return mirror * theta, mirror * omega
 
 
 # Starts only a precision past 2560 bits decides (start_energy.hpp: doubling up to 65536), the

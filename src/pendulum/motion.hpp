@@ -174,6 +174,17 @@ private:
     /// theta and theta'/w0 of the forward motion (omega >= 0 after mirroring) at w0 t.
     double forward_theta(double tau) const;
     double forward_velocity(double tau) const;
+    /// A rotation's place in its revolution at the double-double time tau + tau_lo: the whole
+    /// revolutions n taken off and u = tau/k - 2 n K in [-K, K] as a double-double.
+    struct rotation_place {
+        double n;     ///< whole revolutions
+        double r;     ///< u, rounded
+        double r_lo;  ///< u less r
+    };
+    /// The place of the time tau + tau_lo in a rotation's revolution.
+    rotation_place place_in_revolution(double tau, double tau_lo) const;
+    /// A rotation's theta of the forward motion at the double-double time tau + tau_lo.
+    double rotation_theta(double tau, double tau_lo) const;
     /// A rotation's theta'/w0 of the forward motion at the double-double time tau + tau_lo.
     double rotation_velocity(double tau, double tau_lo) const;
 

@@ -147,18 +147,28 @@ TEST(StatesExact, ExactSeparatrixInputsAreTheSeparatrix) {
 }
 
 TEST(StatesExact, TheRegimeNobodyCanDecideIsRefusedWithItsWord) {
-    // 1e-360 from the separatrix is decided at 1280 bits; 1e-500 is not (only 2560 bits see it),
-    // and the exact 2pi/3 is the separatrix.
+    // 1e-360 from the separatrix is decided at 1280 bits. 1e-500 and (pi-1e-300, 1e-300)
+    // (2 - E = -4e-1202) were refused when 2560 bits were the last; the precision is now
+    // doubled up to 65536 bits, which decides them (test_numbers_final.cpp checks periods of
+    // such starts against mpmath), and the second is refused for its k' = 1.4e-601, which no
+    // double holds. 1e-15000 only the ceiling sees: refused, naming the start.
     const auto near = run_cli("eval --theta0 '2pi/3+1e-360' --omega0 1");
     ASSERT_EQ(near.status, 0) << near.err;
     EXPECT_EQ(table(near.out).at(0).at("regime"), "rotation");
-    const auto undecided = run_cli("eval --theta0 pi-1e-300 --omega0 1e-300");  // 2 - E = -4e-1202
-    EXPECT_EQ(undecided.status, 2);
-    EXPECT_NE(undecided.err.find("cannot be decided"), std::string::npos) << undecided.err;
-    const auto far = run_cli("eval --theta0 '2pi/3+1e-500' --omega0 1");
+    const auto decided = run_cli("eval --theta0 pi-1e-300 --omega0 1e-290");  // 2 - E = -5e-581
+    ASSERT_EQ(decided.status, 0) << decided.err;
+    EXPECT_EQ(table(decided.out).at(0).at("regime"), "rotation");
+    // Decided, but k' = 1.4e-601 is no double: refused with the number a double cannot hold.
+    const auto unheld = run_cli("eval --theta0 pi-1e-300 --omega0 1e-300");  // 2 - E = -4e-1202
+    EXPECT_EQ(unheld.status, 2);
+    EXPECT_NE(unheld.err.find("2 k' = 2.8867513459481288e-601"), std::string::npos) << unheld.err;
+    const auto further = run_cli("eval --theta0 '2pi/3+1e-500' --omega0 1");
+    ASSERT_EQ(further.status, 0) << further.err;
+    EXPECT_EQ(table(further.out).at(0).at("regime"), "rotation");
+    const auto far = run_cli("eval --theta0 '2pi/3+1e-15000' --omega0 1");
     EXPECT_EQ(far.status, 2);
     EXPECT_NE(far.err.find("cannot be decided"), std::string::npos) << far.err;
-    EXPECT_NE(far.err.find("2pi/3+1e-500"), std::string::npos) << far.err;
+    EXPECT_NE(far.err.find("2pi/3+1e-15000"), std::string::npos) << far.err;
 }
 
 TEST(StatesExact, TinyEnergiesAndVelocitiesGiveNumbersOrAWord) {

@@ -123,7 +123,8 @@ const char* const start_help =
     "only as t -> infinity: no period), E > 2 a rotation over the top (its period is one revolution, T_rev). "
     "Angles, velocities and energies are taken as written (2pi/3, 2-1e-20, pi-1e-300): the energy and 2 - E come "
     "from those exact numbers, so 2pi/3 with omega0 = 1 is the separatrix and 2-1e-20 a libration; a start whose "
-    "2 - E vanishes at 1280 and 2560 bits is the separatrix, one that only 2560 bits can tell from it is refused. "
+    "2 - E vanishes at 32768 and 65536 bits (the precision is doubled from 128 up to 65536) is the separatrix, "
+    "one that only 65536 bits can tell from it is refused, and so is one within 2 k' < 2.2e-308 of the top. "
     "A state at rest at an angle in (0, pi] is that amplitude (pi itself is refused).";
 
 const char* const omega0_help =

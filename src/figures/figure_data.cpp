@@ -80,6 +80,23 @@ std::string json_string(std::string_view text) {
 
 std::string json_number(double v) { return std::isfinite(v) ? pendulum::format_double(v) : "null"; }
 
+int printed_digits(const panel_spec& p) {
+    if (!p.plot) return 0;
+    const std::string_view kind = p.plot->name;
+    const bool error_axis = (kind == "period" && (p.y == period_axis::error_percent || p.y == period_axis::error_log)) ||
+                            kind == "convergence";
+    if (!error_axis) return 0;
+    return static_cast<int>(std::floor(-std::log10(error_axis_relative) + 1e-9));
+}
+
+std::string format_digits(double v, int digits) {
+    if (digits <= 0 || !std::isfinite(v)) return pendulum::format_double(v);
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    // The rounded value's shortest round trip: no trailing zeros, no more digits than asked.
+    return pendulum::format_double(std::strtod(buf, nullptr));
+}
+
 std::string wide_column(const std::string& panel, const std::string& id, char axis) {
     std::string name = panel + "_" + id + "_" + axis;
     std::replace_if(name.begin(), name.end(), [](char c) { return c == ':' || c == '.' || c == '-'; }, '_');
@@ -204,6 +221,7 @@ figure_numbers numbers_of(const entry& e, const build_options& options, const pl
             series_numbers s = series_of_points(p.data[j], drawn[i][j].x, drawn[i][j].y, drawn[i][j].sampled);
             if (s.reference_line) within_limits(s, frames[i]);
             if (i < n.specs.size()) add_meaning(n.specs[i], s);
+            if (i < n.specs.size()) s.y_digits = printed_digits(n.specs[i]);
             pn.series.push_back(std::move(s));
         }
         n.panels.push_back(std::move(pn));
@@ -250,9 +268,9 @@ bool any_errors(const figure_numbers& n, const error_column& c) {
     return false;
 }
 
-/// The i-th value, or nan past the end.
-std::string cell(const std::vector<double>& v, std::size_t i) {
-    return i < v.size() ? pendulum::format_double(v[i]) : "nan";
+/// The i-th value with `digits` significant digits (format_digits), or nan past the end.
+std::string cell(const std::vector<double>& v, std::size_t i, int digits = 0) {
+    return i < v.size() ? format_digits(v[i], digits) : "nan";
 }
 
 std::string long_csv(const figure_numbers& n) {
@@ -269,7 +287,7 @@ std::string long_csv(const figure_numbers& n) {
             const std::string name = csv_field(s.label);
             for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
                 out << p.name << ',' << name << ',' << pendulum::format_double(s.x[i]) << ','
-                    << pendulum::format_double(s.y[i]) << ',' << csv_field(s.id);
+                    << format_digits(s.y[i], s.y_digits) << ',' << csv_field(s.id);
                 for (const auto* c : errors) out << ',' << cell(s.*c->values, i);
                 out << '\n';
             }
@@ -282,6 +300,7 @@ std::string long_csv(const figure_numbers& n) {
 struct column {
     std::string name;
     const std::vector<double>* values;
+    int digits = 0;  ///< significant digits (format_digits)
 };
 
 std::string wide_csv(const figure_numbers& n) {
@@ -289,7 +308,7 @@ std::string wide_csv(const figure_numbers& n) {
     for (const auto& p : n.panels) {
         for (const auto& s : p.series) {
             columns.push_back({wide_column(p.name, s.id, 'x'), &s.x});
-            columns.push_back({wide_column(p.name, s.id, 'y'), &s.y});
+            columns.push_back({wide_column(p.name, s.id, 'y'), &s.y, s.y_digits});
             for (const auto& c : error_columns) {
                 const auto& v = s.*c.values;
                 if (!v.empty()) columns.push_back({wide_column(p.name, s.id, c.suffix[0]) + std::string(c.suffix + 1), &v});
@@ -304,15 +323,17 @@ std::string wide_csv(const figure_numbers& n) {
     }
     out << '\n';
     for (std::size_t r = 0; r < rows; ++r) {
-        for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << cell(*columns[c].values, r);
+        for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << cell(*columns[c].values, r, columns[c].digits);
         out << '\n';
     }
     return out.str();
 }
 
-std::string json_array(const std::vector<double>& v) {
+std::string json_array(const std::vector<double>& v, int digits = 0) {
     std::string out = "[";
-    for (std::size_t i = 0; i < v.size(); ++i) out += (i ? "," : "") + json_number(v[i]);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        out += (i ? "," : "") + (std::isfinite(v[i]) ? format_digits(v[i], digits) : std::string("null"));
+    }
     return out + "]";
 }
 
@@ -335,7 +356,7 @@ std::string json_series(const panel_numbers& p, const series_numbers& s) {
     out += ",\"units\":{\"x\":" + json_string(p.x.unit) + ",\"y\":" + json_string(p.y.unit) + "}";
     out += ",\"columns\":{\"x\":" + json_string(wide_column(p.name, s.id, 'x')) + ",\"y\":" +
            json_string(wide_column(p.name, s.id, 'y')) + "}";
-    out += ",\"x\":" + json_array(s.x) + ",\"y\":" + json_array(s.y);
+    out += ",\"x\":" + json_array(s.x) + ",\"y\":" + json_array(s.y, s.y_digits);
     for (const auto& c : error_columns) {
         if (!(s.*c.values).empty()) out += ",\"" + std::string(c.suffix) + "\":" + json_array(s.*c.values);
     }

@@ -45,6 +45,7 @@ struct series_numbers {
     std::string method;                ///< the method's name ("order:6"), where the series is one
     std::optional<amplitude> theta0;   ///< its amplitude, where it has one
     std::optional<double> period;      ///< T/T0 of the method at theta0, where both are known
+    int y_digits = 0;                  ///< significant digits y is printed with (0: every digit of a double)
 };
 
 /// One axis of a panel, in words.
@@ -83,6 +84,20 @@ figure_numbers numbers_of(const entry& e, const build_options& options, const pl
 /// The numbers of a built figure without laying it out: every series' own points (a
 /// curve's markers, not its samples), for figures made in code.
 figure_numbers numbers_of(const plot::figure& f);
+
+/// How closely a value on an error axis is known: relative, as period_error's drawing
+/// precision promises (the period panels' relative error and |T_m/T - 1|, the convergence
+/// plot's |T_N/T - 1|).
+inline constexpr double error_axis_relative = 1e-12;
+
+/// The significant digits a value printed from panel spec p's y axis deserves: on an error
+/// axis those its relative error error_axis_relative leaves (12), elsewhere 0, every digit
+/// of a double (the shortest round trip). One rule for every error axis and every format.
+int printed_digits(const panel_spec& p);
+
+/// v with `digits` significant digits, written shortest ("0.0123", not "0.012300000000");
+/// every digit of a double (format_double) where digits is 0.
+std::string format_digits(double v, int digits);
 
 /// The numbers as CSV in the layout.
 std::string numbers_csv(const figure_numbers& n, data_layout layout);

@@ -217,7 +217,9 @@ written_number written_number::angle(std::string_view text) { return parse(text,
 written_number written_number::expression(std::string_view text) { return parse(text, false); }
 
 mp::real evaluate_written(const written_number& x, mpfr_prec_t bits) {
-    if (x.text().empty() || x.exact_double()) return real(x.value(), bits);
+    // exact_double() was checked at 2560 bits at most: past them the text itself is evaluated
+    // (2-1e-800 is 2 to 2560 bits, and a start's regime may need more; start_energy.hpp).
+    if (x.text().empty() || (x.exact_double() && bits <= 2 * working_bits)) return real(x.value(), bits);
     return reading(x.text(), x.angle_units()).at(bits);
 }
 

@@ -44,24 +44,37 @@ reduced_angle reduce(double theta) {
     return {turns, std::fma(-turns, two_pi_hi, theta) - turns * two_pi_lo};
 }
 
-/// am(r | k) for r in [-K, K], in [-pi/2, pi/2]: beyond K/2 through u = K - r, where
-/// sn(K - u) = cn(u)/dn(u) and cn(K - u) = k' sn(u)/dn(u) keep their digits next to k = 1.
-double am_reduced(double r, double quarter, double kp) {
-    const double sign = r < 0 ? -1.0 : 1.0;
-    r = std::fabs(r);
-    if (r <= 0.5 * quarter) {
-        const auto j = jacobi(r, kp);
-        return sign * std::atan2(j.sn, j.cn);
-    }
-    const auto j = jacobi(quarter - r, kp);
-    return sign * std::atan2(j.cn, kp * j.sn);
+/// A double-double: hi + lo with |lo| below half an ulp of hi (to rounding).
+struct double_double {
+    double hi;
+    double lo;
+};
+
+/// a + b exactly as a double-double (Knuth's two-sum).
+double_double two_sum(double a, double b) {
+    const double s = a + b;
+    const double v = s - a;
+    return {s, (a - (s - v)) + (b - v)};
 }
 
-/// dn(r | k) for r in [-K, K]: dn(K - u) = k'/dn(u) beyond K/2.
-double dn_reduced(double r, double quarter, double kp) {
-    r = std::fabs(r);
-    if (r <= 0.5 * quarter) return jacobi(r, kp).dn;
-    return kp / jacobi(quarter - r, kp).dn;
+/// x + y for double-doubles, to about 2^-104 of the larger.
+double_double add(double_double x, double_double y) {
+    const double_double s = two_sum(x.hi, y.hi);
+    return two_sum(s.hi, s.lo + x.lo + y.lo);
+}
+
+/// x / y for double-doubles, y > 0: the quotient's double and, by an exact fma, its remainder.
+double_double divide(double_double x, double_double y) {
+    const double q = x.hi / y.hi;
+    const double rest = std::fma(-q, y.hi, x.hi);
+    return two_sum(q, (rest + x.lo - q * y.lo) / y.hi);
+}
+
+/// dn(x | k) at the double-double x: dn at its double, less k^2 sn cn times its low part
+/// (dn' = -k^2 sn cn).
+double dn_at(double_double x, double kp) {
+    const auto j = jacobi(x.hi, kp);
+    return j.dn - (1.0 - kp) * (1.0 + kp) * j.sn * j.cn * x.lo;
 }
 
 }  // namespace
@@ -226,7 +239,11 @@ void motion::prepare(const start_numbers& n, double half_speed) {
         offset_ = std::asinh(std::tan(0.5 * angle));
         return;
     }
-    quarter_ = 0.5 * pi / agm(1.0, kp_);
+    quarter_ = n.quarter;
+    quarter_lo_ = n.quarter_lo;
+    half_turn_ = n.half_turn;
+    half_turn_lo_ = n.half_turn_lo;
+    k_lo_ = n.k_lo;
     // theta = 2 am(tau / k): tau = k F(theta/2 | k), with theta/2 in (-pi/2, pi/2].
     const double half = 0.5 * angle;
     const double f = elliptic_f(std::fabs(std::sin(half)), std::cos(half), kp_);
@@ -311,13 +328,7 @@ double motion::forward_theta(double tau) const {
     switch (kind_) {
     case regime::libration: return libration_->theta(tau);
     case regime::separatrix: return 2.0 * std::atan(std::sinh(tau));
-    case regime::rotation: {
-        // One revolution takes 2 k K; within it, u = tau/k in [-K, K] and theta = 2 am(u).
-        const double revolution = 2.0 * k_ * quarter_;
-        const double n = std::nearbyint(tau / revolution);
-        const double r = (tau - n * revolution) / k_;
-        return n * 2.0 * pi + 2.0 * am_reduced(r, quarter_, kp_);
-    }
+    case regime::rotation: return rotation_theta(tau, 0.0);  // one revolution takes 2 k K
     }
     return 0.0;
 }
@@ -326,13 +337,48 @@ double motion::forward_velocity(double tau) const {
     switch (kind_) {
     case regime::libration: return pendulum::velocity_at_fraction(*libration_, tau / (4.0 * quarter_));
     case regime::separatrix: return 2.0 / std::cosh(tau);
-    case regime::rotation: {
-        const double revolution = 2.0 * k_ * quarter_;
-        const double r = (tau - std::nearbyint(tau / revolution) * revolution) / k_;
-        return 2.0 / k_ * dn_reduced(r, quarter_, kp_);
-    }
+    case regime::rotation: return rotation_velocity(tau, 0.0);
     }
     return 0.0;
+}
+
+motion::rotation_place motion::place_in_revolution(double tau, double tau_lo) const {
+    // u = tau / k less the nearest whole revolutions 2 K, every step a double-double: next to
+    // the top theta and omega go as K - |r|, whose absolute digits are their relative ones.
+    const double n = std::nearbyint(tau / (2.0 * half_turn_));
+    const double whole = -2.0 * n * half_turn_;  // rounded; the fma below keeps what it lost
+    const double_double turns{whole, std::fma(-2.0 * n, half_turn_, -whole) - 2.0 * n * half_turn_lo_};
+    const double_double rest = add(two_sum(tau, tau_lo), turns);
+    const double_double r = divide(rest, {k_, k_lo_});
+    return {n, r.hi, r.lo};
+}
+
+double motion::rotation_theta(double tau, double tau_lo) const {
+    // theta = 2 am(r): am(|r|) within K/2 of the bottom, am(K - u) = atan2(cn(u), k' sn(u))
+    // beyond, each corrected by its derivative (dn) times the low part of its argument.
+    const rotation_place p = place_in_revolution(tau, tau_lo);
+    const double sign = p.r < 0 ? -1.0 : 1.0;
+    const double_double r{std::fabs(p.r), sign * p.r_lo};
+    double am = 0;
+    if (r.hi <= 0.5 * quarter_) {
+        const auto j = jacobi(r.hi, kp_);
+        am = std::atan2(j.sn, j.cn) + j.dn * r.lo;
+    } else {
+        const double_double u = add({quarter_, quarter_lo_}, {-r.hi, -r.lo});
+        const auto j = jacobi(u.hi, kp_);
+        am = std::atan2(j.cn, kp_ * j.sn) - kp_ / j.dn * u.lo;
+    }
+    return p.n * 2.0 * pi + 2.0 * sign * am;
+}
+
+double motion::rotation_velocity(double tau, double tau_lo) const {
+    // dn(u) = dn(|r|) within K/2 of the bottom and k'/dn(K - |r|) beyond: next to the top
+    // omega is k'/dn(K - |r|), whose relative digits are the absolute digits of K - |r|.
+    const rotation_place p = place_in_revolution(tau, tau_lo);
+    const double_double r = p.r < 0 ? double_double{-p.r, -p.r_lo} : double_double{p.r, p.r_lo};
+    if (r.hi <= 0.5 * quarter_) return 2.0 / k_ * dn_at(r, kp_);
+    const double_double u = add({quarter_, quarter_lo_}, {-r.hi, -r.lo});
+    return 2.0 / k_ * (kp_ / dn_at(u, kp_));
 }
 
 namespace {
@@ -372,13 +418,23 @@ double motion::theta(double w0_t) const {
     if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
     // At the start the angle is what was given, not its round trip through the time offset.
     if (w0_t == 0) return start_.theta;
+    if (kind_ == regime::rotation) {
+        const double_double tau = two_sum(w0_t, offset_);
+        return mirror_ * (turns_ * two_pi_hi + rotation_theta(tau.hi, tau.lo) + turns_ * two_pi_lo);
+    }
     return mirror_ * (turns_ * two_pi_hi + forward_theta(w0_t + offset_) + turns_ * two_pi_lo);
 }
 
-double motion::velocity(double w0_t) const {
+double motion::velocity(double w0_t) const { return velocity(w0_t, 0.0); }
+
+double motion::velocity(double w0_t, double low) const {
     if (!std::isfinite(w0_t)) throw domain_error("time must be finite, got " + format_double(w0_t));
-    if (w0_t == 0) return start_.omega;
-    return mirror_ * forward_velocity(w0_t + offset_);
+    if (w0_t == 0 && low == 0) return start_.omega;
+    if (kind_ == regime::rotation) {
+        const double_double tau = add(two_sum(w0_t, offset_), {low, 0.0});
+        return mirror_ * rotation_velocity(tau.hi, tau.lo);
+    }
+    return mirror_ * forward_velocity(w0_t + offset_) + acceleration(w0_t) * low;
 }
 
 }  // namespace pendulum

@@ -52,6 +52,11 @@ struct start_numbers {
     double half_speed = 0;            ///< sqrt(E/2): |omega|/2 at the bottom
     double speed = 0;                 ///< sqrt(2 E): |omega| at the bottom
     long cancelled = 0;               ///< bits the gap lost to cancellation of its terms
+    double quarter = 0;               ///< a rotation's K(k), rounded once (0 for the others)
+    double quarter_lo = 0;            ///< K(k) less that double
+    double half_turn = 0;             ///< a rotation's half revolution k K(k) in w0 t, rounded once
+    double half_turn_lo = 0;          ///< k K(k) less that double
+    double k_lo = 0;                  ///< a rotation's k less its double k
     std::string energy_unheld;        ///< E in decimal where a double holds it to fewer digits, or not at all
 };
 
@@ -145,6 +150,11 @@ public:
     double theta(double w0_t) const;
     /// theta'/w0 at time w0 t.
     double velocity(double w0_t) const;
+    /// theta'/w0 at the time w0 t + low, a double-double (|low| below half an ulp of w0 t):
+    /// a rotation forms its place in the revolution and K - r next to the top as double-doubles,
+    /// so that omega keeps its relative digits where it is e-189 (the time's every ulp moves it
+    /// by 1e-16 of K there); the others correct velocity(w0_t) by acceleration() times low.
+    double velocity(double w0_t, double low) const;
     /// theta''/w0^2 = -sin(theta) at time w0 t, from the Jacobi functions for a rotation and the
     /// separatrix, so that it keeps its relative digits next to the top.
     double acceleration(double w0_t) const;
@@ -164,6 +174,19 @@ private:
     /// theta and theta'/w0 of the forward motion (omega >= 0 after mirroring) at w0 t.
     double forward_theta(double tau) const;
     double forward_velocity(double tau) const;
+    /// A rotation's place in its revolution at the double-double time tau + tau_lo: the whole
+    /// revolutions n taken off and u = tau/k - 2 n K in [-K, K] as a double-double.
+    struct rotation_place {
+        double n;     ///< whole revolutions
+        double r;     ///< u, rounded
+        double r_lo;  ///< u less r
+    };
+    /// The place of the time tau + tau_lo in a rotation's revolution.
+    rotation_place place_in_revolution(double tau, double tau_lo) const;
+    /// A rotation's theta of the forward motion at the double-double time tau + tau_lo.
+    double rotation_theta(double tau, double tau_lo) const;
+    /// A rotation's theta'/w0 of the forward motion at the double-double time tau + tau_lo.
+    double rotation_velocity(double tau, double tau_lo) const;
 
     regime kind_ = regime::libration;
     origin origin_ = origin::state;
@@ -173,6 +196,10 @@ private:
     double k_ = 0;
     double kp_ = 0;
     double quarter_ = 0;  ///< K(k)
+    double quarter_lo_ = 0;    ///< a rotation's K(k) less quarter_
+    double half_turn_ = 0;     ///< a rotation's k K(k), rounded once
+    double half_turn_lo_ = 0;  ///< k K(k) less half_turn_
+    double k_lo_ = 0;          ///< a rotation's k less k_
     double mirror_ = 1;   ///< -1 where the start moves backwards: theta = -forward(-start)
     double turns_ = 0;    ///< the multiple of 2 pi nearest the mirrored start angle
     double start_angle_ = 0;  ///< the start angle less libration_center(), to rounding

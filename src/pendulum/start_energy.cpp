@@ -73,37 +73,77 @@ start_energy written_energy_at(const written_number& energy, mpfr_prec_t bits) {
     return {e, gap, regime_of(gap), cancelled_bits(two, e, gap)};
 }
 
+namespace {
+
+/// The message for a start no precision up to the ceiling decides: its energy 0 to every bit
+/// (or an angle whose place in the turn needs more bits than the ceiling), or its gap 2 - E.
+[[noreturn]] void refuse_undecided(const start_energy& coarse, const start_energy& fine, bool gap_decided,
+                                   mpfr_prec_t bits, const std::string& what) {
+    const std::string fine_bits = std::to_string(bits);
+    const std::string coarse_bits = std::to_string(bits / 2);
+    if (gap_decided) {
+        throw domain_error(what + ": its energy is " + decimal(fine.energy) + " at " + fine_bits + " bits and " +
+                           decimal(coarse.energy) + " at " + coarse_bits +
+                           ": E = 0 (at rest at the bottom) to the precision of its terms, or an angle whose place in the turn needs more than " +
+                           std::to_string(start_ceiling_bits) + " bits; give a start whose energy is not 0 (an angle "
+                           "within a few turns of 0, or omega0 not 0)");
+    }
+    throw domain_error(what + ": its energy is 2 within " + std::to_string(fine.cancelled) +
+                       " bits of its terms (2 - E = " + decimal(fine.gap) + " at " + fine_bits +
+                       " bits, another number at " + coarse_bits +
+                       "): the regime (libration, separatrix or rotation) cannot be decided from the numbers as "
+                       "written within " + std::to_string(start_ceiling_bits) +
+                       " bits; give a start further from the separatrix E = 2");
+}
+
+/// A decided libration or rotation whose motion doubles hold: a distance from the separatrix
+/// 2 k' (the libration's pi - theta0, to O(k'^3)) of at least the smallest normal double, as an
+/// amplitude's distance from pi must be, and a libration's amplitude 2 atan2(k, k') not 0 as a
+/// double; otherwise throws domain_error naming the start and the number a double cannot hold.
+start_energy held(start_energy e, const std::string& what) {
+    const mpfr_prec_t bits = e.gap.precision();
+    const real two_kp = e.kind == regime::libration ? 2.0 * mp::sqrt(e.gap / 2.0) : 2.0 * mp::sqrt(-e.gap / e.energy);
+    if (two_kp < DBL_MIN) {
+        throw domain_error(what + ": 2 - E = " + decimal(e.gap) + ", so close to the separatrix that 2 k' = " +
+                           decimal(two_kp) + " (the " + std::string(e.kind == regime::libration ? "amplitude's " : "") +
+                           "distance from the top) is below the smallest normal double, 2.2250738585072014e-308, as "
+                           "an amplitude's distance from pi may not be: a double cannot hold the motion; give a start "
+                           "further from the separatrix E = 2");
+    }
+    if (e.kind == regime::libration) {
+        real amplitude(bits);
+        const real k = mp::sqrt(e.energy / 2.0);
+        mpfr_atan2(amplitude.get(), k.get(), mp::sqrt(e.gap / 2.0).get(), MPFR_RNDN);
+        if ((2.0 * amplitude).to_double() == 0) {
+            throw domain_error(what + ": its amplitude is " + decimal(2.0 * amplitude) +
+                               ", below the smallest double, 4.9406564584124654e-324: a double cannot hold it "
+                               "(E = " + decimal(e.energy) + "); give a start with a larger energy");
+        }
+    }
+    return e;
+}
+
+}  // namespace
+
 start_energy decide_start(const std::function<start_energy(mpfr_prec_t)>& at, const std::string& what) {
-    constexpr mpfr_prec_t last = 1280;
-    for (const mpfr_prec_t bits : {mpfr_prec_t{192}, last}) {
-        start_energy coarse = at(bits);
-        start_energy fine = at(2 * bits);
-        const bool zero = vanishes(coarse) && vanishes(fine);
+    start_energy coarse = at(start_first_bits);
+    for (mpfr_prec_t bits = 2 * start_first_bits; bits <= start_ceiling_bits; bits *= 2) {
+        start_energy fine = at(bits);
         const bool gap_decided = !vanishes(coarse) && !vanishes(fine) && agree(coarse.gap, fine.gap);
         // The energy too must agree: an angle far out (1e307pi) loses its place in the turn to
         // the precision, and a state at rest at a multiple of 2 pi has E = 0 to every bit.
-        if (gap_decided && agree(coarse.energy, fine.energy)) return fine;
-        if (bits == last && gap_decided) {
-            throw domain_error(what + ": its energy is " + decimal(fine.energy) + " at 2560 bits and " +
-                               decimal(coarse.energy) + " at 1280: E = 0 (at rest at the bottom) to the precision "
-                               "of its terms, or an angle too far out for its place in the turn to be known; give "
-                               "a start whose energy is not 0 (an angle within a few turns of 0, or omega0 not 0)");
-        }
-        if (bits == last && zero) {
-            // E = 2 to 2552 bits of its terms: the numbers as written are on the separatrix.
-            fine.energy = real(2.0, 2 * bits);
-            fine.gap = real(0.0, 2 * bits);
+        if (gap_decided && agree(coarse.energy, fine.energy)) return held(std::move(fine), what);
+        if (bits == start_ceiling_bits) {
+            if (!vanishes(coarse) || !vanishes(fine)) refuse_undecided(coarse, fine, gap_decided, bits, what);
+            // E = 2 to the ceiling's bits of its terms: the numbers as written are on the separatrix.
+            fine.energy = real(2.0, bits);
+            fine.gap = real(0.0, bits);
             fine.kind = regime::separatrix;
             return fine;
         }
-        if (bits == last) {
-            throw domain_error(what + ": its energy is 2 within " + std::to_string(fine.cancelled) +
-                               " bits of its terms (2 - E = " + decimal(fine.gap) +
-                               " at 2560 bits, another number at 1280): the regime (libration, separatrix or rotation) "
-                               "cannot be decided from the numbers as written; give a start further from the separatrix E = 2");
-        }
+        coarse = std::move(fine);
     }
-    throw domain_error("unreachable");  // the loop returns or throws at the last precision
+    throw domain_error("unreachable");  // the loop returns or throws at the ceiling
 }
 
 start_numbers numbers_of(const start_energy& e) {
@@ -126,8 +166,17 @@ start_numbers numbers_of(const start_energy& e) {
         n.k = k.to_double();
         n.kp = kp.to_double();
     } else if (e.kind == regime::rotation) {
-        n.k = mp::sqrt(2.0 / e.energy).to_double();
-        n.kp = mp::sqrt(-e.gap / e.energy).to_double();
+        const real k = mp::sqrt(2.0 / e.energy);
+        const real kp = mp::sqrt(-e.gap / e.energy);
+        const real quarter = mp::pi(k.precision()) / (2.0 * mp::agm(real(1.0, k.precision()), kp));
+        const real half_turn = k * quarter;
+        n.k = k.to_double();
+        n.kp = kp.to_double();
+        n.k_lo = (k - n.k).to_double();
+        n.quarter = quarter.to_double();
+        n.quarter_lo = (quarter - n.quarter).to_double();
+        n.half_turn = half_turn.to_double();
+        n.half_turn_lo = (half_turn - n.half_turn).to_double();
     } else {
         n.k = 1.0;
         n.kp = 0.0;

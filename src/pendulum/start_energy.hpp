@@ -28,10 +28,21 @@ start_energy state_energy_at(const written_number& theta, const written_number& 
 /// The energy E as written, at `bits`.
 start_energy written_energy_at(const written_number& energy, mpfr_prec_t bits);
 
-/// Decides the regime of a start: the gap at a precision and at twice it, first 192 bits, then
-/// 1280: decided where both round to the same double; the separatrix where both vanish to
-/// their precision (2 - E below 2^-1272 of its terms at 1280 bits and 2^-2552 at 2560 bits, as
-/// for 2pi/3 with 1); otherwise throws domain_error: the inputs cannot decide.
+/// The first precision decide_start() tries, in bits.
+inline constexpr mpfr_prec_t start_first_bits = 128;
+/// The last: 2^16 bits (19,728 decimal digits), 2^9 times the first.
+inline constexpr mpfr_prec_t start_ceiling_bits = 65536;
+
+/// Decides the regime of a start: the gap at a precision and at twice it, from
+/// start_first_bits doubling up to start_ceiling_bits: decided at the first pair where both
+/// agree to 64 bits (as does the energy); the separatrix where both vanish to their precision
+/// at the ceiling (2 - E below 2^-32760 of its terms at 32768 bits and 2^-65528 at 65536, as
+/// for 2pi/3 with 1); otherwise throws domain_error naming the ceiling: the inputs cannot
+/// decide (a gap only the ceiling sees), or the energy is 0 to every bit (an angle whose
+/// place in the turn needs more bits than the ceiling, or at rest at a multiple of 2 pi). A
+/// decided libration or rotation that doubles cannot hold is refused too: 2 k' (its distance
+/// from the top) below 2.2250738585072014e-308, as an amplitude's distance from pi may not be,
+/// or a libration's amplitude that rounds to 0.
 start_energy decide_start(const std::function<start_energy(mpfr_prec_t)>& at, const std::string& what);
 
 /// The doubles of a decided start, each rounded once from the exact energy and gap.

@@ -168,13 +168,12 @@ double time_reducer::low() const { return state_->low; }
 motion_point point_at(const motion& m, const time_reducer& reduce, double s) {
     const double t = reduce(s);
     const double low = reduce.low();
-    // theta(t + low) = theta(t) + theta'(t) low + O(low^2), low below half an ulp of t, and
-    // omega the same with theta'' (from the Jacobi functions, which keep their relative digits
-    // next to the top): at (1e-300, 2) 1e15 T0 on, omega 6.4e-143 is off by |low| relatively
-    // without it (2.8e-14 at most, 1.8e-14 there).
+    // theta(t + low) = theta(t) + theta'(t) low + O(low^2), low below half an ulp of t; omega
+    // at the double-double t + low (motion::velocity): at (1e-300, 2) 1e12 T0 on, omega
+    // 6e-189 is k'/dn(K - r), and K - r in doubles was 1e-13 of itself off (1553 ulps).
     const double omega = m.velocity(t);
     const double theta = m.theta(t);
-    motion_point p{theta + omega * low, omega + m.acceleration(t) * low};
+    motion_point p{theta + omega * low, m.velocity(t, low)};
     if (m.kind() == regime::rotation) p.theta = reduce.plus_turns(p.theta, m.start().omega < 0 ? -1 : 1);
     return p;
 }

@@ -13,10 +13,12 @@ motion is at (2 pi n - r, -omega_s) exactly. 400 bits (times up to 1e15 periods)
 
 Writes numbers_edges.csv: kind, the command's arguments, then theta and omega (30 digits) for
 kind 'motion', or E (30 digits) for kind 'energy' (a state at rest or an energy a double does not
-hold to every digit), or kind 'far' with theta and omega of a rotation far out."""
+hold to every digit), kind 'far' with theta and omega of a rotation far out, or kind 'period' with T/T0 (T_rev/T0) and
+the regime of a start only a precision past 2560 bits decides."""
 
 from mpmath import mp
 
+from make_state_long_times import point as long_time_point
 from reference_csv import write_reference
 
 mp.prec = 1300
@@ -68,26 +70,67 @@ def libration(theta_s, omega_s, energy, s):
 
 
 # Rotations next to the separatrix far out (t/T0), the state's numbers as written (the decimal
-# 1e-300, not its double: 2.5e-17 apart, which moves omega here by 2.3e-4 of itself).
-FAR = [("--theta0 1e-300 --omega0 2", "1e-300", "2", ["441", "1e12", "1e15"])]
+# 1e-300, not its double: 2.5e-17 apart, which moves omega here by 2.3e-4 of itself); an
+# energy as written launched from the bottom; a backwards start (the mirror image). Times on
+# both sides of K/2 from the bottom, where omega is k'/dn(K - r) and K - r must be held beyond
+# a double, up to the largest double.
+FAR_TIMES = ["1e12", "3e12", "1e13", "3e13", "1e14", "1e16", "1e100", "1.7976931348623157e308"]
+FAR = [("--theta0 1e-300 --omega0 2", "1e-300", "2", ["441", "1e12", "1e15"] + FAR_TIMES[1:]),
+       ("--energy 2+1e-300", None, "2+1e-300", FAR_TIMES),
+       ("--theta0 -1e-300 --omega0 -2", "-1e-300", "-2", ["1e12", "3e13"])]
+
+
+def far_start(theta_text, second):
+    """(theta, omega) of a far row's start as written, at the working precision."""
+    if theta_text is None:
+        energy = mp.mpf(2) + mp.mpf(second[2:])
+        return mp.mpf(0), mp.sqrt(2 * energy)
+    return mp.mpf(theta_text), mp.mpf(second)
 
 
 def rotation_far(theta_text, omega_text, s):
-    """theta and omega of the forward rotation at s small-amplitude periods T0, at 2600 bits."""
-    with mp.workprec(2600):
-        th, w = mp.mpf(theta_text), mp.mpf(omega_text)
-        energy = w ** 2 / 2 + 2 * mp.sin(th / 2) ** 2
-        m = 2 / energy
-        v = 2 * mp.pi * mp.mpf(s) / mp.sqrt(m) + mp.ellipf(th / 2, m)
-        quarter = mp.ellipk(m)
-        j = mp.floor((v + quarter) / (2 * quarter))
-        r = v - 2 * quarter * j
-        theta = 2 * mp.pi * j + 2 * mp.atan2(mp.ellipfun("sn", r, m=m), mp.ellipfun("cn", r, m=m))
-        return theta, mp.sqrt(2 * energy) * mp.ellipfun("dn", r, m=m)
+    """theta and omega of the rotation at s small-amplitude periods T0 (s the double its text
+    rounds to), at 3500 bits, by make_state_long_times.point (the amplitude am(r) by Newton
+    on F, not mpmath's ellipfun, which next to the top, dn ~ 1e-271, keeps too few digits);
+    a backwards start is the mirror image of the forward motion."""
+    with mp.workprec(3500):
+        th, w = far_start(theta_text, omega_text)
+        mirror = -1 if w < 0 else 1
+        theta, omega = long_time_point(mirror * th, mirror * w, mp.mpf(float(s)))
+        return mirror * theta, mirror * omega
+
+
+# Starts only a precision past 2560 bits decides (start_energy.hpp: doubling up to 65536), the
+# last two at the smallest distance from the separatrix a double holds (2 k' >= 2.2e-308):
+# (arguments, theta or None for an energy, omega or energy, the bits mpmath needs).
+PERIODS = [
+    ("eval --theta0 2pi/3+1e-500 --omega0 1", "2*pi/3+mpf('1e-500')", "1", 4000),
+    ("eval --theta0 pi-1e-300 --omega0 1e-290", "pi-mpf('1e-300')", "1e-290", 4000),
+    ("eval --energy 2-1e-600", None, "2-mpf('1e-600')", 4000),
+    ("eval --energy 2-2.4755e-616", None, "2-mpf('2.4755e-616')", 4000),
+    ("eval --energy 2+2.4755e-616", None, "2+mpf('2.4755e-616')", 4000),
+]
+
+
+def period_ratio(theta_text, second, bits):
+    """T/T0 of a libration or T_rev/T0 of a rotation from a start as written, at `bits`."""
+    with mp.workprec(bits):
+        names = {"pi": mp.pi, "mpf": mp.mpf}
+        if theta_text is None:
+            energy = eval(second, names)  # the script's own rows only
+        else:
+            th, w = eval(theta_text, names), mp.mpf(second)
+            energy = w ** 2 / 2 + 2 * mp.sin(th / 2) ** 2
+        if energy < 2:
+            return "libration", 1 / mp.agm(1, mp.sqrt((2 - energy) / 2))
+        return "rotation", mp.sqrt(2 / energy) / (2 * mp.agm(1, mp.sqrt((energy - 2) / energy)))
 
 
 def main():
     rows = []
+    for args, theta_text, second, bits in PERIODS:
+        kind, ratio = period_ratio(theta_text, second, bits)
+        rows.append(["period", args, mp.nstr(ratio, 30), kind])
     for args, theta_text, second in STATES:
         theta_s, omega_s, energy = start_of(theta_text, second)
         assert energy < 2, args

@@ -318,7 +318,9 @@ TEST(TypesetFinal, TheSeparatrixContrastsWithTheBackgroundInEveryTheme) {
                 EXPECT_FALSE(a.r == b.r && a.g == b.g && a.b == b.b) << t.name << " " << o.label.markup;
                 // In the paper theme (black orbits) distinct in greyscale too. The slides
                 // palettes hold greys as light as it (their orbits are told apart by colour).
-                if (std::string(t.name) == "paper") EXPECT_GE(contrast(a, b), 3.0) << o.label.markup;
+                if (std::string(t.name) == "paper") {
+                    EXPECT_GE(contrast(a, b), 3.0) << o.label.markup;
+                }
             }
         }
         EXPECT_EQ(separatrix, 1) << t.name;  // its upper half carries the label

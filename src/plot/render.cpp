@@ -908,22 +908,14 @@ bool legend_fits_inside(cairo_t* cr, const figure_layout& f, std::size_t i, doub
     return d.legend.entries.empty() || legend_inside(p, d.legend, g, f.deciding).has_value();
 }
 
-/// The least share of its cell's height a panel keeps under a legend band above it, where
-/// the cells beside it leave the band room: a drawing of the pendulum under the five entries
-/// of two starts' legend stays a drawing.
-constexpr double least_panel_share = 0.6;
-
-/// The cell a band above panel i spans: its own; or, where the band over its own cell would
-/// leave it less than least_panel_share of the cell's height, also the cells to its right in
-/// its row up to the first panel with a legend of its own (their row moves down by the band
-/// anyway), so that the band takes fewer lines. Decided at the deciding sizes, as
-/// band_spans_axes is.
+/// The cell a band above panel i spans: its own and the cells to its right in its row up to
+/// the first panel with a legend of its own (their row moves down by the band anyway), so
+/// that the band takes fewer lines and every panel of the row keeps more of its height (a
+/// drawing of the pendulum under the five entries of two starts' legend stays a drawing).
+/// Decided at the deciding sizes, as band_spans_axes is.
 rect band_cell(const figure_layout& f, std::size_t i) {
     const figure& fig = *f.fig;
     rect cell = f.cells[i];
-    const panel_plan& d = f.decided[i];
-    const double h = legend_band_rect(d.legend, f.deciding, d, cell, 0, band_spans_axes(d, f.deciding, cell)).h;
-    if (cell.h - h >= least_panel_share * cell.h) return cell;
     const auto cols = static_cast<std::size_t>(fig.cols);
     const std::size_t row_end = std::min(fig.panels.size(), (i / cols + 1) * cols);
     for (std::size_t k = i + 1; k < row_end && f.plans[k].legend.entries.empty(); ++k) {

@@ -5,6 +5,7 @@
 #include "figures/catalog.hpp"
 #include "figures/describe.hpp"
 #include "figures/spec.hpp"
+#include "figures/spec_build.hpp"
 #include "figures/themes.hpp"
 #include "plot/errors.hpp"
 #include "plot/frames.hpp"
@@ -268,4 +269,23 @@ TEST(TeachingFinal, DrawingKeepsItsShareOfThePanel) {
             }
         }
     }
+}
+
+// A drawing of one start names it in its title, as a trajectory panel does, so that drawings
+// side by side (plot --apart) say which is which; a drawing of several starts names them in
+// its legend and keeps its letter alone; a title the spec gives wins.
+TEST(TeachingFinal, ADrawingOfOneStartNamesIt) {
+    const auto spec = figures::parse_spec("[[panel]]\nplot = \"pendulum\"\ntheta0 = \"10deg\"\nmethods = [\"exact\"]\n"
+                                          "[[panel]]\nplot = \"pendulum\"\ntheta0 = \"170deg\"\nmethods = [\"exact\"]\n"
+                                          "[[panel]]\nplot = \"pendulum\"\ntheta0 = [\"10deg\", \"170deg\"]\n"
+                                          "methods = [\"exact\"]\n"
+                                          "[[panel]]\nplot = \"pendulum\"\ntheta0 = \"20deg\"\nmethods = [\"exact\"]\n"
+                                          "title = \"mine\"\n",
+                                          "apart.toml");
+    const plot::figure fig = figures::build_figure(spec, {});
+    ASSERT_EQ(fig.panels.size(), 4u);
+    EXPECT_EQ(fig.panels[0].label.markup, "(a) <i>\u03d1</i><sub>0</sub> = 10\u00b0");
+    EXPECT_EQ(fig.panels[1].label.markup, "(b) <i>\u03d1</i><sub>0</sub> = 170\u00b0");
+    EXPECT_EQ(fig.panels[2].label.markup, "(c)");
+    EXPECT_EQ(fig.panels[3].label.markup, "mine");
 }

@@ -168,8 +168,11 @@ plot::panel pendulum_panel(const panel_context& c, const panel_spec& p) {
     path.width_scale = 0.6;
     path.id = "path";
     panel.data.push_back(std::move(path));
-    // The turning points of each libration, dotted (a rotation and the separatrix have none).
+    // A drawing of one start names it, as a trajectory panel does ("(a) theta0 = 10 deg"):
+    // drawings side by side (--apart) say which is which.
     const auto starts = starts_of(p);
+    if (starts.size() == 1) panel.label = starts.front().label;
+    // The turning points of each libration, dotted (a rotation and the separatrix have none).
     for (std::size_t i = 0; i < starts.size(); ++i) {
         const auto& m = starts[i].motion;
         if (m.kind() != pendulum::regime::libration) continue;

@@ -208,7 +208,8 @@ void label_panel(plot::panel& panel, const panel_spec& p, std::size_t i, std::si
     const std::string letter = count > 1 ? panel_letter(i) : "";
     if (p.title) {
         panel.label = plot::tex_label(*p.title);
-    } else if (p.plot->amplitudes == amplitude_policy::one_per_panel) {
+    } else if (p.plot->amplitudes == amplitude_policy::one_per_panel || !panel.label.empty()) {
+        // A panel that names its one start (a trajectory's amplitude, a drawing's start).
         if (!letter.empty()) panel.label = plot::join(plot::label(letter + " "), panel.label);
     } else {
         panel.label = letter;

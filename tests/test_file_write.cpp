@@ -135,18 +135,10 @@ TEST(FileWrite, LongNamesAndLeftovers) {
     // A temporary that a killed run left long ago while writing f.svg goes when f.svg is
     // written again; a fresh one (another run's), one of another file, and a user's file
     // that merely looks like one stay.
-    const auto fnv1a = [](const std::string& name) {
-        std::uint64_t h = 0xcbf29ce484222325ULL;
-        for (const char c : name) {
-            h ^= static_cast<unsigned char>(c);
-            h *= 0x100000001b3ULL;
-        }
-        char hex[17];
-        std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-        return std::string(hex);
-    };
-    const std::string ours = ".pendulum-figures-" + fnv1a("f.svg") + "-";
-    const std::string other = ".pendulum-figures-" + fnv1a("g.svg") + "-";
+    // Their names: ".pendulum-figures-", the 64-bit FNV-1a of the target's name in hex
+    // (python: h = 0xcbf29ce484222325; for each byte h = ((h ^ byte) * 0x100000001b3) mod 2^64), "-".
+    const std::string ours = ".pendulum-figures-b2664dce40f08f91-";   // f.svg
+    const std::string other = ".pendulum-figures-638fe4b0d39ceec6-";  // g.svg
     const auto old = fs::file_time_type::clock::now() - std::chrono::hours(2);
     for (const std::string& name : {ours + "AbC123", ours + "XyZ789", other + "AbC123", std::string(".pf-notes1"),
                                    std::string(".pf-AbC123"), ours + "AbC12"}) {

@@ -85,7 +85,7 @@ _pendulum_figures() {
         show) options="--theme --help --help-all" ;;
         render) options="--all -o --output-dir -f --formats --theme --set --dpi --size --theta0 --frames --at --force --tex-font-size --tex-sizes --paper-files --depfile --depfile-target --jobs --check --help --help-all" ;;
         plot) options="--theta0 --energy --omega0 --methods --range --time --harmonic --harmonics --orders --y --x --angle-unit --separatrix --trail --energy-bars --arrows --timer --apart --fps --periods --duration --speed --clock --loop --y-range --x-label --y-label --panel-title --title --legend --size --name -o --output-dir -f --formats --theme --set --dpi --jobs --data --length --g --help --help-all" ;;
-        data) options="-o --output --theta0 -f --format --layout --help --help-all" ;;
+        data) options="-o --output --theta0 -f --format --layout --jobs --help --help-all" ;;
         describe) options="--alt --help --help-all" ;;
     esac
     if [[ $cur == -* ]]; then

@@ -343,14 +343,22 @@ TEST(AttackLists, DataFilesThatLeadOutOrBlock) {
 }
 
 TEST(AttackOutputs, ReadOnlyDirectoryAndNamesOutsideIt) {
-    if (::geteuid() == 0) GTEST_SKIP() << "root writes into a read-only directory";
     const auto dir = temp_dir("attack-readonly");
     fs::create_directories(dir / "ro");
-    fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec);
-    const auto r = run_cli(trajectory + "-f svg -o ro", dir);
+    // Read and enter for everyone, write for no one. Root writes anywhere: as root, the
+    // program runs as nobody (setpriv), for whom the directory is read-only too.
+    fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                             fs::perms::others_read | fs::perms::others_exec);
+    fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                    fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    const std::string as = ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
+    const auto r = test_support::run_command("cd '" + dir.string() + "' && " + as + "'" + std::string(PENDULUM_EXE) +
+                                             "' " + trajectory + "-f svg -o ro");
     EXPECT_EQ(r.status, 2) << r.err;
     EXPECT_NE(r.err.find("is not writable"), std::string::npos) << r.err;
+    EXPECT_TRUE(files_in(dir / "ro").empty());
     fs::permissions(dir / "ro", fs::perms::owner_all);
+    fs::remove_all(dir);
 }
 
 TEST(AttackOutputs, DepfileNamesThatMakeOrAShellWouldRun) {

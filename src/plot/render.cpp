@@ -476,6 +476,18 @@ std::vector<keep_out> drawn_markers(const theme& th, const panel& p, const space
     return discs;
 }
 
+/// The ink of a series' error bars, each bar and its two caps, as segments tick marks stop short of.
+void add_bar_ink(std::vector<ink_segment>& out, const theme& th, const series& s, const device_series& d) {
+    const double r = 0.5 * line_width(th, th.line_width_pt * s.width_scale);
+    const double c = cap_half_width(th, s);
+    for (const device_bar& b : d.bars) {
+        out.push_back({b.x0, b.y0, b.x1, b.y1, r});
+        for (const auto& [x, y] : {std::pair{b.x0, b.y0}, std::pair{b.x1, b.y1}}) {
+            out.push_back({b.vertical ? x - c : x, b.vertical ? y : y - c, b.vertical ? x + c : x, b.vertical ? y : y + c, r});
+        }
+    }
+}
+
 /// The ink that stays put which tick marks stop short of: drawn_markers, and the lines and
 /// error bars draw_series strokes, where they pass near the frame.
 tick_clearance tick_ink(const theme& th, const panel& p, const panel_geometry& g, const spaced_series& spaced) {
@@ -492,15 +504,7 @@ tick_clearance tick_ink(const theme& th, const panel& p, const panel_geometry& g
             add_ink_near_frame(ink.segments, d.x, d.y,
                                0.5 * line_width(th, crowded_width * th.line_width_pt * s.width_scale), g.area, band);
         }
-        const double r = 0.5 * line_width(th, th.line_width_pt * s.width_scale);
-        const double c = cap_half_width(th, s);
-        for (const device_bar& b : d.bars) {
-            ink.segments.push_back({b.x0, b.y0, b.x1, b.y1, r});
-            for (const auto& [x, y] : {std::pair{b.x0, b.y0}, std::pair{b.x1, b.y1}}) {
-                ink.segments.push_back({b.vertical ? x - c : x, b.vertical ? y : y - c, b.vertical ? x + c : x,
-                                        b.vertical ? y : y + c, r});
-            }
-        }
+        add_bar_ink(ink.segments, th, s, d);
     }
     return ink;
 }

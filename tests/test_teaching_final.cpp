@@ -10,6 +10,7 @@
 #include "plot/errors.hpp"
 #include "plot/frames.hpp"
 #include "plot/render.hpp"
+#include "animation_builtins.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
@@ -27,22 +28,6 @@
 namespace {
 
 using namespace test_support;
-
-/// The built-in animations.
-std::vector<const figures::entry*> builtin_animations() {
-    std::vector<const figures::entry*> out;
-    for (const auto& e : figures::catalog()) {
-        if (e.spec.animation) out.push_back(&e);
-    }
-    return out;
-}
-
-/// The build options of an animation drawn in `theme`.
-figures::build_options animated_options(const plot::theme& theme) {
-    figures::build_options o = figures::sized_by({}, theme);
-    o.animated = true;
-    return o;
-}
 
 /// Frames worth checking: the first, one a third in, the last, and (under a cross-fade) the
 /// first blended one.

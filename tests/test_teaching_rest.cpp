@@ -10,6 +10,7 @@
 #include "figures/themes.hpp"
 #include "plot/frames.hpp"
 #include "plot/render.hpp"
+#include "animation_builtins.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
@@ -34,22 +35,6 @@ figures::entry entry_of(const std::string& toml, const std::string& id = "teachi
     e.source = toml;
     e.spec = figures::parse_spec(toml, id + ".toml");
     return e;
-}
-
-/// The built-in animations.
-std::vector<const figures::entry*> builtin_animations() {
-    std::vector<const figures::entry*> out;
-    for (const auto& e : figures::catalog()) {
-        if (e.spec.animation) out.push_back(&e);
-    }
-    return out;
-}
-
-/// The build options of an animation drawn in `theme`.
-figures::build_options animated_options(const plot::theme& theme) {
-    figures::build_options o = figures::sized_by({}, theme);
-    o.animated = true;
-    return o;
 }
 
 /// What a legend entry looks like: line, marker and colour.

@@ -4,6 +4,7 @@
 #include "pendulum/expression_parser.hpp"
 
 #include "common/suggest.hpp"
+#include "common/terminal_text.hpp"
 #include "pendulum/angle.hpp"
 #include "pendulum/expression_lexer.hpp"
 
@@ -15,38 +16,12 @@
 
 namespace pendulum::grammar {
 
-namespace {
-
-/// The length of the UTF-8 sequence a lead byte starts, or 0 for a byte no sequence starts with.
-std::size_t sequence_length(unsigned char u) {
-    if (u < 0x80) return 1;
-    if (u >= 0xc2 && u <= 0xdf) return 2;
-    if (u >= 0xe0 && u <= 0xef) return 3;
-    if (u >= 0xf0 && u <= 0xf4) return 4;
-    return 0;
-}
-
-/// True where the sequence of `length` bytes at i is well formed: continuation bytes, and
-/// no overlong form, surrogate or code point beyond U+10FFFF.
-bool well_formed(std::string_view text, std::size_t i, std::size_t length) {
-    if (length == 0 || i + length > text.size()) return false;
-    for (std::size_t k = 1; k < length; ++k) {
-        if ((static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80) return false;
-    }
-    if (length == 1) return true;
-    const auto u = static_cast<unsigned char>(text[i]);
-    const auto second = static_cast<unsigned char>(text[i + 1]);
-    return !((u == 0xe0 && second < 0xa0) || (u == 0xed && second >= 0xa0) || (u == 0xf0 && second < 0x90) ||
-             (u == 0xf4 && second >= 0x90));
-}
-
-}  // namespace
-
 std::size_t invalid_utf8(std::string_view text) {
     std::size_t i = 0;
     while (i < text.size()) {
-        const std::size_t length = sequence_length(static_cast<unsigned char>(text[i]));
-        if (!well_formed(text, i, length)) return i;
+        char32_t cp = 0;
+        const std::size_t length = common::utf8_sequence(text.substr(i), cp);
+        if (length == 0) return i;
         i += length;
     }
     return i;

@@ -8,6 +8,7 @@
 #include "pendulum/mp_real.hpp"
 #include "pendulum/written_mp.hpp"
 #include "plot/output.hpp"
+#include "grammar_errors.hpp"
 #include "process.hpp"
 
 #include <gtest/gtest.h>
@@ -25,25 +26,8 @@
 
 namespace {
 
-/// The message an angle's text is refused with, or "accepted".
-std::string angle_error(const std::string& text) {
-    try {
-        (void)pendulum::parse_angle(text);
-    } catch (const pendulum::domain_error& e) {
-        return e.what();
-    }
-    return "accepted";
-}
-
-/// The message a formula's text is refused with, or "accepted".
-std::string formula_error(const std::string& text) {
-    try {
-        const pendulum::formula f(text);
-    } catch (const pendulum::domain_error& e) {
-        return e.what();
-    }
-    return "accepted";
-}
+using test_support::angle_error;
+using test_support::formula_error;
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

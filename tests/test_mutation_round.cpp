@@ -15,6 +15,7 @@
 #include "plot/preflight.hpp"
 #include "plot/strokes.hpp"
 #include "plot/text.hpp"
+#include "grammar_errors.hpp"
 #include "process.hpp"
 #include "reference_rows.hpp"
 
@@ -41,25 +42,8 @@ using test_support::temp_dir;
 
 namespace {
 
-/// The message a formula's text is refused with, or "accepted".
-std::string formula_error(const std::string& text) {
-    try {
-        const pendulum::formula f(text);
-    } catch (const pendulum::domain_error& e) {
-        return e.what();
-    }
-    return "accepted";
-}
-
-/// The message an angle's text is refused with, or "accepted".
-std::string angle_error(const std::string& text) {
-    try {
-        (void)pendulum::parse_angle(text);
-    } catch (const pendulum::domain_error& e) {
-        return e.what();
-    }
-    return "accepted";
-}
+using test_support::angle_error;
+using test_support::formula_error;
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

@@ -78,7 +78,7 @@ _pendulum_figures() {
     esac
     local options=""
     case $command in
-        eval) options="--theta0 --omega0 --energy --order --method --length --g --format --columns --help --help-all" ;;
+        eval) options="--theta0 --omega0 --energy --order --method --length --g --format --columns --jobs --help --help-all" ;;
         trajectory) options="--theta0 --omega0 --energy --time --length --g --method --order --at --samples --periods --format --help --help-all" ;;
         claims) options="--format --help --help-all" ;;
         list) options="--markdown --help --help-all" ;;

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -154,6 +155,88 @@ TEST(Limits, DataTakesJobsWithinTheWorkersLimit) {
         EXPECT_EQ(r.status, 2) << bad;
         EXPECT_NE(r.err.find(std::string("--jobs ") + bad + ": the number of workers, 1 to 1024"), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(out)) << bad;
+    }
+    fs::remove_all(dir);
+}
+
+namespace {
+
+/// A list of `count` amplitudes, one a line: plain decimals and expressions (pi-0.1-Ne-9), every
+/// 2000th close enough to pi that the iteration has no period at order 6 (a warning on
+/// standard error), and `bad` (index, text) put in place of the value there.
+fs::path amplitude_list(const fs::path& dir, std::size_t count, const std::vector<std::pair<std::size_t, std::string>>& bad) {
+    const fs::path file = dir / ("amplitudes-" + std::to_string(count) + "-" + std::to_string(bad.size()) + ".txt");
+    std::ofstream out(file);
+    for (std::size_t i = 0; i < count; ++i) {
+        std::string item = i % 2000 == 1999 ? "pi-1e-6"
+                           : i % 7 == 3     ? "pi-0.1-" + std::to_string(i) + "e-9"
+                                            : std::to_string(0.01 + 3.09 * static_cast<double>(i % 997) / 997.0);
+        for (const auto& [at, text] : bad) {
+            if (at == i) item = text;
+        }
+        out << item << '\n';
+    }
+    return file;
+}
+
+}  // namespace
+
+// eval takes --jobs as data and render do: amplitudes are parsed and their rows computed on
+// every worker, a block at a time, and written in order. Across several blocks (40000
+// amplitudes: 3 blocks of parsing, 10 of rows; 4500 with the iteration to order 6, 2 blocks
+// of rows), 1, 2 and 1024 workers write the same table and the same warnings after the same
+// rows; 0 and 1025 are refused with the limit named.
+TEST(Limits, EvalTakesJobsAndWritesInOrder) {
+    const fs::path dir = temp_dir("eval-jobs");
+    const std::string exe = "'" + std::string(PENDULUM_EXE) + "'";
+    const fs::path list = amplitude_list(dir, 40000, {});
+    const auto one = test_support::run_command(exe + " eval --theta0 @'" + list.string() + "' --jobs 1");
+    ASSERT_EQ(one.status, 0) << one.err;
+    EXPECT_EQ(std::count(one.out.begin(), one.out.end(), '\n'), 40001);
+    const fs::path short_list = amplitude_list(dir, 4500, {});
+    const std::string warned = " eval --theta0 @'" + short_list.string() + "' --order 6 --columns theta0 2>&1";
+    const auto one_warned = test_support::run_command(exe + warned + " --jobs 1");
+    ASSERT_EQ(one_warned.status, 0) << one_warned.out.substr(0, 400);
+    EXPECT_EQ(std::count(one_warned.out.begin(), one_warned.out.end(), '\n'), 4501 + 2);  // header, rows, 2 warnings
+    // Each warning follows the row of its amplitude (the 2000th, 4000th, ... value).
+    const auto warning = one_warned.out.find("warning: theta0 = pi - 1e-06");
+    ASSERT_NE(warning, std::string::npos);
+    EXPECT_EQ(std::count(one_warned.out.begin(), one_warned.out.begin() + static_cast<std::ptrdiff_t>(warning), '\n'), 2001);
+    for (const char* jobs : {"2", "1024"}) {
+        const auto many = test_support::run_command(exe + " eval --theta0 @'" + list.string() + "' --jobs " + jobs);
+        EXPECT_EQ(many.status, 0) << jobs;
+        EXPECT_TRUE(many.out == one.out) << "--jobs " << jobs << " differs from --jobs 1";
+        const auto many_warned = test_support::run_command(exe + warned + " --jobs " + jobs);
+        EXPECT_TRUE(many_warned.out == one_warned.out) << "--jobs " << jobs << " differs from --jobs 1 (with warnings)";
+    }
+    for (const char* bad : {"0", "1025"}) {
+        const auto r = run_cli(std::string("eval --theta0 1 --jobs ") + bad);
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_EQ(r.out, "") << bad;
+        EXPECT_NE(r.err.find(std::string("--jobs ") + bad + ": the number of workers, 1 to 1024"), std::string::npos) << r.err;
+    }
+    fs::remove_all(dir);
+}
+
+// The first bad amplitude in the list is the one refused, whichever worker parses it and in
+// whichever block it falls, and nothing is written: bad values in the second block of
+// parsing (from the 16385th) and later, on 1 and 2 workers.
+TEST(Limits, EvalRefusesTheFirstBadAmplitudeOnAnyWorker) {
+    const fs::path dir = temp_dir("eval-first-bad");
+    const fs::path list = amplitude_list(dir, 40000, {{20001, "4"}, {20002, "x"}, {39999, "0"}});
+    for (const char* jobs : {"1", "2"}) {
+        const auto r = run_cli("eval --theta0 @'" + list.string() + "' --jobs " + jobs);
+        EXPECT_EQ(r.status, 2) << jobs;
+        EXPECT_EQ(r.out, "") << jobs;
+        EXPECT_NE(r.err.find("--theta0 '4'"), std::string::npos) << r.err;
+        EXPECT_EQ(r.err.find("'x'"), std::string::npos) << r.err;
+    }
+    // The first block's last item and the second block's first, each alone.
+    for (const std::size_t at : {std::size_t{16383}, std::size_t{16384}}) {
+        const fs::path one_bad = amplitude_list(dir, 20000, {{at, "nope"}});
+        const auto r = run_cli("eval --theta0 @'" + one_bad.string() + "' --jobs 2");
+        EXPECT_EQ(r.status, 2) << at;
+        EXPECT_NE(r.err.find("--theta0 'nope'"), std::string::npos) << r.err;
     }
     fs::remove_all(dir);
 }

@@ -9,6 +9,7 @@
 #include "pendulum/formula.hpp"
 #include "pendulum/methods.hpp"
 #include "pendulum/seconds.hpp"
+#include "plot/workers.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -47,6 +48,7 @@ struct eval_options {
     std::optional<double> length;  // metres: adds the period in seconds
     double g = 9.80665;
     std::string columns;            // only these columns (fixed ones and T_s); empty: every fixed column
+    std::optional<int> jobs;        // worker threads, as render takes them
 };
 
 /// The name of the column of the period in seconds (--length).
@@ -307,6 +309,26 @@ std::vector<field> amplitude_row(const amplitude& value, const amplitude_table& 
     return fields;
 }
 
+/// Rows computed at a time, on every worker, before they are written in order: a block's
+/// fields take about 0.5 MB, and a warning still follows its row.
+constexpr std::size_t rows_per_block = 4096;
+/// Rows one worker takes at a time from a block.
+constexpr std::size_t rows_per_task = 128;
+
+/// The rows of amplitudes [first, first + n), computed on every worker; each row's levels
+/// without a period go to its own `broken`.
+void amplitude_block(const std::vector<amplitude>& amplitudes, std::size_t first, std::size_t n,
+                     const amplitude_table& t, const std::vector<int>& orders, long double small_period_s,
+                     std::vector<std::vector<field>>& rows, std::vector<std::vector<int>>& broken) {
+    rows.assign(n, {});
+    broken.assign(n, {});
+    plot::parallel_for((n + rows_per_task - 1) / rows_per_task, [&](std::size_t task) {
+        for (std::size_t i = task * rows_per_task; i < std::min(n, (task + 1) * rows_per_task); ++i) {
+            rows[i] = amplitude_row(amplitudes[first + i], t, orders, small_period_s, broken[i]);
+        }
+    });
+}
+
 void eval_stream(std::ostream& out, const eval_options& o) {
     const auto format = parse_table_format(o.format);
     const std::vector<int> orders = parse_orders(list_items(o.orders));
@@ -319,12 +341,16 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     // The iteration is computed once per amplitude, to the highest level asked for, and
     // every --order and --method order:N column is read off that one sequence.
     table_writer writer(out, t.columns, format);
-    std::vector<int> broken;
-    for (const auto& value : amplitudes) {
-        writer.record(amplitude_row(value, t, orders, small_period_s, broken));
-        if (!broken.empty()) {
+    std::vector<std::vector<field>> rows;
+    std::vector<std::vector<int>> broken;
+    for (std::size_t first = 0; first < amplitudes.size(); first += rows_per_block) {
+        const std::size_t n = std::min(rows_per_block, amplitudes.size() - first);
+        amplitude_block(amplitudes, first, n, t, orders, small_period_s, rows, broken);
+        for (std::size_t i = 0; i < n; ++i) {
+            writer.record(rows[i]);
+            if (broken[i].empty()) continue;
             writer.flush();  // the warning follows its row
-            warn_breakdown(value, broken);
+            warn_breakdown(amplitudes[first + i], broken[i]);
         }
     }
     writer.finish();
@@ -368,6 +394,7 @@ command add_eval_command(CLI::App& app) {
                      "columns follow them, then err:METHOD columns (T_m/T - 1 of any method of 'list', right to "
                      "1e-12: err:lowest, err:order:6; below_limit under 1e-300, not_computed where it could not be resolved, empty where the method has no period)")
         ->type_name("LIST")->check(non_empty);
+    cmd->add_option("--jobs", ev->jobs, jobs_help)->type_name("N");
     cmd->footer(std::string("\n") + angle_help + "\n\n" + omega0_help + "\n\nColumns: " + cli::eval_columns_help() +
                  "; then period_orderN for each --order N, period_NAME for each --method NAME, and T_s with "
                  "--length. Periods are T/T0. Numbers round-trip a double.\n\n"
@@ -390,6 +417,8 @@ command add_eval_command(CLI::App& app) {
                  "  pendulum-figures eval --theta0 170deg --length 0.5 --columns period_exact,T_s");
 
     return {cmd, [ev] {
+                // Amplitudes are read and their rows computed on every worker, and written in order.
+                plot::set_thread_limit(chosen_jobs(ev->jobs));
                 eval_stream(std::cout, *ev);
                 return write_stdout("");
             }};

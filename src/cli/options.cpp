@@ -3,10 +3,12 @@
 
 #include "figures/themes.hpp"
 #include "plot/tex_markup.hpp"
+#include "plot/workers.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <functional>
 #include <utility>
@@ -50,9 +52,55 @@ unsigned chosen_jobs(const std::optional<int>& given) {
     return check(n, what);
 }
 
+pendulum::amplitude amplitude_item(const std::string& item) {
+    try {
+        return pendulum::parse_amplitude(item);
+    } catch (const std::invalid_argument& e) {
+        const std::string shown =
+            shown_text(item.size() <= 80 ? item : item.substr(0, 40) + "..." + item.substr(item.size() - 20));
+        throw usage_error("--theta0 '" + shown + "': " + e.what());
+    }
+}
+
+namespace {
+
+/// Items read before they are parsed together: 16384 strings, about 0.5 MB.
+constexpr std::size_t items_per_block = std::size_t{1} << 14;
+/// Items one worker parses at a time.
+constexpr std::size_t items_per_task = 256;
+
+/// Parses `items` on every worker and appends their amplitudes to `values` in order; the
+/// first bad item's error is thrown, whichever worker met it.
+void parse_items(const std::vector<std::string>& items, std::vector<pendulum::amplitude>& values) {
+    std::vector<std::optional<pendulum::amplitude>> parsed(items.size());
+    std::vector<std::exception_ptr> errors(items.size());
+    plot::parallel_for((items.size() + items_per_task - 1) / items_per_task, [&](std::size_t task) {
+        for (std::size_t i = task * items_per_task; i < std::min(items.size(), (task + 1) * items_per_task); ++i) {
+            try {
+                parsed[i] = amplitude_item(items[i]);
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+        }
+    });
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (errors[i]) std::rethrow_exception(errors[i]);
+        values.push_back(*parsed[i]);
+    }
+}
+
+}  // namespace
+
 std::vector<pendulum::amplitude> parse_amplitude_values(const std::string& given) {
     std::vector<pendulum::amplitude> values;
-    for_each_amplitude(given, [&](const std::string&, const pendulum::amplitude& v) { values.push_back(v); });
+    std::vector<std::string> items;
+    for_each_item(given, "--theta0", [&](const std::string& item) {
+        items.push_back(item);
+        if (items.size() < items_per_block) return;
+        parse_items(items, values);
+        items.clear();
+    });
+    parse_items(items, values);
     return values;
 }
 

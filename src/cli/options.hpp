@@ -100,23 +100,17 @@ void for_each_item(const std::string& text, const std::string& option, Take take
     if (!any) throw usage_error(option + " " + text + ": no values");
 }
 
+/// One --theta0 item's amplitude; bad input (usage_error) names the item.
+pendulum::amplitude amplitude_item(const std::string& item);
+
 /// One --theta0 item, checked; take(text, value) receives it.
 template <class Take>
 void for_each_amplitude(const std::string& given, Take take) {
-    for_each_item(given, "--theta0", [&](const std::string& item) {
-        std::optional<pendulum::amplitude> v;
-        try {
-            v = pendulum::parse_amplitude(item);
-        } catch (const std::invalid_argument& e) {
-            const std::string shown =
-                shown_text(item.size() <= 80 ? item : item.substr(0, 40) + "..." + item.substr(item.size() - 20));
-            throw usage_error("--theta0 '" + shown + "': " + e.what());
-        }
-        take(item, *v);
-    });
+    for_each_item(given, "--theta0", [&](const std::string& item) { take(item, amplitude_item(item)); });
 }
 
-/// The values of --theta0, checked (a million of them take 8 MB).
+/// The values of --theta0, checked (a million of them take 8 MB), read in order and parsed
+/// on every worker (plot::parallel_for); a bad one is refused as the first in the list.
 std::vector<pendulum::amplitude> parse_amplitude_values(const std::string& given);
 
 /// Amplitudes as typed and their values; figure titles show them as typed. More than

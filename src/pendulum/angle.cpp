@@ -259,9 +259,14 @@ amplitude parse_amplitude(std::string_view text, std::string_view name) {
             throw domain_error(std::string(name) + " must be at least 2.2250738585072014e-308 below pi, got pi - " +
                                format_double(d));
         }
-        // k = sin(theta0/2), k' = sin(d/2): each from the exact value, rounded once.
-        const real k = mp::sin(fine / 2.0);
-        const real kp = mp::sin(d_fine / 2.0);
+        // k = sin(theta0/2), k' = sin(d/2), each from the exact value, rounded once: the sine
+        // of the smaller half-angle (at most pi/4), and the other as sqrt(1 - s^2), where s^2
+        // is at most 1/2 and nothing cancels (one sine instead of two, the costlier one left).
+        const bool closer_to_pi = d_fine < fine;
+        const real s = mp::sin((closer_to_pi ? d_fine : fine) / 2.0);
+        const real c = mp::sqrt(1.0 - s * s);
+        const real& k = closer_to_pi ? c : s;
+        const real& kp = closer_to_pi ? s : c;
         return amplitude::from_parts(theta0, d, k.to_double(), kp.to_double());
     }
     throw domain_error("unreachable");  // the loop returns or throws at the working precision

@@ -265,6 +265,8 @@ void write_video_animation(const animation_frames& frames, const theme& th, cons
     while (workers > 1 && video_memory(kind, width, height, settings, workers) > raster_budget_bytes) --workers;
     write_atomically_by(dir / name, [&](const std::filesystem::path& file) {
         video_encoder video(file, name, kind, width, height, frames.fps);
+        // Frames are the still with what moves over it: only what moved is converted.
+        video.keep_against(still_image);
         in_order<video_frame>(
             frames.first, frames.last, workers,
             [&](int i) {

@@ -152,7 +152,7 @@ double video_memory(const video_kind& kind, int width, int height, video_setting
     (void)kind;
     const double pixels = static_cast<double>(width) * height;
     const double held = settings.lookahead + settings.threads + encoder_frames_held;
-    const double ours = pixels * (4.0 * (workers + 1) + 1.5 * 2 * workers);
+    const double ours = pixels * (4.0 * (workers + 1) + 1.5 * (2 * workers + 1));
     return pixels * encoder_bytes_per_pixel * held + ours;
 }
 
@@ -202,6 +202,10 @@ video_encoder::video_encoder(const std::filesystem::path& path, const std::strin
 video_encoder::~video_encoder() = default;
 
 video_frame video_encoder::convert(const argb_image& image) const { return sink_->convert(image); }
+
+void video_encoder::keep_against(const argb_image& still) { sink_->keep_against(still); }
+
+std::uint64_t video_encoder::pixels_converted() const { return sink_->pixels_converted(); }
 
 void video_encoder::add(video_frame frame) { sink_->add(std::move(frame)); }
 

@@ -8,6 +8,7 @@
 
 #include <sys/stat.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -28,13 +29,13 @@ struct video_kind {
 
 /// MP4 holding H.264 (High profile, yuv420p, constant quality), its index first
 /// (faststart): PowerPoint, Keynote, Google Slides and every browser play it. x264's
-/// superfast preset (no look-ahead, no macroblock tree), one B-frame, two sliced threads: a
-/// 30-s 1080p clip of two pendulums in 0.78 of the CPU time and 150 MB where veryfast with
-/// tune=animation, a look-ahead of 5 and three B-frames took 212 MB; its frames against
-/// that encoder's: SSIM 0.9996, PSNR 53 dB. Accepted: SSIM >= 0.98 against the drawn frames
-/// (tests/test_video_speed.cpp; the swing measures 0.991 in slides).
+/// ultrafast preset with CABAC and the 8x8 transform back (High profile), no B-frames, no
+/// look-ahead, two sliced threads: on frames of still figures with a few moving parts it
+/// took 0.66 of superfast's CPU time (one B-frame) for 1.6 times the bytes (a 30-s 1080p
+/// clip of two pendulums: about 5 MB) and less memory. Accepted: SSIM >= 0.98 against the
+/// drawn frames (tests/test_video_speed.cpp); README's video section has the measures.
 inline constexpr video_kind mp4_video{"mp4", "libx264",
-                                      "preset=superfast:crf=23:profile=high:x264-params=sliced-threads=1:bf=1",
+                                      "preset=ultrafast:crf=23:profile=high:coder=cabac:8x8dct=1:x264-params=sliced-threads=1",
                                       "rc-lookahead", 0, "movflags=+faststart", 2};
 /// WebM holding VP9 (yuv420p, constant quality): browsers and Google Slides play it.
 inline constexpr video_kind webm_video{"webm", "libvpx-vp9",
@@ -56,7 +57,7 @@ video_settings video_settings_for(const video_kind& kind, int width, int height)
 /// The memory of writing a video of width x height with `settings`, `workers` drawing
 /// frames: the encoder's frames (bytes a pixel per frame held, measured with
 /// /usr/bin/time -v at 1080p and 4K) and ours in flight (a drawing per worker, two
-/// converted frames per worker, the still drawing).
+/// converted frames per worker, the still drawing and its conversion).
 double video_memory(const video_kind& kind, int width, int height, video_settings settings, unsigned workers);
 
 /// Throws plot::bad_input, before any work, if a video of width x height cannot be written
@@ -95,6 +96,15 @@ public:
 
     /// Converts a frame drawn by render_argb for the encoder; callable from several threads.
     video_frame convert(const argb_image& image) const;
+
+    /// Frames converted afterwards are drawn over `still` (of the frames' size, kept by
+    /// reference: it must outlive the encoder): only the pixels that differ from it are
+    /// converted, the rest copied from its conversion, done once here. The same bytes as
+    /// without. Call before the first frame, once.
+    void keep_against(const argb_image& still);
+
+    /// Pixels converted so far, the copied ones not counted.
+    std::uint64_t pixels_converted() const;
 
     /// Encodes the next frame.
     void add(video_frame frame);

@@ -14,12 +14,15 @@ extern "C" {
 #include <libavutil/rational.h>
 }
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdarg>
 #include <cstdint>
 #include <cstring>
 #include <mutex>
 #include <new>
+#include <string>
 #include <stdexcept>
 #include <vector>
 
@@ -148,19 +151,92 @@ void chroma_row(const std::uint32_t* __restrict row0, const std::uint32_t* __res
     }
 }
 
+/// Converts the rows y and y + 1, columns [x0, x1) (even), of pixels (Cairo's xRGB words,
+/// `stride` bytes a row) into the planes of a yuv420p frame.
+void convert_rows(const unsigned char* pixels, int stride, int y, int x0, int x1, AVFrame* frame) {
+    const auto* row0 = reinterpret_cast<const std::uint32_t*>(pixels + static_cast<std::size_t>(y) * stride) + x0;
+    const auto* row1 = reinterpret_cast<const std::uint32_t*>(pixels + static_cast<std::size_t>(y + 1) * stride) + x0;
+    std::uint8_t* luma = frame->data[0] + static_cast<std::size_t>(y) * frame->linesize[0] + x0;
+    luma_row(row0, luma, x1 - x0);
+    luma_row(row1, luma + frame->linesize[0], x1 - x0);
+    const std::size_t chroma = static_cast<std::size_t>(y / 2);
+    chroma_row(row0, row1, frame->data[1] + chroma * frame->linesize[1] + x0 / 2,
+               frame->data[2] + chroma * frame->linesize[2] + x0 / 2, (x1 - x0) / 2);
+}
+
+/// Copies the rows y and y + 1, columns [x0, x1) (even), of a yuv420p frame into another.
+void copy_rows(const AVFrame* from, int y, int x0, int x1, AVFrame* to) {
+    if (x1 <= x0) return;
+    for (int k = 0; k < 2; ++k) {
+        std::memcpy(to->data[0] + static_cast<std::size_t>(y + k) * to->linesize[0] + x0,
+                    from->data[0] + static_cast<std::size_t>(y + k) * from->linesize[0] + x0,
+                    static_cast<std::size_t>(x1 - x0));
+    }
+    const std::size_t chroma = static_cast<std::size_t>(y / 2);
+    for (int plane = 1; plane <= 2; ++plane) {
+        std::memcpy(to->data[plane] + chroma * to->linesize[plane] + x0 / 2,
+                    from->data[plane] + chroma * from->linesize[plane] + x0 / 2,
+                    static_cast<std::size_t>(x1 - x0) / 2);
+    }
+}
+
 /// Pixels of even width and height (Cairo's xRGB words, `stride` bytes a row) into the
 /// planes of a yuv420p frame: integer arithmetic, so the same bytes on every CPU. libswscale
 /// gives those only on its bit-exact path, which took 2.5 times as long.
 void to_yuv420p(const unsigned char* pixels, int stride, int width, int height, AVFrame* frame) {
-    for (int y = 0; y < height; y += 2) {
-        const auto* row0 = reinterpret_cast<const std::uint32_t*>(pixels + static_cast<std::size_t>(y) * stride);
-        const auto* row1 = reinterpret_cast<const std::uint32_t*>(pixels + static_cast<std::size_t>(y + 1) * stride);
-        std::uint8_t* luma = frame->data[0] + static_cast<std::size_t>(y) * frame->linesize[0];
-        luma_row(row0, luma, width);
-        luma_row(row1, luma + frame->linesize[0], width);
-        chroma_row(row0, row1, frame->data[1] + static_cast<std::size_t>(y / 2) * frame->linesize[1],
-                   frame->data[2] + static_cast<std::size_t>(y / 2) * frame->linesize[2], width / 2);
+    for (int y = 0; y < height; y += 2) convert_rows(pixels, stride, y, 0, width, frame);
+}
+
+/// A picture in Cairo's xRGB words: its first byte and its bytes a row.
+struct xrgb_view {
+    const unsigned char* pixels = nullptr;
+    int stride = 0;
+    /// The first byte of row y.
+    const unsigned char* row(int y) const { return pixels + static_cast<std::size_t>(y) * stride; }
+};
+
+/// Pixels compared with the still at a time: a frame's moving parts are converted in blocks of
+/// this many columns (even) of a pair of rows.
+constexpr int compared_block = 64;
+
+/// Whether the rows y and y + 1, columns [x0, x1), of `frame` are those of `still`.
+bool same_block(xrgb_view frame, xrgb_view still, int y, int x0, int x1) {
+    const std::size_t offset = 4 * static_cast<std::size_t>(x0);
+    const std::size_t bytes = 4 * static_cast<std::size_t>(x1 - x0);
+    return std::memcmp(frame.row(y) + offset, still.row(y) + offset, bytes) == 0 &&
+           std::memcmp(frame.row(y + 1) + offset, still.row(y + 1) + offset, bytes) == 0;
+}
+
+/// The rows y and y + 1 of a frame drawn over `still` (converted as `still_frame`) into
+/// `frame`: each block the same as the still's copied, each other converted. Returns the
+/// pixels converted.
+std::uint64_t convert_pair_over(xrgb_view pixels, xrgb_view still, const AVFrame* still_frame, int y, int width,
+                                AVFrame* frame) {
+    if (same_block(pixels, still, y, 0, width)) {
+        copy_rows(still_frame, y, 0, width, frame);
+        return 0;
     }
+    std::uint64_t converted = 0;
+    for (int x0 = 0; x0 < width; x0 += compared_block) {
+        const int x1 = std::min(width, x0 + compared_block);
+        if (same_block(pixels, still, y, x0, x1)) {
+            copy_rows(still_frame, y, x0, x1, frame);
+        } else {
+            convert_rows(pixels.pixels, pixels.stride, y, x0, x1, frame);
+            converted += 2 * static_cast<std::uint64_t>(x1 - x0);
+        }
+    }
+    return converted;
+}
+
+/// As to_yuv420p, for a frame drawn over `still`, whose conversion is `still_frame`: only the
+/// columns of each pair of rows that differ from the still are converted, the rest copied
+/// (the same bytes as converting all). Returns the pixels converted.
+std::uint64_t to_yuv420p_over(xrgb_view pixels, xrgb_view still, const AVFrame* still_frame, int width, int height,
+                              AVFrame* frame) {
+    std::uint64_t converted = 0;
+    for (int y = 0; y < height; y += 2) converted += convert_pair_over(pixels, still, still_frame, y, width, frame);
+    return converted;
 }
 
 struct state {
@@ -175,6 +251,12 @@ struct state {
     packet_ptr packet;
     std::int64_t next_pts = 0;
     bool finished = false;
+    // The still every frame is drawn over (keep_against), its even-sided copy if the frames
+    // are padded, and its conversion; pixels == nullptr without one.
+    xrgb_view still;
+    std::vector<unsigned char> still_padded;
+    std::unique_ptr<av_pixels> still_frame;
+    std::atomic<std::uint64_t> converted{0};  // pixels converted, not copied from the still
     // Converted frames the encoder has taken (it copies them), kept for the next ones: as
     // many as are ever in flight. Freed and allocated afresh, each frame is mapped and
     // unmapped, or glibc keeps freed ones in each thread's arena (21 MB more at 1080p).
@@ -199,6 +281,26 @@ struct state {
         f->height = coded_height;
         check(av_frame_get_buffer(f, 0), shown, "cannot hold a frame");
         return frame;
+    }
+
+    /// The pixels of `image` with even sides (padded: an odd side gets a copy of its last row
+    /// or column, in `padded`); throws std::logic_error if it is not of the frames' size.
+    xrgb_view coded_pixels(const argb_image& image, std::vector<unsigned char>& padded) const {
+        if (image.width != width || image.height != height) {
+            throw std::logic_error("a video frame of " + std::to_string(image.width) + " x " +
+                                   std::to_string(image.height) + " pixels, not " + std::to_string(width) + " x " +
+                                   std::to_string(height));
+        }
+        if (coded_width == width && coded_height == height) return {image.data.data(), image.stride};
+        const int stride = 4 * coded_width;
+        padded.resize(static_cast<std::size_t>(stride) * static_cast<std::size_t>(coded_height));
+        for (int y = 0; y < coded_height; ++y) {
+            const unsigned char* from = image.data.data() + static_cast<std::size_t>(std::min(y, height - 1)) * image.stride;
+            unsigned char* to = padded.data() + static_cast<std::size_t>(y) * stride;
+            std::memcpy(to, from, 4 * static_cast<std::size_t>(width));
+            if (coded_width != width) std::memcpy(to + 4 * width, from + 4 * (width - 1), 4);
+        }
+        return {padded.data(), stride};
     }
 
     /// A frame the encoder has taken, back into the pool.
@@ -229,6 +331,8 @@ public:
     av_sink(const std::filesystem::path& path, const std::string& shown, const video_kind& kind, int width,
             int height, double fps, const std::string& creation_date);
     video_frame convert(const argb_image& image) const override;
+    void keep_against(const argb_image& still) override;
+    std::uint64_t pixels_converted() const override;
     void add(video_frame frame) override;
     void finish() override;
 
@@ -299,33 +403,31 @@ av_sink::av_sink(const std::filesystem::path& path, const std::string& shown, co
 
 video_frame av_sink::convert(const argb_image& image) const {
     state& s = *state_;
-    if (image.width != s.width || image.height != s.height) {
-        throw std::logic_error("a video frame of " + std::to_string(image.width) + " x " +
-                               std::to_string(image.height) + " pixels, not " + std::to_string(s.width) + " x " +
-                               std::to_string(s.height));
-    }
-    // An odd side: the last column or row once more, as yuv420p needs even sides.
-    const unsigned char* pixels = image.data.data();
-    int stride = image.stride;
     std::vector<unsigned char> padded;
-    if (s.coded_width != s.width || s.coded_height != s.height) {
-        stride = 4 * s.coded_width;
-        padded.resize(static_cast<std::size_t>(stride) * static_cast<std::size_t>(s.coded_height));
-        for (int y = 0; y < s.coded_height; ++y) {
-            const unsigned char* from = pixels + static_cast<std::size_t>(std::min(y, s.height - 1)) * image.stride;
-            unsigned char* to = padded.data() + static_cast<std::size_t>(y) * stride;
-            std::memcpy(to, from, 4 * static_cast<std::size_t>(s.width));
-            if (s.coded_width != s.width) std::memcpy(to + 4 * s.width, from + 4 * (s.width - 1), 4);
-        }
-        pixels = padded.data();
-    }
+    const xrgb_view pixels = s.coded_pixels(image, padded);
     std::unique_ptr<av_pixels> converted = s.reused_frame();
     AVFrame* f = converted->frame;
-    to_yuv420p(pixels, stride, s.coded_width, s.coded_height, f);
+    if (s.still.pixels) {
+        s.converted += to_yuv420p_over(pixels, s.still, s.still_frame->frame, s.coded_width, s.coded_height, f);
+    } else {
+        to_yuv420p(pixels.pixels, pixels.stride, s.coded_width, s.coded_height, f);
+        s.converted += static_cast<std::uint64_t>(s.coded_width) * static_cast<std::uint64_t>(s.coded_height);
+    }
     video_frame out;
     out.data = std::move(converted);
     return out;
 }
+
+void av_sink::keep_against(const argb_image& still) {
+    state& s = *state_;
+    if (s.next_pts > 0 || s.still.pixels) throw std::logic_error("a video's still set after its first frame or twice");
+    const xrgb_view pixels = s.coded_pixels(still, s.still_padded);
+    s.still_frame = s.reused_frame();
+    to_yuv420p(pixels.pixels, pixels.stride, s.coded_width, s.coded_height, s.still_frame->frame);
+    s.still = pixels;
+}
+
+std::uint64_t av_sink::pixels_converted() const { return state_->converted; }
 
 void av_sink::add(video_frame frame) {
     state& s = *state_;

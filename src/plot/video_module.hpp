@@ -7,6 +7,7 @@
 
 #include "plot/video.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -20,6 +21,10 @@ public:
     virtual ~video_sink() = default;
     /// Converts a frame drawn by render_argb for the encoder; callable from several threads.
     virtual video_frame convert(const argb_image& image) const = 0;
+    /// Frames drawn over `still` (kept by reference) convert only where they differ from it.
+    virtual void keep_against(const argb_image& still) = 0;
+    /// Pixels converted so far (the rest copied from the still's conversion).
+    virtual std::uint64_t pixels_converted() const = 0;
     /// Encodes the next frame.
     virtual void add(video_frame frame) = 0;
     /// Flushes the encoder and ends the file.
@@ -39,7 +44,7 @@ struct video_module {
 
 /// Changes whenever video_module, video_sink or video_kind changes: a module of another build
 /// is refused.
-inline constexpr int video_module_version = 2;
+inline constexpr int video_module_version = 3;
 
 /// The module's file name, beside the program in a build tree and in LIBDIR/pendulum-figures/
 /// when installed.

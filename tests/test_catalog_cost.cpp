@@ -4,8 +4,14 @@
 // program of the commit before the cuts, "tests: four empty test programs registered").
 #include "process.hpp"
 
+#include "pendulum/angle.hpp"
+#include "pendulum/formulas_mp.hpp"
+#include "pendulum/mp_iteration.hpp"
+#include "pendulum/period_error.hpp"
+
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -113,4 +119,73 @@ TEST(CatalogCost, TheSumsCoverEveryBuiltin) {
         if (figures.compare(at + 1, 2, "  ") == 0) ++ids;
     }
     EXPECT_EQ(ids * 3, rows);
+}
+
+// ---- The iteration's period errors: the first run's precision is foreseen -----------------
+
+namespace {
+
+using pendulum::mp::real;
+
+/// The errors as computed before the cuts: runs at 128, 192, ... 1152 bits, each from
+/// level 0, each stopping at the first level its bits cannot resolve (margin 56 bits).
+std::vector<pendulum::period_error> errors_from_128_bits(const pendulum::amplitude& a, int order, double floor) {
+    using kind = pendulum::period_error::kind;
+    std::vector<pendulum::period_error> out(static_cast<std::size_t>(order + 1), {kind::below_limit, 0});
+    std::vector<bool> done(out.size(), false);
+    for (const long bits : {128L, 192L, 256L, 384L, 512L, 768L, 1152L}) {
+        const auto x = pendulum::mp::exact_amplitude(a, bits);
+        const real exact = 1.0 / pendulum::mp::agm(real(1.0, bits), x.kp);
+        const auto error_of = [&](const real& lambda) { return 1.0 / (pendulum::mp::sqrt(lambda) * exact) - 1.0; };
+        const auto resolved = [&](const real& e) { return !e.is_zero() && pendulum::mp::exponent(e) > -(bits - 56); };
+        const bool more = bits != 1152 && !(std::ldexp(1.0, -static_cast<int>(bits - 56)) < floor);
+        auto lambdas = pendulum::detail::mp_lambdas(x, order, bits, [&](const real& l) {
+            return more && l.sign() > 0 && !resolved(error_of(l));
+        });
+        lambdas.resize(out.size());
+        bool all = true;
+        for (std::size_t n = 0; n < out.size(); ++n) {
+            if (done[n]) continue;
+            if (!lambdas[n]) {
+                out[n] = {kind::not_computed, 0};
+                all = false;
+            } else if (!(lambdas[n]->sign() > 0)) {
+                out[n] = {kind::no_period, 0};
+                done[n] = true;
+            } else if (const real e = error_of(*lambdas[n]); resolved(e)) {
+                out[n] = pendulum::mp::abs(e) < 1e-300 ? pendulum::period_error{kind::below_limit, 0}
+                                                        : pendulum::period_error{kind::value, e.to_double()};
+                done[n] = true;
+            } else {
+                out[n] = {kind::below_limit, 0};
+                all = false;
+            }
+        }
+        if (all || std::ldexp(1.0, -static_cast<int>(bits - 56)) < floor) break;
+    }
+    return out;
+}
+
+}  // namespace
+
+// Where the foreseen precision is right, too low (the decay slows) or too high, and where
+// nothing can be foreseen (tiny amplitudes, whose errors are all below 1e-12), the errors
+// are those of the runs from 128 bits, each within 2^-50 of itself (the runs round
+// differently), with the same kinds; floors 1e-300, 1e-30 and 1e-16.
+TEST(CatalogCost, ForeseenPrecisionChangesNoPeriodError) {
+    const char* amplitudes[] = {"1e-300", "1e-8", "0.1", "0.5pi", "0.75pi", "0.9pi", "0.95pi", "0.99pi",
+                                "pi - 0.0201", "pi - 0.0199", "pi - 6.995e-4", "pi - 1e-9", "pi - 1e-12"};
+    for (const double floor : {1e-300, 1e-30, 1e-16}) {
+        for (const char* text : amplitudes) {
+            const auto a = pendulum::parse_amplitude(text);
+            const auto got = pendulum::iterated_period_errors(a, 40, floor);
+            const auto want = errors_from_128_bits(a, 40, floor);
+            ASSERT_EQ(got.size(), want.size());
+            for (std::size_t n = 0; n < got.size(); ++n) {
+                EXPECT_EQ(got[n].what, want[n].what) << text << " level " << n << " floor " << floor;
+                EXPECT_LE(std::fabs(got[n].value - want[n].value), std::ldexp(std::fabs(want[n].value), -50))
+                    << text << " level " << n << " floor " << floor << ": " << got[n].value << " vs " << want[n].value;
+            }
+        }
+    }
 }

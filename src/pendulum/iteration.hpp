@@ -29,6 +29,17 @@ inline long bits_of(long double) { return std::numeric_limits<long double>::digi
 /// The precision of `like`, in bits.
 inline long bits_of(const mp::real& like) { return like.precision(); }
 
+/// How closely two trapezoid rules (L and 2L intervals) must agree, as an exponent of 2,
+/// for the finer one to be kept. The rules converge geometrically (f is analytic and
+/// periodic: each doubling squares the error), so agreement to 2^-a leaves the finer rule
+/// right to about 2^-2a. Extended precision asks a = bits - 12: its rules are cheap, and
+/// the doubles it is rounded to keep the node counts (and so the roundings) they had.
+inline long agreement_exponent(long double like) { return bits_of(like) - 12; }
+/// For mp::real a = bits/2 + 8: the finer rule right to about 2^-(bits + 16), below the
+/// precision's own rounding, with half the nodes that a = bits - 12 needs where the
+/// rules' convergence (not the harmonics' count) sets them.
+inline long agreement_exponent(const mp::real& like) { return bits_of(like) / 2 + 8; }
+
 /// `v` in the number type (and precision) of `like`.
 inline long double number_like(double v, long double) { return v; }
 /// `v` with the precision of `like`.
@@ -132,8 +143,8 @@ std::vector<Real> trapezoid(std::vector<Real> sums, int intervals) {
 }
 
 /// C_{2k+1}/theta0 for k < count by the trapezoid rule on a quarter period, its intervals
-/// halved until two rules agree to 2^-(bits - 12), bits the number type's precision. The
-/// rules converge geometrically, so the finer one is right to about the square of that. A
+/// halved until two rules agree to 2^-agreement_exponent. The rules converge
+/// geometrically, so the finer one is right to about the square of that. A
 /// halving reuses every node (the rule with 2L intervals is the one with L plus the
 /// midpoints of its intervals), and L only grows from level to level.
 template <class Real>
@@ -145,7 +156,7 @@ public:
     /// The projection, or an empty vector where max_intervals intervals do not agree.
     std::vector<Real> operator()(const std::vector<Real>& u, int count, const Real& theta0) {
         using std::fabs;
-        const Real agreement = power_of_two_like(-(bits_of(theta0) - 12), theta0);
+        const Real agreement = power_of_two_like(-agreement_exponent(theta0), theta0);
         L_ = std::max(L_, count / 2 + 16);
         std::vector<Real> sums = node_sums(u, count, theta0, L_, 0, table(L_, theta0));
         auto coarse = trapezoid(sums, L_);

@@ -12,6 +12,7 @@
 #include "pendulum/formulas.hpp"
 #include "pendulum/formulas_mp.hpp"
 #include "pendulum/approximants_mp.hpp"
+#include "pendulum/iteration.hpp"
 #include "pendulum/mp_iteration.hpp"
 #include "pendulum/mp_real.hpp"
 #include "pendulum/period_formulas.hpp"
@@ -80,6 +81,52 @@ real lowest_mp(const mp_amplitude& x, int) { return 1.0 / formulas::lowest_frequ
 
 real first_mp(const mp_amplitude& x, int) { return 1.0 / formulas::first_order_of(x.theta).frequency; }
 
+/// Extended precision's errors of the iteration are used down to this size (its own
+/// rounding stays far below).
+constexpr long double extended_error_floor = 1e-12L;
+
+/// The bits that level `order`'s error needs, foreseen in extended precision: the levels'
+/// errors from level 2 down to 1e-12, their mean geometric decay carried on to `order`, and
+/// the margin. 0 where no level's error is that large (nothing to foresee). Only the
+/// iteration's cost depends on it: a run with too few bits stops where they end and more
+/// follow, as before.
+long foreseen_iteration_bits(const amplitude& a, int order) {
+    const long double exact = exact_period_extended(a);
+    int first = -1;
+    int last = -1;
+    long double first_error = 0;
+    long double last_error = 0;
+    const long double theta0 = a.near_pi() ? a.radians_extended() : a.radians();
+    (void)iteration::levels(theta0, order, [&](int n, const iteration::level<long double>& level) {
+        if (n < 2 || !(level.lambda > 0)) return false;
+        const long double error = std::fabs(1 / (std::sqrt(level.lambda) * exact) - 1);
+        if (!(error >= extended_error_floor)) return true;
+        if (first < 0) {
+            first = n;
+            first_error = error;
+        }
+        last = n;
+        last_error = error;
+        return false;
+    });
+    if (first < 0) return 0;
+    const long double decay = last > first ? std::pow(last_error / first_error, 1.0L / (last - first)) : 1.0L;
+    const long double foreseen = std::log2(last_error) + std::log2(std::min(decay, 1.0L)) * (order - last);
+    return margin_bits + static_cast<long>(std::ceil(-foreseen));
+}
+
+/// The first of iteration_precisions to run: the fewest that the foreseen bits need, and
+/// none beyond the first whose unresolved errors lie below `floor`.
+std::size_t first_iteration_precision(const amplitude& a, int order, double floor) {
+    const long bits = foreseen_iteration_bits(a, order);
+    std::size_t i = 0;
+    while (i + 1 < iteration_precisions.size() && iteration_precisions[i] < bits &&
+           !(std::ldexp(1.0, -static_cast<int>(iteration_precisions[i] - margin_bits)) < floor)) {
+        ++i;
+    }
+    return i;
+}
+
 }  // namespace
 
 std::vector<period_error> iterated_period_errors(const amplitude& a, int order, double floor) {
@@ -89,7 +136,11 @@ std::vector<period_error> iterated_period_errors(const amplitude& a, int order, 
     }
     std::vector<period_error> out(static_cast<std::size_t>(order + 1), {period_error::kind::below_limit, 0});
     std::vector<bool> done(out.size(), false);
-    for (const mpfr_prec_t bits : iteration_precisions) {
+    // The runs start at the precision the last level is foreseen to need: the runs with
+    // fewer bits would stop before it and be repeated.
+    const std::size_t first = first_iteration_precision(a, order, floor);
+    for (std::size_t p = first; p < iteration_precisions.size(); ++p) {
+        const mpfr_prec_t bits = iteration_precisions[p];
         const mp_amplitude x = exact_amplitude(a, bits);
         const real exact = exact_period(x);
         // Where more bits will follow, the levels stop at the first whose error these

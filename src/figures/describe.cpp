@@ -452,12 +452,17 @@ std::string describe_panel(const plot::panel& p, const panel_spec& spec, std::si
     return out;
 }
 
-/// The panels' axes as the paper theme lays the figure out (the limits a reader sees);
-/// none if it cannot be laid out so.
-std::vector<plot::panel_frame> drawn_frames(const plot::figure& built) {
+/// The paper theme, read once.
+const plot::theme& paper_theme() {
+    static const plot::theme paper = load_theme("paper", {});
+    return paper;
+}
+
+/// The panels' axes as the paper theme lays the figure out (the limits a reader sees),
+/// from `drawn` where it laid them out; none if it cannot be laid out so.
+std::vector<plot::panel_frame> drawn_frames(const plot::figure& built, const plot::drawing* drawn) {
     try {
-        static const plot::theme paper = load_theme("paper", {});
-        return plot::panel_frames(built, paper);
+        return plot::panel_frames(built, paper_theme(), drawn);
     } catch (const std::exception&) {
         return {};
     }
@@ -465,16 +470,17 @@ std::vector<plot::panel_frame> drawn_frames(const plot::figure& built) {
 
 }  // namespace
 
-figure_description describe(const entry& e, const plot::figure& built, const build_options& options) {
-    return describe(e.spec, built, options);
+figure_description describe(const entry& e, const plot::figure& built, const build_options& options,
+                            const plot::drawing* drawn) {
+    return describe(e.spec, built, options, drawn);
 }
 
-figure_description describe(const figure_spec& spec, const plot::figure& unstyled, const build_options& options) {
+figure_description describe(const figure_spec& spec, const plot::figure& unstyled, const build_options& options,
+                            const plot::drawing* drawn) {
     // The lines as the theme it is drawn in draws them (the paper theme's named styles:
     // harmonic dotted; the paper theme's unless the options say), as the limits are the
     // ones the paper theme lays out.
-    static const plot::theme paper = load_theme("paper", {});
-    const plot::theme& th = options.theme ? *options.theme : paper;
+    const plot::theme& th = options.theme ? *options.theme : paper_theme();
     const plot::figure built = plot::with_theme_styles(unstyled, th);
     const auto panels = panels_with(spec, options);
     figure_description d;
@@ -498,7 +504,7 @@ figure_description describe(const figure_spec& spec, const plot::figure& unstyle
     }
     const std::string title = spoken_label(built.title.markup);
     if (!title.empty()) d.text = "Title: " + title + ".\n" + d.text;
-    const std::vector<plot::panel_frame> frames = drawn_frames(built);
+    const std::vector<plot::panel_frame> frames = drawn_frames(built, drawn);
     for (std::size_t i = 0; i < built.panels.size() && i < panels.size(); ++i) {
         d.text += describe_panel(built.panels[i], panels[i], i, built.panels.size(),
                                  i < frames.size() ? &frames[i] : nullptr, spec.animation.has_value(), th) +

@@ -6,6 +6,7 @@
 #include "figures/build_options.hpp"
 #include "figures/catalog.hpp"
 #include "plot/figure.hpp"
+#include "plot/render.hpp"
 
 #include <string>
 
@@ -23,11 +24,14 @@ inline constexpr double visible_fraction = 0.01;
 /// Describes a built figure of `e` (as build(e, options) makes it): each panel's axes and
 /// the ranges of its data, its series and how they are drawn, where each approximation
 /// leaves the exact curve by more than visible_fraction of the axis, and where the curves
-/// cross the spec's reference lines.
-figure_description describe(const entry& e, const plot::figure& built, const build_options& options = {});
+/// cross the spec's reference lines. The axes' limits are those the paper theme lays out:
+/// taken from `drawn` where it laid out the same (plot::panel_frames), else laid out here.
+figure_description describe(const entry& e, const plot::figure& built, const build_options& options = {},
+                            const plot::drawing* drawn = nullptr);
 
 /// describe for a spec of its own (the figure's one-line description being the spec's
 /// description, or its title).
-figure_description describe(const figure_spec& spec, const plot::figure& built, const build_options& options = {});
+figure_description describe(const figure_spec& spec, const plot::figure& built, const build_options& options = {},
+                            const plot::drawing* drawn = nullptr);
 
 }  // namespace figures

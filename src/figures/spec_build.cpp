@@ -217,15 +217,17 @@ void label_panel(plot::panel& panel, const panel_spec& p, std::size_t i, std::si
 }
 
 /// The figure in words travels with it, into the files that can hold them; found when
-/// first asked for, once, from the figure as built.
+/// first asked for, once, from the figure as built (and the layout of the first file's
+/// drawing, where it is the one the words speak of).
 void attach_words(plot::figure& f, const figure_spec& spec, const build_options& options) {
     struct found {
         std::once_flag once;
         plot::figure_words words;
     };
-    f.words = [whole = std::make_shared<const plot::figure>(f), memo = std::make_shared<found>(), spec, options] {
+    f.words = [whole = std::make_shared<const plot::figure>(f), memo = std::make_shared<found>(), spec,
+               options](const plot::drawing* drawn) {
         std::call_once(memo->once, [&] {
-            const figure_description d = describe(spec, *whole, options);
+            const figure_description d = describe(spec, *whole, options, drawn);
             memo->words = {d.alt, d.text};
         });
         return memo->words;

@@ -20,6 +20,9 @@ struct rgb {
     double r = 0;  ///< red
     double g = 0;  ///< green
     double b = 0;  ///< blue
+
+    /// Every component equal.
+    bool operator==(const rgb&) const = default;
 };
 
 /// A text of a figure in the two forms its writers need: Pango markup to draw, and the
@@ -42,6 +45,8 @@ struct label {
         markup.clear();
         latex.clear();
     }
+    /// Both forms equal.
+    bool operator==(const label&) const = default;
 };
 
 /// How a series' line is drawn.
@@ -60,6 +65,8 @@ struct error_bars {
 
     /// True when no point has a bar.
     bool empty() const { return x_lower.empty() && x_upper.empty() && y_lower.empty() && y_upper.empty(); }
+    /// Every bar equal.
+    bool operator==(const error_bars&) const = default;
 };
 
 /// The ends of point i's bars along x (horizontal) or y: [v - lower, v + upper].
@@ -150,6 +157,9 @@ struct series {
     /// Measured data: its place among its panel's data series (0, 1, ...), which picks its
     /// marker and colour from the theme's data_markers and data_palette; -1 for other series.
     int data_slot = -1;
+
+    /// Every member equal, a curve by being the same curve (and a NaN unequal to itself).
+    bool operator==(const series&) const = default;
 };
 
 /// Axis scale.
@@ -175,6 +185,9 @@ struct axis {
     /// The paper's range, kept exactly in the paper's files (--paper-files) in place of min
     /// and max; unset: they draw the axis as every other file does.
     std::optional<std::pair<double, double>> paper_range;
+
+    /// Every member equal.
+    bool operator==(const axis&) const = default;
 };
 
 /// Where a legend goes: automatic picks a spot inside the axes free of data, else a band
@@ -194,6 +207,9 @@ struct panel {
     /// A drawing (frameless) keeps a line above it for overlay_label, beside its label, in
     /// every frame alike: the text never covers the drawing, whatever its size.
     bool overlay_line = false;
+
+    /// Every member equal.
+    bool operator==(const panel&) const = default;
 };
 
 /// A figure in words, plain text, for readers who cannot see it.
@@ -201,6 +217,8 @@ struct figure_words {
     std::string alt;          ///< what it shows in a sentence or two: the SVG's <title> and PDF's Title where there is no title
     std::string description;  ///< what it shows at length: the SVG's <desc> and the PDF's Subject
 };
+
+struct drawing;
 
 /// A grid of panels with a physical size.
 struct figure {
@@ -214,9 +232,14 @@ struct figure {
     int place_in_set = 0;          ///< with peers: where this figure's one panel stands among them (0: first)
     plot::label title;             ///< drawn centred above the panels (theme's title_font_pt; 0 hides it)
     /// The figure in words, made when a file that holds them (SVG, PDF) is first written:
-    /// finding them costs as much as building the figure. Empty: none.
-    std::function<figure_words()> words;
+    /// finding them costs as much as building the figure. Given the drawing of the file
+    /// (render.hpp), they may take its layout in place of laying the figure out again; given
+    /// null, they lay it out themselves. Empty: none.
+    std::function<figure_words(const drawing*)> words;
 };
+
+/// Whether two figures hold the same things to draw: every member but their words.
+bool same_content(const figure& a, const figure& b);
 
 /// Escapes text for use inside Pango markup (&, <, >, quotes).
 std::string escape_markup(const std::string& text);

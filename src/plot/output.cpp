@@ -72,51 +72,65 @@ void check_surface(cairo_surface_t* s, std::string_view format) {
 }
 
 void draw_on(cairo_surface_t* surface, const figure& fig, const theme& th, page_size size, double scale,
-             std::string_view format, std::vector<placed_text>* texts = nullptr, bool vector = false) {
+             std::string_view format, std::vector<placed_text>* texts = nullptr, bool vector = false,
+             std::vector<panel_frame>* frames = nullptr) {
     check_surface(surface, format);
     context_ptr cr(cairo_create(surface));
     cairo_scale(cr.get(), scale, scale);
-    draw_figure(cr.get(), fig, th, size, draw_pass::all, texts, vector);
+    draw_figure(cr.get(), fig, th, size, draw_pass::all, texts, vector, frames);
     check_cairo(cairo_status(cr.get()), "render " + std::string(format));
 }
 
 /// Draws the figure on a vector surface made by `create` (which may set it up further)
-/// and returns the stream's bytes.
-template <class Create>
+/// and returns the stream's bytes; `before_finish(surface, drawn)` is called with the
+/// drawing (its layout) before the surface is finished.
+template <class Create, class Finish>
 std::string render_vector(const figure& fig, const theme& th, std::string_view format, Create create,
-                          std::vector<placed_text>* texts = nullptr) {
+                          std::vector<placed_text>* texts, Finish before_finish) {
     const page_size size = figure_size(fig, th);
     std::string bytes;
     surface_ptr surface(create(&bytes, size));
     check_surface(surface.get(), format);
-    draw_on(surface.get(), fig, th, size, 1.0, format, texts, true);
+    drawing drawn{&fig, &th, false, {}};
+    draw_on(surface.get(), fig, th, size, 1.0, format, texts, true, &drawn.frames);
+    before_finish(surface.get(), drawn);
     cairo_surface_finish(surface.get());
     check_surface(surface.get(), format);
     return bytes;
 }
 
-/// The figure in words for a file's metadata, its title as drawn in place of its alt text.
-figure_words metadata_words(const figure& fig) {
-    figure_words words = fig.words ? fig.words() : figure_words{};
+/// render_vector with nothing to add before the surface is finished.
+template <class Create>
+std::string render_vector(const figure& fig, const theme& th, std::string_view format, Create create,
+                          std::vector<placed_text>* texts = nullptr) {
+    return render_vector(fig, th, format, create, texts, [](cairo_surface_t*, const drawing&) {});
+}
+
+/// The figure in words for a file's metadata, its title as drawn in place of its alt text;
+/// `drawn`, the file's drawing, spares the words a layout of their own.
+figure_words metadata_words(const figure& fig, const drawing& drawn) {
+    figure_words words = fig.words ? fig.words(&drawn) : figure_words{};
     if (!fig.title.empty()) words.alt = markup_text(fig.title.markup);
     return words;
 }
 
 std::string render_pdf(const figure& fig, const theme& th, const output_options&, std::vector<placed_text>* texts) {
-    const figure_words words = metadata_words(fig);
-    const std::string& title = words.alt;
     return render_vector(
         fig, th, "pdf",
-        [&title, &words](std::string* bytes, page_size size) {
+        [](std::string* bytes, page_size size) {
             cairo_surface_t* s = cairo_pdf_surface_create_for_stream(append_bytes, bytes, size.width_pt, size.height_pt);
             cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, pdf_creation_date().c_str());
-            if (!title.empty()) cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_TITLE, title.c_str());
+            return s;
+        },
+        texts,
+        [&fig](cairo_surface_t* s, const drawing& drawn) {
+            // The document's information is written when the surface is finished.
+            const figure_words words = metadata_words(fig, drawn);
+            if (!words.alt.empty()) cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_TITLE, words.alt.c_str());
             if (!words.description.empty()) {
                 cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_SUBJECT, words.description.c_str());
             }
-            return s;
-        },
-        texts);
+        });
 }
 
 std::string write_pdf(const figure& fig, const theme& th, const output_options& options) {
@@ -441,6 +455,7 @@ std::string with_svg_size(std::string svg, page_size size, svg_size_unit unit) {
 std::string write_svg(const figure& fig, const theme& th, const output_options&) {
     const bool as_text = th.svg_text == svg_text_mode::text;
     std::vector<placed_text> texts;
+    figure_words words;
     std::string svg = renumber_svg_ids(render_vector(
         fig, th, "svg",
         [](std::string* bytes, page_size size) {
@@ -448,14 +463,14 @@ std::string write_svg(const figure& fig, const theme& th, const output_options&)
             cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
             return s;
         },
-        as_text ? &texts : nullptr));
+        as_text ? &texts : nullptr,
+        [&fig, &words](cairo_surface_t*, const drawing& drawn) { words = metadata_words(fig, drawn); }));
     if (as_text) {
         const auto close = svg.rfind("</svg>");
         if (close == std::string::npos) throw std::runtime_error("Cairo wrote an SVG without an end");
         svg.insert(close, svg_text_elements(texts, th));
     }
     svg = with_svg_size(std::move(svg), figure_size(fig, th), th.svg_size);
-    const figure_words words = metadata_words(fig);
     svg = with_svg_words(std::move(svg), words.alt, words.description);
     return prefix_svg_ids(svg, svg_id_prefix(svg));
 }

@@ -12,6 +12,7 @@
 #include "plot/ticks.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -1271,8 +1272,18 @@ void draw_placed(cairo_t* cr, const text_engine& text, const theme& th, figure_l
 
 }  // namespace
 
+namespace {
+
+/// Layouts done by this process (figure_layouts).
+std::atomic<std::size_t> layouts_done{0};
+
+}  // namespace
+
+std::size_t figure_layouts() { return layouts_done.load(std::memory_order_relaxed); }
+
 void draw_figure(cairo_t* cr, const figure& unstyled, const theme& th, page_size size, draw_pass pass,
                  std::vector<placed_text>* texts, bool vector, std::vector<panel_frame>* frames) {
+    layouts_done.fetch_add(1, std::memory_order_relaxed);
     const bool any_key = has_style_keys(unstyled);
     const figure styled = any_key ? with_theme_styles(unstyled, th) : figure{};
     const figure& fig = any_key ? styled : unstyled;
@@ -1343,6 +1354,31 @@ std::vector<panel_frame> panel_frames(const figure& fig, const theme& th) {
     std::vector<panel_frame> frames;
     draw_figure(cr.get(), fig, th, size, draw_pass::all, nullptr, false, &frames);
     return frames;
+}
+
+bool same_content(const figure& a, const figure& b) {
+    // Every member of plot::figure but words.
+    return a.rows == b.rows && a.cols == b.cols && a.panel_width_cm == b.panel_width_cm &&
+           a.panel_aspect == b.panel_aspect && a.shared_legend == b.shared_legend &&
+           a.place_in_set == b.place_in_set && a.title == b.title && a.panels == b.panels && a.peers == b.peers;
+}
+
+namespace {
+
+/// Whether `drawn` laid out what draw_figure lays out of fig in th on a vector page: the same
+/// theme, and the same content once the theme's styles are applied (as draw_figure applies them).
+bool laid_out_alike(const figure& fig, const theme& th, const drawing& drawn) {
+    if (!drawn.fig || !drawn.th || drawn.raster || drawn.frames.size() != fig.panels.size()) return false;
+    if (!(*drawn.th == th)) return false;
+    if (same_content(fig, *drawn.fig)) return true;
+    return same_content(with_theme_styles(fig, th), with_theme_styles(*drawn.fig, th));
+}
+
+}  // namespace
+
+std::vector<panel_frame> panel_frames(const figure& fig, const theme& th, const drawing* drawn) {
+    if (drawn && laid_out_alike(fig, th, *drawn)) return drawn->frames;
+    return panel_frames(fig, th);
 }
 
 drawn_glyphs glyphs_drawn(const figure& fig, const theme& th) {

@@ -106,6 +106,24 @@ figure with_theme_styles(const figure& fig, const theme& th);
 /// The frames of the figure's panels as draw_figure lays them out at the figure's size.
 std::vector<panel_frame> panel_frames(const figure& fig, const theme& th);
 
+/// A figure as a file's drawing laid it out: the figure and theme drawn (alive while this
+/// is), whether on pixels, and where its panels' axes landed.
+struct drawing {
+    const figure* fig = nullptr;        ///< the figure drawn
+    const theme* th = nullptr;          ///< in this theme
+    bool raster = false;                ///< on pixels (a curve sampled to half a pixel: legends may move)
+    std::vector<panel_frame> frames;    ///< each panel's frame
+};
+
+/// panel_frames, taken from `drawn` where it laid out the same: a vector drawing of a figure
+/// with the same content (same_content, after the theme's styles) at its figure_size in an
+/// equal theme; else laid out as panel_frames does.
+std::vector<panel_frame> panel_frames(const figure& fig, const theme& th, const drawing* drawn);
+
+/// How many times this process has laid out a figure (each draw_figure), for tests: a
+/// figure's words take the layout of the file being written instead of adding their own.
+std::size_t figure_layouts();
+
 /// The markers of one series as draw_figure places them, in points from the page's top left.
 struct marker_centres_of {
     std::vector<std::pair<double, double>> centres;  ///< each drawn marker's centre

@@ -15,6 +15,9 @@ namespace plot {
 struct named_style {
     std::optional<line_style> line;      ///< line style
     std::optional<marker_style> marker;  ///< marker
+
+    /// Both equal.
+    bool operator==(const named_style&) const = default;
 };
 
 /// How an SVG holds its text.
@@ -35,6 +38,9 @@ struct text_sizes {
     double tick_pt = 0;    ///< tick labels
     double label_pt = 0;   ///< axis and panel labels
     double legend_pt = 0;  ///< legend entries
+
+    /// All three equal.
+    bool operator==(const text_sizes&) const = default;
 };
 
 /// How figures look: fonts, sizes in points, line widths, colours, sizes. Built-in themes
@@ -85,6 +91,9 @@ struct theme {
     svg_text_mode svg_text = svg_text_mode::path;  ///< how an SVG holds its text
     svg_size_unit svg_size = svg_size_unit::pt;    ///< what an SVG's width and height are in
     std::set<std::string> given;      ///< keys a user's style file or the command line set: they win over a figure's own
+
+    /// Every member equal: the same look, and the same layout of any figure.
+    bool operator==(const theme&) const = default;
 };
 
 /// True if the first family of a comma-separated `font_family` is installed where figures

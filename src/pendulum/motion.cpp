@@ -288,6 +288,11 @@ double motion::libration_clock(double w0_t) const {
     return w0_t + offset_ + (mirror_ < 0 ? 2.0 * quarter_ : 0.0);
 }
 
+std::pair<double, bool> motion::libration_clock_parts() const {
+    (void)libration();
+    return {offset_, mirror_ < 0};
+}
+
 double motion::libration_center() const {
     (void)libration();
     return mirror_ * turns_ * two_pi_hi + mirror_ * turns_ * two_pi_lo;

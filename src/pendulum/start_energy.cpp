@@ -186,12 +186,34 @@ start_numbers numbers_of(const start_energy& e) {
     return n;
 }
 
+namespace {
+
+/// The energy and gap of a motion given as a state or an energy, with `p` bits.
+start_energy written_start(const motion& m, mpfr_prec_t p) {
+    return m.given_as() == motion::origin::energy ? written_energy_at(m.written_first(), p)
+                                                  : state_energy_at(m.written_first(), m.written_second(), p);
+}
+
+}  // namespace
+
+mp::mp_amplitude written_amplitude(const motion& m, mpfr_prec_t bits) {
+    if (m.given_as() == motion::origin::amplitude || m.kind() != regime::libration) {
+        throw domain_error("written_amplitude needs a libration given as a state or an energy");
+    }
+    const mpfr_prec_t p = bits + 64 + m.cancelled_bits();
+    const start_energy e = written_start(m, p);
+    const real k = mp::sqrt(e.energy / 2.0);
+    const real kp = mp::sqrt(e.gap / 2.0);
+    real theta(p);
+    mpfr_atan2(theta.get(), k.get(), kp.get(), MPFR_RNDN);
+    const real one_minus_kp = (e.energy / 2.0) / (1.0 + kp);
+    return {real(2.0 * theta, bits), real(k, bits), real(kp, bits), real(one_minus_kp, bits)};
+}
+
 real written_period(const motion& m, mpfr_prec_t bits) {
     if (!m.has_period()) (void)m.period();  // throws, naming the separatrix
     const mpfr_prec_t p = bits + 64 + m.cancelled_bits();
-    const start_energy e = m.given_as() == motion::origin::energy
-                               ? written_energy_at(m.written_first(), p)
-                               : state_energy_at(m.written_first(), m.written_second(), p);
+    const start_energy e = written_start(m, p);
     const real one(1.0, p);
     const real exact = m.kind() == regime::libration
                            ? 2.0 * mp::pi(p) / mp::agm(one, mp::sqrt(e.gap / 2.0))

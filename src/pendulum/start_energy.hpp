@@ -3,6 +3,7 @@
 // The energy of a start from its numbers as written, in MPFR: for the core only, not installed.
 
 #include "pendulum/angle.hpp"
+#include "pendulum/formulas_mp.hpp"
 #include "pendulum/motion.hpp"
 #include "pendulum/mp_real.hpp"
 
@@ -51,5 +52,10 @@ start_numbers numbers_of(const start_energy& e);
 /// The period in w0 t of a motion given as a state or an energy, from its numbers as written,
 /// with `bits` bits; throws domain_error at the separatrix.
 mp::real written_period(const motion& m, mpfr_prec_t bits);
+
+/// The amplitude of a libration given as a state or an energy, from its numbers as written,
+/// with `bits` bits: k = sqrt(E/2), k' = sqrt((2 - E)/2), theta0 = 2 atan2(k, k'),
+/// 1 - k' = k^2/(1 + k'); throws domain_error unless the motion is such a libration.
+mp::mp_amplitude written_amplitude(const motion& m, mpfr_prec_t bits);
 
 }  // namespace pendulum

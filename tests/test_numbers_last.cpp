@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The audit's reproductions (tests/data/issue_numbers_audit.md) against mpmath, the residual
 // digit rule of the data writers, and approximants of states up to the largest double.
+#include "figures/figure_data.hpp"
 #include "process.hpp"
 #include "reference.hpp"
 #include "reference_rows.hpp"
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <string>
@@ -125,6 +127,145 @@ TEST(StateApproximants, EveryMethodToTheLargestDouble) {
     }
     std::cout << "worst " << worst << " ulps of theta0 over " << rows.size() - 1 << " points, " << order.size()
               << " commands\n";
+}
+
+TEST(DifferenceDigits, TheRuleAtEveryBoundary) {
+    // difference_digits.csv (make_difference_digits.py): a - b deserves
+    // floor(log10(|a - b| / (2^-52 max(|a|, |b|)))) digits, 1 to 17, 17 where nothing cancels;
+    // at 10^n units of the terms' rounding n digits, half a unit less n - 1.
+    const auto rows = test_support::read_reference_text("difference_digits.csv");
+    ASSERT_GE(rows.size(), 38u);
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const double a = number(rows[i].at(0));
+        const double b = number(rows[i].at(1));
+        EXPECT_EQ(figures::difference_digits(a - b, std::max(std::fabs(a), std::fabs(b))), std::stoi(rows[i].at(2)))
+            << "a = " << rows[i].at(0) << ", b = " << rows[i].at(1);
+    }
+}
+
+/// The y cells of series `id` in a long CSV answer of `data`.
+std::vector<std::string> long_y(const std::string& out, const std::string& id) {
+    std::vector<std::string> ys;
+    for (const auto& line : split_at(out, '\n')) {
+        const auto f = split_at(line, ',');
+        if (f.size() >= 5 && f[4] == id) ys.push_back(f[3]);
+    }
+    return ys;
+}
+
+/// The cells of column `name` in a wide CSV answer, nan padding dropped.
+std::vector<std::string> wide_column_cells(const std::string& out, const std::string& name) {
+    const auto lines = split_at(out, '\n');
+    const auto header = split_at(lines.at(0), ',');
+    const auto at = std::find(header.begin(), header.end(), name);
+    std::vector<std::string> cells;
+    if (at == header.end()) return cells;
+    const auto column = static_cast<std::size_t>(at - header.begin());
+    for (std::size_t i = 1; i < lines.size(); ++i) {
+        const auto f = split_at(lines[i], ',');
+        if (column < f.size() && f[column] != "nan") cells.push_back(f[column]);
+    }
+    return cells;
+}
+
+/// The numbers of the "y" array of the JSON series `id` of `data -f json`.
+std::vector<std::string> json_y(const std::string& out, const std::string& id) {
+    const auto series = out.find("{\"id\":\"" + id + "\"");
+    const auto from = out.find("\"y\":[", series);
+    if (series == std::string::npos || from == std::string::npos) return {};
+    const auto to = out.find(']', from);
+    return split_at(out.substr(from + 5, to - from - 5), ',');
+}
+
+TEST(DifferenceDigits, ResidualColumnsPrintTheDigitsTheyDeserveInEveryFormat) {
+    // residual_digits.csv (make_difference_digits.py): measured T/T0 at 1 rad on a residual
+    // panel; each residual printed with the digits the rule gives it (a measurement 13 units
+    // of rounding from T/T0 one digit, a far one 15), and those digits are the true residual's
+    // (mpmath) in long CSV, wide CSV and JSON alike.
+    const auto rows = test_support::read_reference_text("residual_digits.csv");
+    std::string ys;
+    std::string xs;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        ys += (ys.empty() ? "" : ", ") + rows[i].at(0);
+        xs += (xs.empty() ? "" : ", ") + std::string("1.0");
+    }
+    const auto dir = test_support::temp_dir("numbers-residual-digits");
+    std::ofstream(dir / "r.toml") << "[[panel]]\nplot = \"period\"\ny = \"residual\"\nmethods = [\"exact\", \"lowest\"]\n"
+                                  << "[[panel.data]]\nx = [" << xs << "]\nx_unit = \"rad\"\ny = [" << ys
+                                  << "]\ny_unit = \"T/T0\"\n";
+    const auto spec = "'" + (dir / "r.toml").string() + "'";
+    const auto long_run = test_support::run_cli("data " + spec);
+    ASSERT_EQ(long_run.status, 0) << long_run.err;
+    const auto wide_run = test_support::run_cli("data --layout wide " + spec);
+    ASSERT_EQ(wide_run.status, 0) << wide_run.err;
+    const auto json_run = test_support::run_cli("data -f json " + spec);
+    ASSERT_EQ(json_run.status, 0) << json_run.err;
+    const auto in_long = long_y(long_run.out, "data:1");
+    const auto in_wide = wide_column_cells(wide_run.out, "a_data_1_y");
+    const auto in_json = json_y(json_run.out, "data:1");
+    ASSERT_EQ(in_long.size(), rows.size() - 1) << long_run.out;
+    EXPECT_EQ(in_wide, in_long) << wide_run.out;
+    EXPECT_EQ(in_json, in_long) << json_run.out;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const std::string& got = in_long[i - 1];
+        EXPECT_EQ(number(got), number(rows[i].at(2))) << "y = " << rows[i].at(0) << ": got " << got << ", want "
+                                                      << rows[i].at(2) << " (" << rows[i].at(1) << " digits)";
+        // No more digits than the rule's: the shortest text of the n-digit rounding.
+        const std::string mantissa = got.substr(0, got.find('e'));
+        std::size_t significant = 0;
+        bool leading = true;
+        for (char c : mantissa) {
+            if (c < '0' || c > '9') continue;
+            if (leading && c == '0') continue;
+            leading = false;
+            ++significant;
+        }
+        EXPECT_LE(significant, static_cast<std::size_t>(std::stoi(rows[i].at(1)))) << got;
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(SeparatrixCeiling, AGapOnlyTheCeilingSeesIsRefusedNotTheSeparatrix) {
+    // A gap is decided where 32768 and 65536 bits agree on it (down to about 2^-32700 of its
+    // terms, about 1e-9843): 1e-9800 is; 1e-9900 (seen at 65536 bits only) and 1e-19800 (below
+    // 2^-65528, seen by neither) are exit 2 naming the ceiling, never silently the separatrix.
+    for (const std::string args : {"--theta0 2pi/3+1e-19800 --omega0 1", "--theta0 2pi/3 --omega0 1+1e-19800",
+                                   "--theta0 0 --omega0 2-1e-19800", "--energy 2+1e-19800",
+                                   "--theta0 2pi/3+1e-9900 --omega0 1"}) {
+        const auto r = test_support::run_cli("eval " + args);
+        EXPECT_EQ(r.status, 2) << args << ": " << r.out;
+        EXPECT_NE(r.err.find("within 65536 bits"), std::string::npos) << args << ": " << r.err;
+        EXPECT_EQ(r.out.find("separatrix"), std::string::npos) << args << ": " << r.out;
+    }
+    // 1e-9800 is decided (a rotation) and then refused for what doubles cannot hold (2 k' below
+    // the smallest normal double), not for the ceiling.
+    const auto decided = test_support::run_cli("eval --theta0 2pi/3+1e-9800 --omega0 1");
+    EXPECT_EQ(decided.status, 2);
+    EXPECT_NE(decided.err.find("2 - E = -8.66025403784438"), std::string::npos) << decided.err;
+    EXPECT_NE(decided.err.find("below the smallest normal double"), std::string::npos) << decided.err;
+    EXPECT_EQ(decided.err.find("within 65536 bits"), std::string::npos) << decided.err;
+}
+
+TEST(SeparatrixCeiling, InputsExactlyOnTheSeparatrixStayTheSeparatrix) {
+    // E = 2 proved from the numbers as written (theta = b pi with a rational cosine, omega
+    // rational, omega^2 = 2 (1 + cos theta); or the energy 2), at once, without the ceiling.
+    for (const std::string args :
+         {"--theta0 2pi/3 --omega0 1", "--theta0 120deg --omega0 1", "--theta0 -2pi/3 --omega0 -1",
+          "--theta0 4pi/3 --omega0 1", "--theta0 0 --omega0 2", "--theta0 2pi --omega0 -2", "--theta0 pi/2 --omega0 '1.4142135623730951*1'",
+          "--theta0 '(2/3)pi' --omega0 '0.5*2*3/3'", "--energy 2", "--energy 4/2", "--energy 2.000"}) {
+        const auto r = test_support::run_cli("eval " + args);
+        const bool irrational = args.find("1.4142135623730951") != std::string::npos;
+        ASSERT_EQ(r.status, 0) << args << ": " << r.err;
+        // pi/2 with the double nearest sqrt(2) is just off it (E = 2 + 1.9e-16): a rotation.
+        EXPECT_NE(r.out.find(irrational ? "rotation" : "separatrix"), std::string::npos) << args << ": " << r.out;
+    }
+    // pi/3 with omega 1 is E = 1: the exact rule does not call every multiple of pi the separatrix.
+    const auto off = test_support::run_cli("eval --theta0 pi/3 --omega0 1");
+    EXPECT_NE(off.out.find("libration"), std::string::npos) << off.out << off.err;
+    // At rest at the top is the unstable equilibrium, refused as amplitude mode refuses pi.
+    const auto top = test_support::run_cli("eval --theta0 pi --omega0 0");
+    EXPECT_EQ(top.status, 2);
+    EXPECT_NE(top.err.find("pi"), std::string::npos) << top.err;
 }
 
 }  // namespace

@@ -85,7 +85,8 @@ TEST(StartPrecision, StartsPast2560BitsAreComputed) {
 
 // The ceiling: 2 - E = 1e-19725 of an energy as written is seen at 65536 bits only (its terms
 // less 65527 bits), and refused naming the ceiling; 1e-19726 vanishes at 32768 and 65536 bits,
-// the separatrix (as 2pi/3 with 1 is, exactly).
+// and is refused the same way: a gap below what the ceiling resolves is not the separatrix
+// (2pi/3 with 1 is, proved exactly: test_numbers_last).
 TEST(StartPrecision, TheCeilingIsStatedAndHeld) {
     EXPECT_EQ(pendulum::start_first_bits, 128);
     EXPECT_EQ(pendulum::start_ceiling_bits, 65536);
@@ -96,9 +97,11 @@ TEST(StartPrecision, TheCeilingIsStatedAndHeld) {
         << seen.err;
     EXPECT_NE(seen.err.find("cannot be decided from the numbers as written within 65536 bits"), std::string::npos)
         << seen.err;
-    const auto on = run_cli("eval --energy 2-1e-19726");
-    ASSERT_EQ(on.status, 0) << on.err;
-    EXPECT_EQ(table(on.out).at(0).at("regime"), "separatrix");
+    const auto below = run_cli("eval --energy 2-1e-19726");
+    EXPECT_EQ(below.status, 2);
+    EXPECT_EQ(below.out, "");
+    EXPECT_NE(below.err.find("cannot be decided from the numbers as written within 65536 bits"), std::string::npos)
+        << below.err;
     // E = 0 to every bit up to the ceiling: refused with both energies and the ceiling.
     const auto rest = run_cli("eval --theta0 2pi --omega0 0");
     EXPECT_EQ(rest.status, 2);

@@ -219,7 +219,8 @@ void prepare_run(method_run& r, const trajectory_context& c, const start_option&
         else r.reduce.emplace(m, ts, largest, r.approx);
     }
     // A libration from a state runs its approximant on its own clock: the phase at time 0.
-    r.phase_at_start = is_exact || c.paper_table ? 0.0 : start_phase(m, r.approx);
+    if (is_exact || c.paper_table) r.phase_at_start = 0.0;
+    else r.phase_at_start = r.reduce ? r.reduce->start_phase(m) : start_phase(m, r.approx);
 }
 
 /// Appends theta (and omega for a state) of the run at time s to the row.

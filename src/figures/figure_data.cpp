@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -89,6 +90,30 @@ int printed_digits(const panel_spec& p) {
     return static_cast<int>(std::floor(-std::log10(error_axis_relative) + 1e-9));
 }
 
+int difference_digits(double difference, double terms) {
+    constexpr int most = 17;
+    const double size = std::fabs(terms);
+    if (!(size > 0) || !std::isfinite(size) || !std::isfinite(difference)) return most;
+    // |a - b| in units of the terms' last bit, 2^-52 max(|a|, |b|): floor(log10) of it,
+    // counted against exact powers of ten (no log10 rounding at the boundaries); 13 units
+    // know one digit, not two.
+    // No cancellation (terms of opposite signs, or one of them 0): the difference is rounded
+    // once, every digit.
+    if (std::fabs(difference) >= size) return most;
+    const double units = std::fabs(difference) / std::ldexp(size, -52);
+    int digits = 1;
+    double power = 100;
+    while (digits < most && units >= power) {
+        ++digits;
+        power *= 10;
+    }
+    return digits;
+}
+
+int y_digits_at(const series_numbers& s, std::size_t i) {
+    return i < s.y_terms.size() ? difference_digits(s.y[i], s.y_terms[i]) : s.y_digits;
+}
+
 std::string format_digits(double v, int digits) {
     if (digits <= 0 || !std::isfinite(v)) return pendulum::format_double(v);
     char buf[48];
@@ -152,6 +177,23 @@ void formula_meaning(const panel_spec& p, series_numbers& s) {
         s.theta0 = p.theta0.front();
         const double t = pendulum::method_period(m.method, s.theta0->theta0());
         if (std::isfinite(t)) s.period = t;
+    }
+}
+
+/// On a residual panel ((T_meas - T_ref)/T0), the terms of each y: T_ref at its x and
+/// T_ref + y, the larger in size (difference_digits()); nothing on other panels.
+void add_difference_terms(const panel_spec& p, series_numbers& s) {
+    if (!p.plot || p.plot->name != "period" || p.y != period_axis::residual) return;
+    const auto ref = p.residual_of ? *p.residual_of : pendulum::parse_method("exact");
+    s.y_terms.assign(s.y.size(), 0.0);  // 0: no terms known, every digit
+    for (std::size_t i = 0; i < s.y.size() && i < s.x.size(); ++i) {
+        const double theta = p.degrees ? s.x[i] * std::numbers::pi / 180 : s.x[i];
+        try {
+            const double b = pendulum::method_period(ref, theta);
+            s.y_terms[i] = std::max(std::fabs(b), std::fabs(b + s.y[i]));
+        } catch (const std::exception&) {
+            // Outside (0, pi), where the reference has no period: every digit of y.
+        }
     }
 }
 
@@ -222,6 +264,7 @@ figure_numbers numbers_of(const entry& e, const build_options& options, const pl
             if (s.reference_line) within_limits(s, frames[i]);
             if (i < n.specs.size()) add_meaning(n.specs[i], s);
             if (i < n.specs.size()) s.y_digits = printed_digits(n.specs[i]);
+            if (i < n.specs.size()) add_difference_terms(n.specs[i], s);
             pn.series.push_back(std::move(s));
         }
         n.panels.push_back(std::move(pn));
@@ -273,6 +316,11 @@ std::string cell(const std::vector<double>& v, std::size_t i, int digits = 0) {
     return i < v.size() ? format_digits(v[i], digits) : "nan";
 }
 
+/// The i-th y of series s with the digits it deserves (y_digits_at), or nan past the end.
+std::string y_cell(const series_numbers& s, std::size_t i) {
+    return i < s.y.size() ? format_digits(s.y[i], y_digits_at(s, i)) : "nan";
+}
+
 std::string long_csv(const figure_numbers& n) {
     std::vector<const error_column*> errors;
     for (const auto& c : error_columns) {
@@ -287,7 +335,7 @@ std::string long_csv(const figure_numbers& n) {
             const std::string name = csv_field(s.label);
             for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
                 out << p.name << ',' << name << ',' << pendulum::format_double(s.x[i]) << ','
-                    << format_digits(s.y[i], s.y_digits) << ',' << csv_field(s.id);
+                    << y_cell(s, i) << ',' << csv_field(s.id);
                 for (const auto* c : errors) out << ',' << cell(s.*c->values, i);
                 out << '\n';
             }
@@ -300,7 +348,7 @@ std::string long_csv(const figure_numbers& n) {
 struct column {
     std::string name;
     const std::vector<double>* values;
-    int digits = 0;  ///< significant digits (format_digits)
+    const series_numbers* y_of = nullptr;  ///< the series whose y this column is (y_cell)
 };
 
 std::string wide_csv(const figure_numbers& n) {
@@ -308,7 +356,7 @@ std::string wide_csv(const figure_numbers& n) {
     for (const auto& p : n.panels) {
         for (const auto& s : p.series) {
             columns.push_back({wide_column(p.name, s.id, 'x'), &s.x});
-            columns.push_back({wide_column(p.name, s.id, 'y'), &s.y, s.y_digits});
+            columns.push_back({wide_column(p.name, s.id, 'y'), &s.y, &s});
             for (const auto& c : error_columns) {
                 const auto& v = s.*c.values;
                 if (!v.empty()) columns.push_back({wide_column(p.name, s.id, c.suffix[0]) + std::string(c.suffix + 1), &v});
@@ -323,17 +371,26 @@ std::string wide_csv(const figure_numbers& n) {
     }
     out << '\n';
     for (std::size_t r = 0; r < rows; ++r) {
-        for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << cell(*columns[c].values, r, columns[c].digits);
+        for (std::size_t c = 0; c < columns.size(); ++c) {
+            out << (c ? "," : "") << (columns[c].y_of ? y_cell(*columns[c].y_of, r) : cell(*columns[c].values, r));
+        }
         out << '\n';
     }
     return out.str();
 }
 
-std::string json_array(const std::vector<double>& v, int digits = 0) {
+std::string json_array(const std::vector<double>& v) {
     std::string out = "[";
     for (std::size_t i = 0; i < v.size(); ++i) {
-        out += (i ? "," : "") + (std::isfinite(v[i]) ? format_digits(v[i], digits) : std::string("null"));
+        out += (i ? "," : "") + (std::isfinite(v[i]) ? pendulum::format_double(v[i]) : std::string("null"));
     }
+    return out + "]";
+}
+
+/// The y values of series s, each with the digits it deserves (y_digits_at).
+std::string json_y(const series_numbers& s) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < s.y.size(); ++i) out += (i ? "," : "") + (std::isfinite(s.y[i]) ? y_cell(s, i) : std::string("null"));
     return out + "]";
 }
 
@@ -356,7 +413,7 @@ std::string json_series(const panel_numbers& p, const series_numbers& s) {
     out += ",\"units\":{\"x\":" + json_string(p.x.unit) + ",\"y\":" + json_string(p.y.unit) + "}";
     out += ",\"columns\":{\"x\":" + json_string(wide_column(p.name, s.id, 'x')) + ",\"y\":" +
            json_string(wide_column(p.name, s.id, 'y')) + "}";
-    out += ",\"x\":" + json_array(s.x) + ",\"y\":" + json_array(s.y, s.y_digits);
+    out += ",\"x\":" + json_array(s.x) + ",\"y\":" + json_y(s);
     for (const auto& c : error_columns) {
         if (!(s.*c.values).empty()) out += ",\"" + std::string(c.suffix) + "\":" + json_array(s.*c.values);
     }

@@ -46,6 +46,9 @@ struct series_numbers {
     std::optional<amplitude> theta0;   ///< its amplitude, where it has one
     std::optional<double> period;      ///< T/T0 of the method at theta0, where both are known
     int y_digits = 0;                  ///< significant digits y is printed with (0: every digit of a double)
+    /// Where each y is a difference a - b (a residual panel's (T_meas - T_ref)/T0): the size
+    /// max(|a|, |b|) of its terms, one per point, for difference_digits(); empty: none.
+    std::vector<double> y_terms;
 };
 
 /// One axis of a panel, in words.
@@ -94,6 +97,17 @@ inline constexpr double error_axis_relative = 1e-12;
 /// axis those its relative error error_axis_relative leaves (12), elsewhere 0, every digit
 /// of a double (the shortest round trip). One rule for every error axis and every format.
 int printed_digits(const panel_spec& p);
+
+/// The significant digits a difference a - b computed in doubles deserves, from its size
+/// and the size of its terms, max(|a|, |b|): floor(log10(|a - b| / (2^-52 max(|a|, |b|)))),
+/// clamped to 1 .. 17 (17 where the terms are 0 or not finite, and where nothing cancels:
+/// |a - b| >= max(|a|, |b|), terms of opposite signs or one of them 0). One rule for every residual
+/// and difference column, in long CSV, wide CSV and JSON.
+int difference_digits(double difference, double terms);
+
+/// The digits y[i] of series s is printed with: difference_digits() where s has its terms,
+/// s.y_digits otherwise.
+int y_digits_at(const series_numbers& s, std::size_t i);
 
 /// v with `digits` significant digits, written shortest ("0.0123", not "0.012300000000");
 /// every digit of a double (format_double) where digits is 0.

@@ -223,6 +223,124 @@ mp::real evaluate_written(const written_number& x, mpfr_prec_t bits) {
     return reading(x.text(), x.angle_units()).at(bits);
 }
 
+namespace {
+
+/// A decimal number as written ("2.5", "1e-19800", ".5E3") as an exact rational; false where
+/// its exponent is beyond 100000 in size (10^100000 is 41 kB, and no start needs more).
+bool decimal_rational(const std::string& digits, mpq_ptr out) {
+    const auto e = digits.find_first_of("eE");
+    const std::string mantissa = digits.substr(0, e);
+    long exponent = 0;
+    if (e != std::string::npos) {
+        errno = 0;
+        exponent = std::strtol(digits.c_str() + e + 1, nullptr, 10);
+        if (errno != 0 || exponent > 100000 || exponent < -100000) return false;
+    }
+    std::string whole;
+    long fraction = 0;
+    bool after_point = false;
+    for (const char c : mantissa) {
+        if (c == '.') {
+            after_point = true;
+        } else if (c >= '0' && c <= '9') {
+            whole += c;
+            fraction += after_point ? 1 : 0;
+        }
+    }
+    if (whole.empty()) return false;
+    mpz_t scale;
+    mpz_init(scale);
+    mpq_set_str(out, whole.c_str(), 10);
+    const long shift = exponent - fraction;
+    mpz_ui_pow_ui(scale, 10, static_cast<unsigned long>(shift < 0 ? -shift : shift));
+    if (shift >= 0) mpz_mul(mpq_numref(out), mpq_numref(out), scale);
+    else mpz_mul(mpq_denref(out), mpq_denref(out), scale);
+    mpz_clear(scale);
+    mpq_canonicalize(out);
+    return true;
+}
+
+/// a * b for exact values, where one of them has no multiple of pi; nothing otherwise.
+std::optional<rational_pi> exact_product(const rational_pi& x, const rational_pi& y) {
+    const bool x_rational = mpq_sgn(x.b.get()) == 0;
+    if (!x_rational && mpq_sgn(y.b.get()) != 0) return std::nullopt;  // a multiple of pi^2
+    const rational_pi& scaled = x_rational ? y : x;
+    const rational& by = x_rational ? x.a : y.a;
+    rational_pi out = scaled;
+    mpq_mul(out.a.get(), out.a.get(), by.get());
+    mpq_mul(out.b.get(), out.b.get(), by.get());
+    return out;
+}
+
+/// x / y for exact values, where y is a rational other than 0; nothing otherwise.
+std::optional<rational_pi> exact_quotient(const rational_pi& x, const rational_pi& y) {
+    if (mpq_sgn(y.b.get()) != 0 || mpq_sgn(y.a.get()) == 0) return std::nullopt;
+    rational_pi out = x;
+    mpq_div(out.a.get(), out.a.get(), y.a.get());
+    mpq_div(out.b.get(), out.b.get(), y.a.get());
+    return out;
+}
+
+/// One operation of the angle language on exact values: the result, or nothing.
+std::optional<rational_pi> exact_step(op what, const rational_pi& x, const rational_pi& y) {
+    rational_pi out = x;
+    switch (what) {
+        case op::add:
+            mpq_add(out.a.get(), x.a.get(), y.a.get());
+            mpq_add(out.b.get(), x.b.get(), y.b.get());
+            return out;
+        case op::sub:
+            mpq_sub(out.a.get(), x.a.get(), y.a.get());
+            mpq_sub(out.b.get(), x.b.get(), y.b.get());
+            return out;
+        case op::mul: return exact_product(x, y);
+        case op::div: return exact_quotient(x, y);
+        default: return std::nullopt;
+    }
+}
+
+}  // namespace
+
+std::optional<rational_pi> exact_written(const written_number& x) {
+    if (x.text().empty()) {
+        rational_pi v;
+        mpq_set_d(v.a.get(), x.value());
+        return v;
+    }
+    const grammar::tree t = grammar::parse(x.text(), language_of(x.angle_units()));
+    std::vector<rational_pi> stack;
+    for (const auto& n : t.nodes) {
+        if (n.what == op::number || n.what == op::pi) {
+            stack.emplace_back();
+            if (n.what == op::pi) mpq_set_ui(stack.back().b.get(), 1, 1);
+            else if (!decimal_rational(n.digits, stack.back().a.get())) return std::nullopt;
+            continue;
+        }
+        if (n.what == op::neg) {
+            mpq_neg(stack.back().a.get(), stack.back().a.get());
+            mpq_neg(stack.back().b.get(), stack.back().b.get());
+            continue;
+        }
+        if (stack.size() < 2) return std::nullopt;
+        const rational_pi y = stack.back();
+        stack.pop_back();
+        auto result = exact_step(n.what, stack.back(), y);
+        if (!result) return std::nullopt;
+        stack.back() = *result;
+    }
+    if (stack.size() != 1) return std::nullopt;
+    rational_pi v = stack.back();
+    if (t.what == grammar::unit::degrees) {
+        // d degrees are d/180 pi.
+        if (mpq_sgn(v.b.get()) != 0) return std::nullopt;
+        rational one_eighty;
+        mpq_set_ui(one_eighty.get(), 180, 1);
+        mpq_div(v.b.get(), v.a.get(), one_eighty.get());
+        mpq_set_ui(v.a.get(), 0, 1);
+    }
+    return v;
+}
+
 double parse_angle(std::string_view text) { return evaluate(text, true); }
 
 amplitude parse_amplitude(std::string_view text, std::string_view name) {

@@ -115,15 +115,15 @@ namespace {
 
 /// A source from one of the MPFR solutions above at the exact amplitude a.
 std::shared_ptr<const exact_source> source_of(const amplitude& a, mp_solution (*f)(const mp::mp_amplitude&)) {
-    return make_source([a, f](mpfr_prec_t bits) { return f(mp::exact_amplitude(a, bits)); });
+    return make_source(a, [f](const amplitude_source& x, mpfr_prec_t bits) { return f(x(bits)); });
 }
 
 }  // namespace
 
 fourier_solution harmonic(const amplitude& a) {
     const double theta0 = a.radians();
-    return {1.0, {theta0}, make_source([a](mpfr_prec_t bits) {
-                return mp_solution{mp::real(1.0, bits), {mp::exact_amplitude(a, bits).theta}};
+    return {1.0, {theta0}, make_source(a, [](const amplitude_source& x, mpfr_prec_t bits) {
+                return mp_solution{mp::real(1.0, bits), {x(bits).theta}};
             })};
 }
 
@@ -192,8 +192,8 @@ fourier_solution polynomial(const amplitude& a) {
     const auto p = polynomial_of(view);
     return {static_cast<double>(1 / p[3]),
             {static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])},
-            make_source([a](mpfr_prec_t bits) {
-                const auto q = polynomial_of(mp::exact_amplitude(a, bits));
+            make_source(a, [](const amplitude_source& x, mpfr_prec_t bits) {
+                const auto q = polynomial_of(x(bits));
                 return mp_solution{1.0 / q[3], {q[0], q[1], q[2]}};
             })};
 }
@@ -222,9 +222,9 @@ constexpr int extended_ratio_bits = 56;
 /// asked (without them a phase at pi - 1e-12, order 92, came from a 73-bit run: off by 1e-7).
 std::shared_ptr<const exact_source> iteration_source(const amplitude& a, int n, long double known_ratio,
                                                      int known_bits, mpfr_prec_t extra_bits = 0) {
-    return make_source([a, n, extra_bits](mpfr_prec_t asked) {
+    return make_source(a, [a, n, extra_bits](const amplitude_source& amplitude_at, mpfr_prec_t asked) {
         const mpfr_prec_t bits = asked + extra_bits;
-        const auto x = mp::exact_amplitude(a, bits);
+        const auto x = amplitude_at(bits);
         std::vector<std::vector<mp::real>> u;
         const auto lambdas = detail::mp_lambdas(x, n, bits, {}, &u);
         if (lambdas.size() <= static_cast<std::size_t>(n) || !lambdas[static_cast<std::size_t>(n)]) {

@@ -158,7 +158,7 @@ motion motion::from_state(const written_number& theta, const written_number& ome
         return m;
     }
     const start_energy e = decide_start([&](mpfr_prec_t bits) { return state_energy_at(theta, omega, bits); },
-                                        state_text(theta, omega));
+                                        state_text(theta, omega), exactly_separatrix(theta, omega));
     motion m;
     m.start_ = {theta.value(), omega.value()};
     m.first_ = theta;
@@ -176,7 +176,8 @@ motion motion::from_energy(const written_number& energy) {
                            (energy.text().empty() ? format_double(value) : energy.text()));
     }
     const start_energy e = decide_start([&](mpfr_prec_t bits) { return written_energy_at(energy, bits); },
-                                        "energy = " + (energy.text().empty() ? format_double(value) : energy.text()));
+                                        "energy = " + (energy.text().empty() ? format_double(value) : energy.text()),
+                                        exactly_two(energy));
     const start_numbers n = numbers_of(e);
     motion m;
     m.origin_ = origin::energy;
@@ -286,6 +287,11 @@ double motion::libration_clock(double w0_t) const {
     (void)libration();
     // Backwards, theta = -theta_lib(t + offset) = theta_lib(t + offset + 2 K).
     return w0_t + offset_ + (mirror_ < 0 ? 2.0 * quarter_ : 0.0);
+}
+
+std::pair<double, bool> motion::libration_clock_parts() const {
+    (void)libration();
+    return {offset_, mirror_ < 0};
 }
 
 double motion::libration_center() const {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace pendulum {
 
@@ -129,6 +130,9 @@ public:
     /// where the paper's solutions start (theta = center + libration().theta(clock)); throws as
     /// amplitude() does.
     double libration_clock(double w0_t) const;
+    /// libration_clock(0) as its two parts, each exact: the forward motion's time at the start
+    /// and whether half a period (2 K) is added (a backwards start); throws as amplitude() does.
+    std::pair<double, bool> libration_clock_parts() const;
     /// The multiple of 2 pi a libration swings about; throws as amplitude() does.
     double libration_center() const;
     /// A libration's theta at the time s periods T after its start: the start's place in its

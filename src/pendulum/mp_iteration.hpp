@@ -22,6 +22,13 @@ struct mp_solution {
     std::vector<mp::real> coefficients; ///< c1, c3, ...
 };
 
+/// An exact amplitude with any number of bits asked for.
+using amplitude_source = std::function<mp::mp_amplitude(mpfr_prec_t bits)>;
+
+/// A method's solution in MPFR at the exact amplitude its `amplitude_at` gives, with `bits`
+/// (at least 64): w/w0 within a few units of 2^-(bits - 16).
+using solution_at_amplitude = std::function<mp_solution(const amplitude_source& amplitude_at, mpfr_prec_t bits)>;
+
 /// A method's solution at any precision, from the exact amplitude: what a fourier_solution
 /// carries so that its phase (w/w0) w0 t can be formed to the last bit at any time.
 struct exact_source {
@@ -31,12 +38,18 @@ struct exact_source {
     /// run costs seconds at order 200), right to 2^-known_bits relative; 0 bits: none.
     long double known_ratio = 0;
     int known_bits = 0;  ///< see known_ratio
+    /// The same method at another exact amplitude: a libration started from a state or an
+    /// energy, whose amplitude only its numbers as written hold (its double is rounded).
+    solution_at_amplitude at_amplitude{};
 };
 
-/// A shared source for a fourier_solution.
-inline std::shared_ptr<const exact_source> make_source(std::function<mp_solution(mpfr_prec_t bits)> at,
+/// A shared source for a fourier_solution of the amplitude a: `at` is `f` at a itself.
+inline std::shared_ptr<const exact_source> make_source(const amplitude& a, solution_at_amplitude f,
                                                        long double known_ratio = 0, int known_bits = 0) {
-    return std::make_shared<const exact_source>(exact_source{std::move(at), known_ratio, known_bits});
+    auto at = [a, f](mpfr_prec_t bits) {
+        return f([&a](mpfr_prec_t b) { return mp::exact_amplitude(a, b); }, bits);
+    };
+    return std::make_shared<const exact_source>(exact_source{std::move(at), known_ratio, known_bits, std::move(f)});
 }
 
 }  // namespace pendulum

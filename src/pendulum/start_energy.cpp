@@ -4,6 +4,7 @@
 #include "pendulum/written_mp.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <climits>
 #include <cmath>
@@ -125,7 +126,59 @@ start_energy held(start_energy e, const std::string& what) {
 
 }  // namespace
 
-start_energy decide_start(const std::function<start_energy(mpfr_prec_t)>& at, const std::string& what) {
+namespace {
+
+/// cos(b pi) where it is rational (b a multiple of 1/6 at 0, +-1/3, +-1/2, +-2/3, 1 modulo 2),
+/// into `out`; false otherwise.
+bool rational_cosine(const rational& b, rational& out) {
+    rational six_b;
+    mpq_set_ui(six_b.get(), 6, 1);
+    mpq_mul(six_b.get(), six_b.get(), b.get());
+    if (mpz_cmp_ui(mpq_denref(six_b.get()), 1) != 0) return false;
+    // k pi/6 with k modulo 12, and the rational cosines among them.
+    const unsigned long k = mpz_fdiv_ui(mpq_numref(six_b.get()), 12);
+    constexpr std::array<int, 12> twice_cosine{2, 0, 1, 0, -1, 0, -2, 0, -1, 0, 1, 0};
+    constexpr std::array<bool, 12> rational_there{true, false, true, true, true, false,
+                                                  true, false, true, true, true, false};
+    if (!rational_there[k]) return false;
+    mpq_set_si(out.get(), twice_cosine[k], 2);
+    mpq_canonicalize(out.get());
+    return true;
+}
+
+}  // namespace
+
+bool exactly_separatrix(const written_number& theta, const written_number& omega) {
+    const auto th = exact_written(theta);
+    const auto w = exact_written(omega);
+    if (!th || !w || mpq_sgn(th->a.get()) != 0 || mpq_sgn(w->b.get()) != 0) return false;
+    rational c;
+    if (!rational_cosine(th->b, c)) return false;
+    // omega^2 = 2 (1 + cos theta).
+    rational lhs;
+    rational rhs;
+    mpq_mul(lhs.get(), w->a.get(), w->a.get());
+    mpq_set_ui(rhs.get(), 1, 1);
+    mpq_add(rhs.get(), rhs.get(), c.get());
+    mpq_add(rhs.get(), rhs.get(), rhs.get());
+    return mpq_equal(lhs.get(), rhs.get()) != 0;
+}
+
+bool exactly_two(const written_number& energy) {
+    const auto e = exact_written(energy);
+    return e && mpq_sgn(e->b.get()) == 0 && mpq_cmp_ui(e->a.get(), 2, 1) == 0;
+}
+
+start_energy decide_start(const std::function<start_energy(mpfr_prec_t)>& at, const std::string& what,
+                          bool on_separatrix) {
+    if (on_separatrix) {
+        start_energy e = at(start_first_bits);
+        e.energy = real(2.0, start_first_bits);
+        e.gap = real(0.0, start_first_bits);
+        e.kind = regime::separatrix;
+        e.cancelled = 0;
+        return e;
+    }
     start_energy coarse = at(start_first_bits);
     for (mpfr_prec_t bits = 2 * start_first_bits; bits <= start_ceiling_bits; bits *= 2) {
         start_energy fine = at(bits);
@@ -133,14 +186,9 @@ start_energy decide_start(const std::function<start_energy(mpfr_prec_t)>& at, co
         // The energy too must agree: an angle far out (1e307pi) loses its place in the turn to
         // the precision, and a state at rest at a multiple of 2 pi has E = 0 to every bit.
         if (gap_decided && agree(coarse.energy, fine.energy)) return held(std::move(fine), what);
-        if (bits == start_ceiling_bits) {
-            if (!vanishes(coarse) || !vanishes(fine)) refuse_undecided(coarse, fine, gap_decided, bits, what);
-            // E = 2 to the ceiling's bits of its terms: the numbers as written are on the separatrix.
-            fine.energy = real(2.0, bits);
-            fine.gap = real(0.0, bits);
-            fine.kind = regime::separatrix;
-            return fine;
-        }
+        // At the ceiling undecided: a gap below 2^-65528 of its terms is not the separatrix
+        // unless proved so (on_separatrix), which returned above.
+        if (bits == start_ceiling_bits) refuse_undecided(coarse, fine, gap_decided, bits, what);
         coarse = std::move(fine);
     }
     throw domain_error("unreachable");  // the loop returns or throws at the ceiling
@@ -186,12 +234,34 @@ start_numbers numbers_of(const start_energy& e) {
     return n;
 }
 
+namespace {
+
+/// The energy and gap of a motion given as a state or an energy, with `p` bits.
+start_energy written_start(const motion& m, mpfr_prec_t p) {
+    return m.given_as() == motion::origin::energy ? written_energy_at(m.written_first(), p)
+                                                  : state_energy_at(m.written_first(), m.written_second(), p);
+}
+
+}  // namespace
+
+mp::mp_amplitude written_amplitude(const motion& m, mpfr_prec_t bits) {
+    if (m.given_as() == motion::origin::amplitude || m.kind() != regime::libration) {
+        throw domain_error("written_amplitude needs a libration given as a state or an energy");
+    }
+    const mpfr_prec_t p = bits + 64 + m.cancelled_bits();
+    const start_energy e = written_start(m, p);
+    const real k = mp::sqrt(e.energy / 2.0);
+    const real kp = mp::sqrt(e.gap / 2.0);
+    real theta(p);
+    mpfr_atan2(theta.get(), k.get(), kp.get(), MPFR_RNDN);
+    const real one_minus_kp = (e.energy / 2.0) / (1.0 + kp);
+    return {real(2.0 * theta, bits), real(k, bits), real(kp, bits), real(one_minus_kp, bits)};
+}
+
 real written_period(const motion& m, mpfr_prec_t bits) {
     if (!m.has_period()) (void)m.period();  // throws, naming the separatrix
     const mpfr_prec_t p = bits + 64 + m.cancelled_bits();
-    const start_energy e = m.given_as() == motion::origin::energy
-                               ? written_energy_at(m.written_first(), p)
-                               : state_energy_at(m.written_first(), m.written_second(), p);
+    const start_energy e = written_start(m, p);
     const real one(1.0, p);
     const real exact = m.kind() == regime::libration
                            ? 2.0 * mp::pi(p) / mp::agm(one, mp::sqrt(e.gap / 2.0))

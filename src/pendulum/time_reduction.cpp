@@ -71,14 +71,22 @@ namespace {
 /// w/w0 from the solution's source, with `bits`, right enough for phases up to 2^phase_exponent
 /// in size: within 2^-56 rad (an eighth of an ulp of pi). The source's known ratio where it
 /// is that right, its MPFR run otherwise (with 16 bits to spare for its own rounding).
-real exact_ratio(const exact_source& source, long phase_exponent, mpfr_prec_t bits) {
+/// A libration given as a state or an energy runs its approximant at its own exact
+/// amplitude (from the numbers as written, written_amplitude()), not at its double: that one
+/// is off by up to half an ulp, and so is the source's known ratio.
+real exact_ratio(const exact_source& source, long phase_exponent, mpfr_prec_t bits, const motion* written) {
     const long needed = std::max(0L, phase_exponent + 1) + 56;
+    const mpfr_prec_t asked = static_cast<mpfr_prec_t>(std::max(64L, needed + 16));
+    if (written != nullptr && source.at_amplitude) {
+        const amplitude_source exact = [written](mpfr_prec_t b) { return written_amplitude(*written, b); };
+        return real(source.at_amplitude(exact, asked).ratio, bits);
+    }
     if (source.known_bits >= needed) {
         real r(bits);
         mpfr_set_ld(r.get(), source.known_ratio, MPFR_RNDN);
         return r;
     }
-    return real(source.at(static_cast<mpfr_prec_t>(std::max(64L, needed + 16))).ratio, bits);
+    return real(source.at(asked).ratio, bits);
 }
 
 }  // namespace
@@ -87,8 +95,19 @@ real exact_ratio(const exact_source& source, long phase_exponent, mpfr_prec_t bi
 struct reducer_setup {
     static std::unique_ptr<time_reducer::state> make(const std::function<real(mpfr_prec_t)>& period_at,
                                                      const time_scale& scale, double largest, double frequency_ratio,
-                                                     const exact_source* source = nullptr);
+                                                     const exact_source* source = nullptr,
+                                                     const motion* written = nullptr);
 };
+
+namespace {
+
+/// The motion itself where its amplitude is held only by its numbers as written (a
+/// libration from a state or an energy), null otherwise.
+const motion* written_libration(const motion& m) {
+    return m.given_as() != motion::origin::amplitude && m.kind() == regime::libration ? &m : nullptr;
+}
+
+}  // namespace
 
 time_reducer::time_reducer(const amplitude& a, const time_scale& scale, double largest, double frequency_ratio)
     : state_(reducer_setup::make([&a](mpfr_prec_t bits) { return libration_period(a, bits); }, scale, largest,
@@ -105,11 +124,12 @@ time_reducer::time_reducer(const amplitude& a, const time_scale& scale, double l
 
 time_reducer::time_reducer(const motion& m, const time_scale& scale, double largest, const fourier_solution& solution)
     : state_(reducer_setup::make([&m](mpfr_prec_t bits) { return motion_period(m, bits); }, scale, largest,
-                                 solution.frequency_ratio, solution.exact.get())) {}
+                                 solution.frequency_ratio, solution.exact.get(), written_libration(m))) {}
 
 std::unique_ptr<time_reducer::state> reducer_setup::make(const std::function<real(mpfr_prec_t)>& period_at,
                                                          const time_scale& scale, double largest,
-                                                         double frequency_ratio, const exact_source* source) {
+                                                         double frequency_ratio, const exact_source* source,
+                                                         const motion* written) {
     if (!(std::isfinite(largest) && largest >= 0)) {
         throw domain_error("the largest time must be finite, got " + format_double(largest));
     }
@@ -128,7 +148,8 @@ std::unique_ptr<time_reducer::state> reducer_setup::make(const std::function<rea
     real per_unit = unit_scale(scale, period);
     // The solution's own w/w0 where it has one, the double taken as exact otherwise.
     const bool exact = source != nullptr && frequency_ratio > 0;
-    real ratio = exact ? exact_ratio(*source, time_exponent + mp::exponent(rough_scale) + std::ilogb(frequency_ratio), bits)
+    real ratio = exact ? exact_ratio(*source, time_exponent + mp::exponent(rough_scale) + std::ilogb(frequency_ratio), bits,
+                                     written)
                        : real(frequency_ratio, bits);
     const long double ratio_extended = exact ? extended(ratio) : static_cast<long double>(frequency_ratio);
     auto s = std::make_unique<time_reducer::state>(time_reducer::state{
@@ -199,6 +220,18 @@ double time_reducer::phase(double s) const {
     mpfr_mul_d(product.get(), state_->scale.get(), s, MPFR_RNDN);
     mpfr_mul(product.get(), product.get(), state_->ratio.get(), MPFR_RNDN);
     mpfr_remainder(rest.get(), product.get(), state_->two_pi.get(), MPFR_RNDN);
+    return rest.to_double();
+}
+
+double time_reducer::start_phase(const motion& m) const {
+    if (!(state_->ratio_extended > 0)) throw domain_error("a phase needs the Fourier solution's frequency ratio");
+    const auto [offset, half_period] = m.libration_clock_parts();
+    real clock(state_->product.precision());
+    mpfr_set_d(clock.get(), offset, MPFR_RNDN);
+    if (half_period) mpfr_add(clock.get(), clock.get(), (state_->period / 2.0).get(), MPFR_RNDN);
+    mpfr_mul(clock.get(), clock.get(), state_->ratio.get(), MPFR_RNDN);
+    real rest(state_->rest.precision());
+    mpfr_remainder(rest.get(), clock.get(), state_->two_pi.get(), MPFR_RNDN);
     return rest.to_double();
 }
 

@@ -56,6 +56,11 @@ public:
     /// (to [-pi, pi] and rounded once with the solution's exact source); throws domain_error
     /// unless a frequency ratio was given. Safe to call from several threads at once.
     double phase(double s) const;
+    /// The phase of the Fourier solution at time 0 of the libration m this reducer was made
+    /// for: (w/w0) times m's clock at its start (libration_clock(0)), with the reducer's w/w0
+    /// and half its exact period, in MPFR, reduced to [-pi, pi] and rounded once (start_phase()
+    /// takes both as doubles). Throws domain_error unless a frequency ratio was given.
+    double start_phase(const motion& m) const;
     /// angle + 2 pi n turns_per_period rounded once, n the whole periods (signed) the last
     /// operator() took off: a rotation's unwrapped angle to the last bit at any time.
     double plus_turns(double angle, int turns_per_period) const;

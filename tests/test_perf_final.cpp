@@ -168,12 +168,12 @@ std::string gif_refusal(double frames, int width, int height) {
 
 }  // namespace
 
-// A GIF's size is bounded before work: at 720p, 1080p and 4K the most frames whose pixels
-// add up to at most max_gif_pixels are accepted, one frame more refused with the size and
-// what to lower.
+// A GIF's size is bounded before work: at 720p, 1080p and 4K the most frames whose bytes'
+// bound (gif_bytes_bound) is within 50 MB are accepted, one frame more refused with the size
+// and what to lower (the boundary at more sizes: GifBytes.MostFramesAcceptedOneMoreRefused).
 TEST(PerfGif, SizeBoundAcceptsNAndRefusesNPlusOne) {
     for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}, std::pair{3840, 2160}}) {
-        const double most = std::floor(plot::max_gif_pixels / (static_cast<double>(w) * h));
+        const double most = plot::gif_most_frames(w, h);
         EXPECT_EQ(gif_refusal(most, w, h), "") << w << "x" << h;
         const std::string message = gif_refusal(most + 1, w, h);
         EXPECT_NE(message.find(std::to_string(static_cast<long>(most + 1)) + " frames of " + std::to_string(w) + " x " +
@@ -183,10 +183,8 @@ TEST(PerfGif, SizeBoundAcceptsNAndRefusesNPlusOne) {
         EXPECT_NE(message.find("50 MB"), std::string::npos) << message;
         EXPECT_NE(message.find("lower --size or --dpi"), std::string::npos) << message;
     }
-    EXPECT_EQ(gif_refusal(4340, 1280, 720), "");  // the 30-period swing (3810 frames) fits
-    EXPECT_NE(gif_refusal(4341, 1280, 720), "");
-    EXPECT_EQ(gif_refusal(482, 3840, 2160), "");  // 4K: three periods of the swing (127 frames each)
-    EXPECT_NE(gif_refusal(483, 3840, 2160), "");
+    EXPECT_EQ(gif_refusal(3684, 1280, 720), "");  // the 30-period swing fits
+    EXPECT_NE(gif_refusal(3684, 1920, 1080), "");
 }
 
 // The 30-period swing at 1080p and 4K (about 165 MB) is refused before any work: exit 2,
@@ -204,9 +202,9 @@ TEST(PerfGif, SwingOf30PeriodsAbove720pRefusedBeforeWork) {
         const auto r = run_cli("render swing30.toml --theme slides --size " + size + " -f gif -o .", dir);
         EXPECT_EQ(r.status, 2) << size;
         EXPECT_NE(r.err.find("swing30.gif: "), std::string::npos) << r.err;
-        EXPECT_NE(r.err.find(" x " + size.substr(size.find('x') + 1) + " pixels are "), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(" x " + size.substr(size.find('x') + 1) + " pixels "), std::string::npos) << r.err;
         if (size == "1920x1080") {
-            EXPECT_NE(r.err.find("a GIF holds at most 4e+09"), std::string::npos) << r.err;
+            EXPECT_NE(r.err.find("MB as a GIF, more than the 50 MB"), std::string::npos) << r.err;
         }
         EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
     }

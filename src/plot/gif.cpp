@@ -293,14 +293,26 @@ struct gif_encoder::state {
     }
 };
 
+double gif_bytes_bound(double frames, int width, int height) {
+    const double pixels = static_cast<double>(width) * static_cast<double>(height);
+    return (frames + gif_extra_frames) * gif_frame_bytes * std::cbrt(pixels * pixels);
+}
+
+double gif_most_frames(int width, int height) {
+    const double pixels = static_cast<double>(width) * static_cast<double>(height);
+    return std::max(0.0, std::floor(max_gif_bytes / (gif_frame_bytes * std::cbrt(pixels * pixels)) - gif_extra_frames));
+}
+
 void check_gif_size(double frames, int width, int height) {
-    const double pixels = frames * width * height;
-    if (pixels <= max_gif_pixels) return;
-    char text[320];
+    const double most = gif_most_frames(width, height);
+    if (frames <= most) return;
+    char text[400];
     std::snprintf(text, sizeof text,
-                  "%.0f frames of %d x %d pixels are %.4g pixels; a GIF holds at most %.4g so that it stays within "
-                  "50 MB (lower --size or --dpi, the fps, or the periods or duration_s; or write mp4 or webm)",
-                  frames, width, height, pixels, max_gif_pixels);
+                  "%.0f frames of %d x %d pixels may take %.0f MB as a GIF, more than the %.0f MB a GIF may take "
+                  "(at most %.0f frames of this size): lower --size or --dpi, the fps, or the periods or duration_s "
+                  "(or --frames); or write -f mp4 or webm",
+                  frames, width, height, std::ceil(gif_bytes_bound(frames, width, height) / 1e6), max_gif_bytes / 1e6,
+                  most);
     throw bad_input(text);
 }
 

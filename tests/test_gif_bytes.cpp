@@ -139,3 +139,15 @@ TEST(GifBytes, RefusedBeforeWorkNothingWritten) {
     }
     std::filesystem::remove_all(dir);
 }
+
+// Hostile: a frame so large that even one may pass 50 MB (65535 x 65535, the most a GIF's
+// side holds) is refused alone, the message saying that no frame of that size fits; the
+// smallest frame is accepted by the hundred thousand.
+TEST(GifBytes, ExtremeSizes) {
+    EXPECT_EQ(plot::gif_most_frames(65535, 65535), 0);
+    const std::string message = refusal(1, 65535, 65535);
+    EXPECT_NE(message.find("1 frames of 65535 x 65535 pixels may take "), std::string::npos) << message;
+    EXPECT_NE(message.find("at most 0 frames of this size"), std::string::npos) << message;
+    EXPECT_GT(plot::gif_most_frames(1, 1), 1e5);
+    EXPECT_EQ(refusal(plot::gif_most_frames(1, 1), 1, 1), "");
+}

@@ -151,3 +151,21 @@ TEST(GifBytes, ExtremeSizes) {
     EXPECT_GT(plot::gif_most_frames(1, 1), 1e5);
     EXPECT_EQ(refusal(plot::gif_most_frames(1, 1), 1, 1), "");
 }
+
+// The bound before the work is an estimate from the built-ins' rates; the bytes themselves
+// are held to 50 MB as the parts are written, for any spec: 50,000,000 bytes pass, one more is
+// refused with the frames written so far, the size and what to change.
+TEST(GifBytes, WrittenBytesAreHeldToTheBoundAtAnyRate) {
+    EXPECT_NO_THROW(plot::check_gif_written(50'000'000, 900, 1000, 1280, 720));
+    try {
+        plot::check_gif_written(50'000'001, 901, 1000, 1280, 720);
+        ADD_FAILURE() << "50,000,001 bytes accepted";
+    } catch (const plot::bad_input& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("1000 frames of 1280 x 720 pixels: the GIF passed the 50 MB a GIF may take after 901 of them"),
+                  std::string::npos)
+            << what;
+        EXPECT_NE(what.find("nothing is written"), std::string::npos) << what;
+        EXPECT_NE(what.find("-f mp4 or webm"), std::string::npos) << what;
+    }
+}

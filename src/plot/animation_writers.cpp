@@ -174,6 +174,7 @@ void write_gif_animation(const animation_frames& frames, const theme& th, const 
     const int parts = (count + part_frames - 1) / part_frames;
     streamed_file file(dir / gif_animation_file(id, frames.first, frames.count));
     const unsigned long animation = ++gif_animations;
+    std::size_t written = 0;
     struct part {
         std::string head;  // the file's head, kept from the first part only
         std::string body;  // the part's frames
@@ -206,7 +207,12 @@ void write_gif_animation(const animation_frames& frames, const theme& th, const 
                        auto [head, body] = gif_encoder::split(gif.finish(), head_size);
                        return part{p == 0 ? std::move(head) : std::string(), std::move(body)};
                    },
-                   [&](int, part done) {
+                   [&](int p, part done) {
+                       // The bound checked before the work is an estimate from the built-ins'
+                       // rates: the bytes themselves are held to it as they are written.
+                       written += done.head.size() + done.body.size();
+                       check_gif_written(written + 1, std::min(last, first + (p + 1) * part_frames - 1) - first + 1,
+                                         count, width, height);
                        file.write(done.head);
                        file.write(done.body);
                    });

@@ -316,6 +316,17 @@ void check_gif_size(double frames, int width, int height) {
     throw bad_input(text);
 }
 
+void check_gif_written(std::size_t bytes, int done, int frames, int width, int height) {
+    if (static_cast<double>(bytes) <= max_gif_bytes) return;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%d frames of %d x %d pixels: the GIF passed the %.0f MB a GIF may take after %d of them (its frames "
+                  "change more than the estimate foresaw; nothing is written): lower --size or --dpi, the fps, or the "
+                  "periods or duration_s (or --frames); or write -f mp4 or webm",
+                  frames, width, height, max_gif_bytes / 1e6, done);
+    throw bad_input(text);
+}
+
 double gif_playback_rate(double fps) {
     if (!(fps > 0)) throw std::invalid_argument("a frame rate is above 0");
     const long k = std::max(2L, std::lround(100.0 / fps));

@@ -3,6 +3,7 @@
 
 #include "plot/theme.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -47,6 +48,11 @@ double gif_most_frames(int width, int height);
 /// has more than gif_most_frames, naming the frames, the size, the bytes they may take, the
 /// most frames of that size and what to change.
 void check_gif_size(double frames, int width, int height);
+
+/// Throws bad_input if `bytes`, written for the first `done` of `frames` frames of width x
+/// height pixels, pass max_gif_bytes: the promise holds for any spec, also one whose frames
+/// change more than the built-ins' (the temporary is then removed; nothing is written).
+void check_gif_written(std::size_t bytes, int done, int frames, int width, int height);
 
 /// An 8-bit RGB colour of a GIF palette.
 struct rgb8 {

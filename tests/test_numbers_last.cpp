@@ -2,6 +2,7 @@
 // The audit's reproductions (tests/data/issue_numbers_audit.md) against mpmath, the residual
 // digit rule of the data writers, and approximants of states up to the largest double.
 #include "figures/figure_data.hpp"
+#include "pendulum/written_mp.hpp"
 #include "process.hpp"
 #include "reference.hpp"
 #include "reference_rows.hpp"
@@ -269,3 +270,22 @@ TEST(SeparatrixCeiling, InputsExactlyOnTheSeparatrixStayTheSeparatrix) {
 }
 
 }  // namespace
+
+// The exact value of a number as written stays within max_exact_bits on the way: three
+// factors of 1e-99999 (996,573 bits of denominator) are exact, a fourth is only MPFR's, so a
+// 1000-byte product of 110 of them is decided (refused at the ceiling) in a fraction of a
+// second instead of 12 s of GMP multiplications; a sum that cancels exactly is still the
+// separatrix.
+TEST(NumbersLast, ExactValuesStayWithinTheirBits) {
+    const std::string three = "1+1e-99999*1e-99999*1e-99999";
+    EXPECT_TRUE(pendulum::exact_written(pendulum::written_number::angle(three)).has_value());
+    EXPECT_FALSE(pendulum::exact_written(pendulum::written_number::angle(three + "*1e-99999")).has_value());
+    std::string product = "1e-99999";
+    for (int i = 1; i < 110; ++i) product += "*1e-99999";
+    const auto r = test_support::run_cli("eval --theta0 '2pi/3+" + product + "' --omega0 1");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("cannot be decided from the numbers as written within 65536 bits"), std::string::npos) << r.err;
+    const auto same = test_support::run_cli("eval --theta0 '2pi/3+1e-99999-1e-99999' --omega0 1");
+    EXPECT_EQ(same.status, 0) << same.err;
+    EXPECT_NE(same.out.find(",separatrix,"), std::string::npos) << same.out;
+}

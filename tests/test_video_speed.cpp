@@ -153,8 +153,8 @@ TEST(VideoSpeed, Mp4PeakMemoryDoesNotGrowWithTheLength) {
     std::filesystem::remove_all(dir);
 }
 
-// The swing GIF at 720p stays within 50 MB for 30 periods (3810 frames; 38.8 MB measured,
-// 45 s of CPU). A part of it does not tell: its first periods take more bytes a frame than
+// The swing GIF at 720p stays within 50 MB for 30 periods (3684 frames; 38.0 MB measured,
+// about 45 s of CPU). A part of it does not tell: its first periods take more bytes a frame than
 // the rest (381 frames, 5.09 MB).
 TEST(VideoSpeed, SwingGifOf30PeriodsStaysWithin50MB) {
     const auto dir = temp_dir("video-speed-gif");

@@ -299,6 +299,16 @@ std::optional<rational_pi> exact_step(op what, const rational_pi& x, const ratio
     }
 }
 
+/// True where every numerator and denominator of v is within max_exact_bits.
+bool within_exact_bits(const rational_pi& v) {
+    for (mpq_srcptr q : {v.a.get(), v.b.get()}) {
+        if (mpz_sizeinbase(mpq_numref(q), 2) > max_exact_bits || mpz_sizeinbase(mpq_denref(q), 2) > max_exact_bits) {
+            return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 std::optional<rational_pi> exact_written(const written_number& x) {
@@ -325,7 +335,7 @@ std::optional<rational_pi> exact_written(const written_number& x) {
         const rational_pi y = stack.back();
         stack.pop_back();
         auto result = exact_step(n.what, stack.back(), y);
-        if (!result) return std::nullopt;
+        if (!result || !within_exact_bits(*result)) return std::nullopt;
         stack.back() = *result;
     }
     if (stack.size() != 1) return std::nullopt;

@@ -5,6 +5,7 @@
 #include "pendulum/angle.hpp"
 #include "pendulum/mp_real.hpp"
 
+#include <cstddef>
 #include <gmp.h>
 
 #include <optional>
@@ -41,9 +42,15 @@ struct rational_pi {
     rational b;  ///< the multiple of pi
 };
 
+/// The most bits a numerator or denominator of exact_written's values may take on the way:
+/// a product of large exponents (1e-99999*1e-99999*...) would otherwise take seconds and
+/// memory for a value only MPFR can decide anyway.
+inline constexpr std::size_t max_exact_bits = std::size_t{1} << 20;
+
 /// The exact value of a number as written, where it is a + b pi with a, b rational: a double
-/// itself, or a text with no product of two multiples of pi and decimal exponents within
-/// 100000; nothing otherwise (then only its MPFR value is known).
+/// itself, or a text with no product of two multiples of pi, decimal exponents within
+/// 100000 and every value on the way within max_exact_bits; nothing otherwise (then only
+/// its MPFR value is known).
 std::optional<rational_pi> exact_written(const written_number& x);
 
 }  // namespace pendulum

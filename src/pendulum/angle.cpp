@@ -20,6 +20,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace pendulum {
 
@@ -351,6 +352,20 @@ std::optional<rational_pi> exact_written(const written_number& x) {
     return v;
 }
 
+namespace {
+
+/// k = sin(theta0/2) and k' = sin(d/2), each from the exact value, rounded once: the sine of
+/// the smaller half-angle (at most pi/4), and the other as sqrt(1 - s^2), where s^2 is at
+/// most 1/2 and nothing cancels (one sine instead of two, the costlier one left).
+std::pair<double, double> moduli(const real& theta0, const real& d) {
+    const bool closer_to_pi = d < theta0;
+    const real s = mp::sin((closer_to_pi ? d : theta0) / 2.0);
+    const double c = mp::sqrt(1.0 - s * s).to_double();
+    return closer_to_pi ? std::pair{c, s.to_double()} : std::pair{s.to_double(), c};
+}
+
+}  // namespace
+
 double parse_angle(std::string_view text) { return evaluate(text, true); }
 
 amplitude parse_amplitude(std::string_view text, std::string_view name) {
@@ -387,15 +402,8 @@ amplitude parse_amplitude(std::string_view text, std::string_view name) {
             throw domain_error(std::string(name) + " must be at least 2.2250738585072014e-308 below pi, got pi - " +
                                format_double(d));
         }
-        // k = sin(theta0/2), k' = sin(d/2), each from the exact value, rounded once: the sine
-        // of the smaller half-angle (at most pi/4), and the other as sqrt(1 - s^2), where s^2
-        // is at most 1/2 and nothing cancels (one sine instead of two, the costlier one left).
-        const bool closer_to_pi = d_fine < fine;
-        const real s = mp::sin((closer_to_pi ? d_fine : fine) / 2.0);
-        const real c = mp::sqrt(1.0 - s * s);
-        const real& k = closer_to_pi ? c : s;
-        const real& kp = closer_to_pi ? s : c;
-        return amplitude::from_parts(theta0, d, k.to_double(), kp.to_double());
+        const auto [k, kp] = moduli(fine, d_fine);
+        return amplitude::from_parts(theta0, d, k, kp);
     }
     throw domain_error("unreachable");  // the loop returns or throws at the working precision
 }

@@ -712,7 +712,8 @@ TEST(HugeTimes, ApproximantsOfStatesRunOnTheLibrationsClock) {
         worst = std::max(worst, u);
         // The command line, where the program's own coefficients are the file's doubles: its
         // phase is formed with the solution's own w/w0 from the exact amplitude (its exact
-        // source), not the double taken as exact as this file's rows do.
+        // source), not the double taken as exact as this file's rows do, and its start's phase
+        // from the clock of the numbers as written (time_reducer::start_phase).
         const fourier_solution own = method_solution(parse_method(argument(args, "--method")), m.amplitude());
         if (own.frequency_ratio == solution.frequency_ratio && own.coefficients == solution.coefficients) {
             const auto r = test_support::run_cli(doubles_as_written(args));
@@ -720,7 +721,7 @@ TEST(HugeTimes, ApproximantsOfStatesRunOnTheLibrationsClock) {
             const auto fields = split_at(r.out.substr(r.out.find('\n') + 1), ',');
             const time_reducer exact_phase(m, scale_of("t/T0"), std::fabs(s), own);
             const double with_source =
-                m.libration_center() + own.theta_at_phase(exact_phase.phase(s) + start_phase(m, own));
+                m.libration_center() + own.theta_at_phase(exact_phase.phase(s) + exact_phase.start_phase(m));
             EXPECT_LE(std::fabs(number(fields.at(1)) - with_source) / ulp, 1) << args << ": got " << fields.at(1)
                                                                               << ", want " << format_double(with_source);
             ++cli_checked;

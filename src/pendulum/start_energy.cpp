@@ -258,6 +258,61 @@ mp::mp_amplitude written_amplitude(const motion& m, mpfr_prec_t bits) {
     return {real(2.0 * theta, bits), real(k, bits), real(kp, bits), real(one_minus_kp, bits)};
 }
 
+namespace {
+
+/// Carlson's R_F(x, y, z) in MPFR (x, y, z >= 0, at most one 0), to about 2^-p relative: the
+/// duplication until the three agree to 2^-(p/6 + 4) of their mean, then its fifth-order series.
+real carlson_rf_mp(real x, real y, real z, mpfr_prec_t p) {
+    for (int step = 0; step < 4 * static_cast<int>(p); ++step) {
+        const real a = (x + y + z) / 3.0;
+        const real spread = mp::fabs(a - x) + mp::fabs(a - y) + mp::fabs(a - z);
+        real bound(p);
+        mpfr_mul_2si(bound.get(), a.get(), -static_cast<long>(p / 6 + 4), MPFR_RNDN);
+        if (mpfr_cmp(spread.get(), bound.get()) <= 0) break;
+        const real sx = mp::sqrt(x);
+        const real sy = mp::sqrt(y);
+        const real sz = mp::sqrt(z);
+        const real lambda = sx * sy + sy * sz + sz * sx;
+        x = (x + lambda) / 4.0;
+        y = (y + lambda) / 4.0;
+        z = (z + lambda) / 4.0;
+    }
+    const real a = (x + y + z) / 3.0;
+    const real dx = (a - x) / a;
+    const real dy = (a - y) / a;
+    const real dz = -(dx + dy);
+    const real e2 = dx * dy - dz * dz;
+    const real e3 = dx * dy * dz;
+    const real series = 1.0 - e2 / 10.0 + e3 / 14.0 + e2 * e2 / 24.0 - 3.0 * e2 * e3 / 44.0;
+    return series / mp::sqrt(a);
+}
+
+}  // namespace
+
+real written_clock(const motion& m, mpfr_prec_t bits) {
+    const mpfr_prec_t p = bits + 64 + m.cancelled_bits();
+    const mp::mp_amplitude a = written_amplitude(m, p);  // throws unless such a libration
+    const real one(1.0, p);
+    const real quarter = mp::pi(p) / (2.0 * mp::agm(one, a.kp));
+    // A launch from the bottom moves forwards: a quarter period after its amplitude.
+    if (m.given_as() == motion::origin::energy) return real(-quarter, bits);
+    const real theta = evaluate_written(m.written_first(), p);
+    const real omega = evaluate_written(m.written_second(), p);
+    const bool backwards = omega.to_double() < 0;  // as motion::prepare mirrors it
+    real angle(p);
+    mpfr_remainder(angle.get(), (backwards ? -theta : theta).get(), (2.0 * mp::pi(p)).get(), MPFR_RNDN);
+    // psi = am(tau) with sn : cn = |omega|/2 : k' sin(angle/2) (motion::prepare), F of degree 0.
+    const real s = mp::fabs(omega) / 2.0;
+    const real c = a.kp * mp::sin(angle / 2.0);
+    const real f = angle.is_zero() ? real(quarter)
+                   : s.is_zero()    ? real(0.0, p)
+                                    : s * carlson_rf_mp(c * c, c * c + a.kp * a.kp * s * s, s * s + c * c, p);
+    // Beyond pi/2 (c < 0): F(psi) = 2 K - F(pi - psi).
+    const real forward = !angle.is_zero() && c < 0.0 ? 2.0 * quarter - f : f;
+    const real clock = backwards ? 2.0 * quarter - forward : -forward;
+    return real(clock, bits);
+}
+
 real written_period(const motion& m, mpfr_prec_t bits) {
     if (!m.has_period()) (void)m.period();  // throws, naming the separatrix
     const mpfr_prec_t p = bits + 64 + m.cancelled_bits();

@@ -70,4 +70,10 @@ mp::real written_period(const motion& m, mpfr_prec_t bits);
 /// 1 - k' = k^2/(1 + k'); throws domain_error unless the motion is such a libration.
 mp::mp_amplitude written_amplitude(const motion& m, mpfr_prec_t bits);
 
+/// A libration's own clock at its start (motion::libration_clock(0): the time since it was at
+/// its amplitude +theta0, in w0 t, half a period added for a start moving backwards) from
+/// its numbers as written, with `bits` bits: F(psi | k) by Carlson's R_F in MPFR; throws
+/// domain_error unless the motion is a libration given as a state or an energy.
+mp::real written_clock(const motion& m, mpfr_prec_t bits);
+
 }  // namespace pendulum

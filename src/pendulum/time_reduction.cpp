@@ -225,10 +225,15 @@ double time_reducer::phase(double s) const {
 
 double time_reducer::start_phase(const motion& m) const {
     if (!(state_->ratio_extended > 0)) throw domain_error("a phase needs the Fourier solution's frequency ratio");
-    const auto [offset, half_period] = m.libration_clock_parts();
     real clock(state_->product.precision());
-    mpfr_set_d(clock.get(), offset, MPFR_RNDN);
-    if (half_period) mpfr_add(clock.get(), clock.get(), (state_->period / 2.0).get(), MPFR_RNDN);
+    if (written_libration(m) != nullptr) {
+        // Its clock from its numbers as written: the double offset is off by an ulp or two.
+        clock = written_clock(m, clock.precision());
+    } else {
+        const auto [offset, half_period] = m.libration_clock_parts();
+        mpfr_set_d(clock.get(), offset, MPFR_RNDN);
+        if (half_period) mpfr_add(clock.get(), clock.get(), (state_->period / 2.0).get(), MPFR_RNDN);
+    }
     mpfr_mul(clock.get(), clock.get(), state_->ratio.get(), MPFR_RNDN);
     real rest(state_->rest.precision());
     mpfr_remainder(rest.get(), clock.get(), state_->two_pi.get(), MPFR_RNDN);

@@ -322,10 +322,8 @@ void amplitude_block(const std::vector<amplitude>& amplitudes, std::size_t first
                      std::vector<std::vector<field>>& rows, std::vector<std::vector<int>>& broken) {
     rows.assign(n, {});
     broken.assign(n, {});
-    plot::parallel_for((n + rows_per_task - 1) / rows_per_task, [&](std::size_t task) {
-        for (std::size_t i = task * rows_per_task; i < std::min(n, (task + 1) * rows_per_task); ++i) {
-            rows[i] = amplitude_row(amplitudes[first + i], t, orders, small_period_s, broken[i]);
-        }
+    plot::parallel_for_each(n, rows_per_task, [&](std::size_t i) {
+        rows[i] = amplitude_row(amplitudes[first + i], t, orders, small_period_s, broken[i]);
     });
 }
 

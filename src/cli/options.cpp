@@ -74,13 +74,11 @@ constexpr std::size_t items_per_task = 256;
 void parse_items(const std::vector<std::string>& items, std::vector<pendulum::amplitude>& values) {
     std::vector<std::optional<pendulum::amplitude>> parsed(items.size());
     std::vector<std::exception_ptr> errors(items.size());
-    plot::parallel_for((items.size() + items_per_task - 1) / items_per_task, [&](std::size_t task) {
-        for (std::size_t i = task * items_per_task; i < std::min(items.size(), (task + 1) * items_per_task); ++i) {
-            try {
-                parsed[i] = amplitude_item(items[i]);
-            } catch (...) {
-                errors[i] = std::current_exception();
-            }
+    plot::parallel_for_each(items.size(), items_per_task, [&](std::size_t i) {
+        try {
+            parsed[i] = amplitude_item(items[i]);
+        } catch (...) {
+            errors[i] = std::current_exception();
         }
     });
     for (std::size_t i = 0; i < items.size(); ++i) {

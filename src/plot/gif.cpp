@@ -293,14 +293,26 @@ struct gif_encoder::state {
     }
 };
 
-double gif_bytes_bound(double frames, int width, int height) {
+namespace {
+
+/// The bytes a frame of width x height pixels may take: gif_frame_bytes * (width * height)^(2/3).
+double frame_bytes_bound(int width, int height) {
     const double pixels = static_cast<double>(width) * static_cast<double>(height);
-    return (frames + gif_extra_frames) * gif_frame_bytes * std::cbrt(pixels * pixels);
+    return gif_frame_bytes * std::cbrt(pixels * pixels);
+}
+
+/// What to change where a GIF would take more than max_gif_bytes, as both refusals say it.
+constexpr const char* smaller_gif_advice =
+    "lower --size or --dpi, the fps, or the periods or duration_s (or --frames); or write -f mp4 or webm";
+
+}  // namespace
+
+double gif_bytes_bound(double frames, int width, int height) {
+    return (frames + gif_extra_frames) * frame_bytes_bound(width, height);
 }
 
 double gif_most_frames(int width, int height) {
-    const double pixels = static_cast<double>(width) * static_cast<double>(height);
-    return std::max(0.0, std::floor(max_gif_bytes / (gif_frame_bytes * std::cbrt(pixels * pixels)) - gif_extra_frames));
+    return std::max(0.0, std::floor(max_gif_bytes / frame_bytes_bound(width, height) - gif_extra_frames));
 }
 
 void check_gif_size(double frames, int width, int height) {
@@ -309,10 +321,9 @@ void check_gif_size(double frames, int width, int height) {
     char text[400];
     std::snprintf(text, sizeof text,
                   "%.0f frames of %d x %d pixels may take %.0f MB as a GIF, more than the %.0f MB a GIF may take "
-                  "(at most %.0f frames of this size): lower --size or --dpi, the fps, or the periods or duration_s "
-                  "(or --frames); or write -f mp4 or webm",
+                  "(at most %.0f frames of this size): %s",
                   frames, width, height, std::ceil(gif_bytes_bound(frames, width, height) / 1e6), max_gif_bytes / 1e6,
-                  most);
+                  most, smaller_gif_advice);
     throw bad_input(text);
 }
 
@@ -321,9 +332,8 @@ void check_gif_written(std::size_t bytes, int done, int frames, int width, int h
     char text[400];
     std::snprintf(text, sizeof text,
                   "%d frames of %d x %d pixels: the GIF passed the %.0f MB a GIF may take after %d of them (its frames "
-                  "change more than the estimate foresaw; nothing is written): lower --size or --dpi, the fps, or the "
-                  "periods or duration_s (or --frames); or write -f mp4 or webm",
-                  frames, width, height, max_gif_bytes / 1e6, done);
+                  "change more than the estimate foresaw; nothing is written): %s",
+                  frames, width, height, max_gif_bytes / 1e6, done, smaller_gif_advice);
     throw bad_input(text);
 }
 

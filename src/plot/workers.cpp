@@ -142,4 +142,10 @@ void parallel_for(std::size_t n, const std::function<void(std::size_t)>& f) {
     if (first_error) std::rethrow_exception(first_error);
 }
 
+void parallel_for_each(std::size_t n, std::size_t per_task, const std::function<void(std::size_t)>& f) {
+    parallel_for((n + per_task - 1) / per_task, [&](std::size_t task) {
+        for (std::size_t i = task * per_task; i < std::min(n, (task + 1) * per_task); ++i) f(i);
+    });
+}
+
 }  // namespace plot

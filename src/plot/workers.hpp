@@ -58,4 +58,8 @@ public:
 /// throws is rethrown. f(i) must depend on i only: the results do not depend on the threads.
 void parallel_for(std::size_t n, const std::function<void(std::size_t)>& f);
 
+/// parallel_for over f(0) ... f(n - 1) in tasks of `per_task` consecutive indices (where one
+/// f is too short to be a task of its own); the first exception any throws is rethrown.
+void parallel_for_each(std::size_t n, std::size_t per_task, const std::function<void(std::size_t)>& f);
+
 }  // namespace plot

@@ -113,21 +113,42 @@ void marker_path(cairo_t* cr, marker_style m, double x, double y, double r) {
     }
 }
 
+/// The radius of the circle a marker of radius r holds, touching its sides (r for a circle).
+double inradius(marker_style m, double r) {
+    switch (m) {
+        case marker_style::filled_square: return 0.886 * r;
+        case marker_style::filled_triangle: return 0.5 * 1.35 * r;
+        case marker_style::filled_diamond: return 1.25 * r / std::sqrt(2.0);
+        default: return r;
+    }
+}
+
 }  // namespace
 
 bool filled(marker_style m) { return m != marker_style::none && m != marker_style::open_circle; }
 
 void draw_markers(cairo_t* cr, const theme& th, const series& s, const device_series& d, const rect& area) {
-    const double r = th.marker_radius_pt * s.marker_scale;
+    const double outline = line_width(th, 0.75 * th.line_width_pt);
+    // A translucent filled marker is one fill out to where its outline's ink ends (its sides
+    // moved out by half the outline's width): the outline stroked over the fill would blend
+    // the rim's inner half twice, a ring on each marker and rings along a streak of them,
+    // and cost a second rasterisation.
+    const bool one_fill = filled(s.marker) && s.alpha < 1.0;
+    const double r0 = th.marker_radius_pt * s.marker_scale;
+    const double r = one_fill ? r0 * (1 + 0.5 * outline / inradius(s.marker, r0)) : r0;
     cairo_set_dash(cr, nullptr, 0, 0);
-    cairo_set_line_width(cr, line_width(th, 0.75 * th.line_width_pt));
+    cairo_set_line_width(cr, outline);
     for (std::size_t i = 0; i < d.x.size(); ++i) {
         if (std::isnan(d.x[i] + d.y[i])) continue;
-        if (d.x[i] < area.x - r || d.x[i] > area.x + area.w + r || d.y[i] < area.y - r ||
-            d.y[i] > area.y + area.h + r) {
+        if (d.x[i] < area.x - r0 || d.x[i] > area.x + area.w + r0 || d.y[i] < area.y - r0 ||
+            d.y[i] > area.y + area.h + r0) {
             continue;
         }
         marker_path(cr, s.marker, d.x[i], d.y[i], r);
+    }
+    if (one_fill) {
+        cairo_fill(cr);
+        return;
     }
     if (filled(s.marker)) {
         cairo_fill_preserve(cr);

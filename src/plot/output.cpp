@@ -277,16 +277,19 @@ struct png_rows {
 /// The grey pass: each pixel's blue byte into `out`; false at the first row with a pixel
 /// that is not grey.
 bool grey_pass(const rgb24_pixels& im, png_rows out) {
+    // The width in a local: a byte store may alias a member, and a bound read again after
+    // every store keeps the compiler from vectorising the loop (4 instructions a pixel, not 1).
+    const int width = im.width;
     for (int y = 0; y < im.height; ++y) {
-        // A whole row at a time, without a branch per pixel (the compiler vectorises it).
+        // A whole row at a time, without a branch per pixel. A pixel is grey when its red
+        // equals its green and its green its blue: the low 16 bits of p ^ (p >> 8) are zero.
         const std::uint32_t* src = im.row(y);
         unsigned char* dst = out.row(y);
         std::uint32_t off_grey = 0;
-        for (int x = 0; x < im.width; ++x) {
-            const std::uint32_t p = src[x] & 0xffffffu;
-            const std::uint32_t b = p & 0xff;
-            off_grey |= p ^ (b * 0x010101u);
-            dst[x] = static_cast<unsigned char>(b);
+        for (int x = 0; x < width; ++x) {
+            const std::uint32_t p = src[x];
+            off_grey |= (p ^ (p >> 8)) & 0xffffu;
+            dst[x] = static_cast<unsigned char>(p);
         }
         if (off_grey != 0) return false;
     }

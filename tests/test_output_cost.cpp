@@ -1,1 +1,114 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The PNG writer's passes: what they promise while they are made cheaper (a grey image is
+// told from a coloured one at every pixel of every row, whatever Cairo leaves in the unused
+// byte, and every kind decodes to the pixels it was given).
+
+#include "plot/frames.hpp"
+#include "plot/output.hpp"
+#include "png_image.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+using namespace test_support;
+
+namespace {
+
+/// An RGB24 image of w x h pixels, pixel(x, y) each (0xUURRGGBB: the top byte is the one
+/// Cairo leaves as it likes).
+plot::argb_image image_of(int w, int h, const std::function<std::uint32_t(int, int)>& pixel) {
+    plot::argb_image im;
+    im.width = w;
+    im.height = h;
+    im.stride = 4 * w + 8;  // rows with a gap after them, as a wider stride leaves
+    im.rgb24 = true;
+    im.data.assign(static_cast<std::size_t>(im.stride) * h, 0x5a);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const std::uint32_t p = pixel(x, y);
+            std::memcpy(im.data.data() + static_cast<std::size_t>(y) * im.stride + 4 * x, &p, 4);
+        }
+    }
+    return im;
+}
+
+/// The image's pixels as R, G, B bytes.
+std::vector<unsigned char> rgb_of(const plot::argb_image& im) {
+    std::vector<unsigned char> out;
+    for (int y = 0; y < im.height; ++y) {
+        for (int x = 0; x < im.width; ++x) {
+            std::uint32_t p;
+            std::memcpy(&p, im.data.data() + static_cast<std::size_t>(y) * im.stride + 4 * x, 4);
+            out.insert(out.end(), {static_cast<unsigned char>(p >> 16), static_cast<unsigned char>(p >> 8),
+                                   static_cast<unsigned char>(p)});
+        }
+    }
+    return out;
+}
+
+/// The PNG's colour type (IHDR's tenth byte): 0 grey, 2 RGB, 3 palette.
+int color_type(const std::string& png) { return static_cast<unsigned char>(png.at(25)); }
+
+/// The PNG of the image, after checking that it decodes to the image's pixels.
+std::string encoded(const plot::argb_image& im) {
+    std::vector<unsigned char> scratch;
+    const std::string png = plot::png_of_pixels(im, 300, scratch);
+    const rgb_image decoded = decode_rgb(png);
+    EXPECT_EQ(decoded.width, static_cast<unsigned>(im.width));
+    EXPECT_EQ(decoded.height, static_cast<unsigned>(im.height));
+    EXPECT_TRUE(decoded.pixels == rgb_of(im)) << im.width << " x " << im.height;
+    return png;
+}
+
+/// A grey level that changes along the row and down the rows, and an unused byte that does too.
+std::uint32_t grey_at(int x, int y) {
+    const auto level = static_cast<std::uint32_t>((37 * x + 11 * y) % 256);
+    const auto unused = static_cast<std::uint32_t>((x * 89 + y * 7) % 256);
+    return (unused << 24) | (level * 0x010101u);
+}
+
+}  // namespace
+
+TEST(OutputCost, GreyIsToldFromColourAtEveryPixelOfARow) {
+    // Widths around the vector lanes (4, 8, 16 pixels) and their tails; one channel of one
+    // pixel off by one (red, green or blue; the last row and elsewhere) makes the image
+    // coloured (a palette: these have few colours), and the pixels hold either way.
+    for (const int w : {1, 2, 3, 4, 5, 7, 8, 9, 15, 16, 17, 31, 32, 33, 67}) {
+        const int h = 3;
+        EXPECT_EQ(color_type(encoded(image_of(w, h, grey_at))), 0) << w;
+        for (const std::uint32_t channel : {0x010000u, 0x000100u, 0x000001u}) {
+            for (const int at_x : {0, w / 2, w - 1}) {
+                for (const int at_y : {0, h - 1}) {
+                    const auto off = [&](int x, int y) {
+                        const std::uint32_t p = grey_at(x, y);
+                        if (x != at_x || y != at_y) return p;
+                        return (p & 0xff000000u) | ((p & 0xffffffu) ^ channel);
+                    };
+                    EXPECT_EQ(color_type(encoded(image_of(w, h, off))), 3)
+                        << "width " << w << ", pixel (" << at_x << ", " << at_y << "), channel " << channel;
+                }
+            }
+        }
+    }
+}
+
+TEST(OutputCost, TheUnusedByteNeverMakesAGreyImageColoured) {
+    // Every value of the byte Cairo does not define, on grey pixels of every level.
+    const auto grey = [](int x, int y) {
+        return (static_cast<std::uint32_t>(x) << 24) | (static_cast<std::uint32_t>((x + y) % 256) * 0x010101u);
+    };
+    EXPECT_EQ(color_type(encoded(image_of(256, 2, grey))), 0);
+}
+
+TEST(OutputCost, MoreThan256ColoursAreRgbAndHoldTheirPixels) {
+    const auto colours = [](int n) {
+        return [n](int x, int y) { return static_cast<std::uint32_t>(((x + 7 * y) % n) * 0x010203u + 0x100000u); };
+    };
+    EXPECT_EQ(color_type(encoded(image_of(300, 5, colours(256)))), 3);
+    EXPECT_EQ(color_type(encoded(image_of(300, 5, colours(257)))), 2);
+}

@@ -112,3 +112,21 @@ TEST(OutputCost, MoreThan256ColoursAreRgbAndHoldTheirPixels) {
     EXPECT_EQ(color_type(encoded(image_of(300, 5, colours(256)))), 3);
     EXPECT_EQ(color_type(encoded(image_of(300, 5, colours(257)))), 2);
 }
+
+TEST(OutputCost, RgbRowsEndWhereTheyShouldAtEveryWidth) {
+    // A pixel's three bytes are written as four: the fourth lands on the next pixel, the next
+    // row's filter byte, or past the last row. Every width from 1, and a tall and a wide
+    // image, with more than 256 colours (RGB), decode to their pixels.
+    const auto distinct = [](int w) {
+        return [w](int x, int y) {
+            const auto i = static_cast<std::uint32_t>(y * w + x);
+            return 0xa5000000u | ((i * 2654435761u) & 0xffffffu);
+        };
+    };
+    for (int w = 1; w <= 33; ++w) {
+        const int h = 257 / w + 2;
+        EXPECT_EQ(color_type(encoded(image_of(w, h, distinct(w)))), 2) << w;
+    }
+    EXPECT_EQ(color_type(encoded(image_of(1, 1000, distinct(1)))), 2);
+    EXPECT_EQ(color_type(encoded(image_of(3001, 2, distinct(3001)))), 2);
+}

@@ -17,6 +17,7 @@
 #include <libdeflate.h>
 
 #include <algorithm>
+#include <bit>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -328,16 +329,24 @@ bool palette_pass(const rgb24_pixels& im, png_rows out, std::vector<unsigned cha
 
 /// The RGB pass: three bytes a pixel into `out`.
 void rgb_pass(const rgb24_pixels& im, png_rows out) {
-    out.bytes.resize(static_cast<std::size_t>(im.height) * (out.row_bytes + 1));
+    const std::size_t size = static_cast<std::size_t>(im.height) * (out.row_bytes + 1);
+    // One byte more while the pass runs: a pixel's three bytes are stored as four, the
+    // fourth (zero) overwritten by the next pixel, or the next row's filter byte (None,
+    // zero), or this byte after the last row.
+    out.bytes.resize(size + 1);
+    const int width = im.width;  // a local: see grey_pass
     for (int y = 0; y < im.height; ++y) {
+        const std::uint32_t* src = im.row(y);
         unsigned char* dst = out.row(y);
-        for (int x = 0; x < im.width; ++x) {
-            const std::uint32_t p = im.pixel(x, y);
-            dst[3 * x] = static_cast<unsigned char>(p >> 16);
-            dst[3 * x + 1] = static_cast<unsigned char>((p >> 8) & 0xff);
-            dst[3 * x + 2] = static_cast<unsigned char>(p & 0xff);
+        for (int x = 0; x < width; ++x) {
+            const std::uint32_t p = src[x];
+            // R, G, B and a zero in memory order: the bytes of 0xXXRRGGBB reversed (one
+            // instruction) and shifted on a little-endian machine.
+            const std::uint32_t rgb0 = std::endian::native == std::endian::little ? __builtin_bswap32(p) >> 8 : p << 8;
+            std::memcpy(dst + 3 * static_cast<std::ptrdiff_t>(x), &rgb0, 4);
         }
     }
+    out.bytes.resize(size);
 }
 
 /// The PNG file: signature, IHDR, PLTE (if any), pHYs, the rows deflated (a zlib stream,

@@ -31,6 +31,7 @@
 #include <memory>
 #include <optional>
 #include <regex>
+#include <span>
 #include <unordered_map>
 #include <stdexcept>
 #include <sys/stat.h>
@@ -265,11 +266,11 @@ struct rgb24_pixels {
 
 /// PNG's rows as they are compressed: each a filter byte, then `row_bytes` of pixels.
 struct png_rows {
-    std::vector<unsigned char>& bytes;
+    unsigned char* bytes;
     std::size_t row_bytes;
     /// Row y's pixels (its filter byte, None, is set here).
-    unsigned char* row(int y) {
-        unsigned char* r = bytes.data() + static_cast<std::size_t>(y) * (row_bytes + 1);
+    unsigned char* row(int y) const {
+        unsigned char* r = bytes + static_cast<std::size_t>(y) * (row_bytes + 1);
         r[0] = 0;
         return r + 1;
     }
@@ -329,11 +330,9 @@ bool palette_pass(const rgb24_pixels& im, png_rows out, std::vector<unsigned cha
 
 /// The RGB pass: three bytes a pixel into `out`.
 void rgb_pass(const rgb24_pixels& im, png_rows out) {
-    const std::size_t size = static_cast<std::size_t>(im.height) * (out.row_bytes + 1);
-    // One byte more while the pass runs: a pixel's three bytes are stored as four, the
-    // fourth (zero) overwritten by the next pixel, or the next row's filter byte (None,
-    // zero), or this byte after the last row.
-    out.bytes.resize(size + 1);
+    // A pixel's three bytes are stored as four, the fourth (zero) overwritten by the next
+    // pixel, or the next row's filter byte (None, zero), or the byte after the last row
+    // (png_rows_bytes has it).
     const int width = im.width;  // a local: see grey_pass
     for (int y = 0; y < im.height; ++y) {
         const std::uint32_t* src = im.row(y);
@@ -346,13 +345,12 @@ void rgb_pass(const rgb24_pixels& im, png_rows out) {
             std::memcpy(dst + 3 * static_cast<std::ptrdiff_t>(x), &rgb0, 4);
         }
     }
-    out.bytes.resize(size);
 }
 
 /// The PNG file: signature, IHDR, PLTE (if any), pHYs, the rows deflated (a zlib stream,
 /// libdeflate's) in one IDAT chunk, IEND. A worker holds the raster, the rows, and the
 /// deflated rows twice (raster_bytes_per_pixel: deflated line art is small).
-std::string png_file(const std::vector<unsigned char>& rows, int width, int height, int color_type,
+std::string png_file(std::span<const unsigned char> rows, int width, int height, int color_type,
                      const std::vector<unsigned char>& palette, std::uint32_t pixels_per_metre) {
     libdeflate_compressor* const compressor = thread_compressor();
     std::string out("\x89PNG\r\n\x1a\n", 8);
@@ -381,27 +379,33 @@ std::string png_file(const std::vector<unsigned char>& rows, int width, int heig
 /// PNG's colour types.
 constexpr int png_grey = 0, png_rgb = 2, png_palette = 3;
 
+/// The bytes png_of writes its rows into at most: RGB's, and one (rgb_pass).
+std::size_t png_rows_bytes(int width, int height) {
+    return static_cast<std::size_t>(height) * (3 * static_cast<std::size_t>(width) + 1) + 1;
+}
+
 /// The PNG of width x height pixels of Cairo's RGB24, `stride` bytes a row, drawn at dpi;
-/// `pixels` holds the rows to encode.
-std::string png_of(const unsigned char* data, int stride, int width, int height, double dpi,
-                   std::vector<unsigned char>& pixels) {
+/// `rows` (png_rows_bytes(width, height) bytes, whatever they hold) takes the rows to encode.
+std::string png_of(const unsigned char* data, int stride, int width, int height, double dpi, unsigned char* rows) {
     // The smallest exact pixel format: grey (the paper theme), a palette of at most 256
     // colours, or RGB. Each attempt is one pass that stops at the first pixel (the grey
     // one: row) it cannot hold.
     const rgb24_pixels im{data, stride, width, height};
     const auto w = static_cast<std::size_t>(width);
-    pixels.resize(static_cast<std::size_t>(height) * (w + 1));
+    std::size_t row_bytes = w;
     int color_type = png_grey;
     std::vector<unsigned char> palette;
-    if (!grey_pass(im, {pixels, w})) {
+    if (!grey_pass(im, {rows, w})) {
         color_type = png_palette;
-        if (!palette_pass(im, {pixels, w}, palette)) {
+        if (!palette_pass(im, {rows, w}, palette)) {
             color_type = png_rgb;
             palette.clear();
-            rgb_pass(im, {pixels, 3 * w});
+            row_bytes = 3 * w;
+            rgb_pass(im, {rows, row_bytes});
         }
     }
-    return png_file(pixels, width, height, color_type, palette, static_cast<std::uint32_t>(std::lround(dpi / 0.0254)));
+    return png_file({rows, static_cast<std::size_t>(height) * (row_bytes + 1)}, width, height, color_type, palette,
+                    static_cast<std::uint32_t>(std::lround(dpi / 0.0254)));
 }
 
 std::string render_png(const figure& fig, const theme& th, double dpi) {
@@ -416,8 +420,10 @@ std::string render_png(const figure& fig, const theme& th, double dpi) {
         cairo_image_surface_create_for_data(memory.data(), CAIRO_FORMAT_RGB24, width, height, stride));
     draw_on(surface.get(), fig, th, size, scale, "png");
     cairo_surface_flush(surface.get());
-    std::vector<unsigned char> pixels;
-    return png_of(memory.data(), stride, width, height, dpi, pixels);
+    // The rows in pages of their own: no pass over them to zero them first (a vector's), and
+    // the pages an RGB image would need beyond a grey one's are never touched.
+    const page_buffer rows(png_rows_bytes(width, height));
+    return png_of(memory.data(), stride, width, height, dpi, rows.data());
 }
 
 /// The SVG with a <title> and a <desc> first in its root element, as SVG's accessibility
@@ -600,7 +606,9 @@ constexpr format_row formats[] = {
 
 std::string png_of_pixels(const argb_image& image, double dpi, std::vector<unsigned char>& scratch) {
     if (!image.rgb24) throw std::invalid_argument("a PNG is made of RGB24 pixels");
-    return png_of(image.data.data(), image.stride, image.width, image.height, dpi, scratch);
+    const std::size_t size = png_rows_bytes(image.width, image.height);
+    if (scratch.size() < size) scratch.resize(size);  // frames of one size: zeroed once
+    return png_of(image.data.data(), image.stride, image.width, image.height, dpi, scratch.data());
 }
 
 std::span<const format_row> format_table() { return formats; }

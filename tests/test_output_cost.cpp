@@ -130,3 +130,22 @@ TEST(OutputCost, RgbRowsEndWhereTheyShouldAtEveryWidth) {
     EXPECT_EQ(color_type(encoded(image_of(1, 1000, distinct(1)))), 2);
     EXPECT_EQ(color_type(encoded(image_of(3001, 2, distinct(3001)))), 2);
 }
+
+TEST(OutputCost, ReusedRowsGiveTheBytesOfFreshOnes) {
+    // The rows are written over whatever the scratch holds: frames of an animation reuse it,
+    // an RGB frame leaving three bytes a pixel behind before a grey or a palette frame, and
+    // a larger frame growing it. Each PNG is the same as from a fresh scratch.
+    const int w = 301;
+    const int h = 7;
+    const auto rgb = [](int x, int y) { return static_cast<std::uint32_t>((x * 977 + y * 131071) & 0xffffff); };
+    const auto few = [](int x, int y) { return (x + y) % 3 == 0 ? 0x0072b2u : 0xffffffu; };
+    std::vector<unsigned char> reused;
+    for (const auto& [pixels, width] : std::vector<std::pair<std::function<std::uint32_t(int, int)>, int>>{
+             {rgb, w}, {grey_at, w}, {few, w}, {rgb, 2 * w}, {grey_at, 3}, {rgb, 3}}) {
+        const plot::argb_image im = image_of(width, h, pixels);
+        std::vector<unsigned char> fresh;
+        const std::string png = plot::png_of_pixels(im, 150, reused);
+        EXPECT_EQ(png, plot::png_of_pixels(im, 150, fresh)) << width;
+        EXPECT_TRUE(decode_rgb(png).pixels == rgb_of(im)) << width;
+    }
+}

@@ -98,19 +98,62 @@ std::string spoken_label(const std::string& markup) {
     return out;
 }
 
-/// Points along a series: its curve sampled finely where it has one, else its points.
-std::vector<std::pair<double, double>> dense(const plot::series& s) {
-    std::vector<std::pair<double, double>> out;
+namespace {
+
+/// Whether this thread is describing a figure a file has drawn: its curves' values are then
+/// the ones the drawing evaluated (none is evaluated for the words).
+thread_local bool describing_drawn = false;
+
+/// Describes a drawn figure on this thread while it lives.
+class drawn_scope {
+public:
+    explicit drawn_scope(bool drawn) : outer_(describing_drawn) { describing_drawn = drawn; }
+    ~drawn_scope() { describing_drawn = outer_; }
+    drawn_scope(const drawn_scope&) = delete;
+    drawn_scope& operator=(const drawn_scope&) = delete;
+
+private:
+    bool outer_;
+};
+
+}  // namespace
+
+namespace {
+
+/// Points along a series (dense's), and whether they are the values a drawing evaluated.
+struct series_points {
+    std::vector<std::pair<double, double>> xy;  ///< the finite points, in the series' order
+    bool drawn = false;                         ///< a drawn curve's values (no others are evaluated)
+};
+
+/// A series' points: a drawn curve's values as its drawing evaluated them (finer than 512
+/// where it bends, and always its pieces' quarters), else about 512 values of its curve,
+/// shared with a later drawing through the curve's memo (a costly function, an error in
+/// MPFR, is evaluated once between them), else its points.
+series_points points_of(const plot::series& s) {
+    series_points out;
     if (s.curve) {
-        // About 512 values, shared with the drawing through the curve's memo (a costly
-        // function, an error in MPFR, is evaluated once between them).
-        out = plot::first_values(*s.curve, 512);
+        if (describing_drawn) out.xy = plot::memo_values(*s.curve);
+        out.drawn = !out.xy.empty();
+        if (!out.drawn) out.xy = plot::first_values(*s.curve, 512);
     } else {
-        for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) out.emplace_back(s.x[i], s.y[i]);
+        for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) out.xy.emplace_back(s.x[i], s.y[i]);
     }
-    std::erase_if(out, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
+    std::erase_if(out.xy, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
     return out;
 }
+
+/// points_of, sorted by x.
+series_points sorted_points(const plot::series& s) {
+    series_points out = points_of(s);
+    std::sort(out.xy.begin(), out.xy.end());
+    return out;
+}
+
+}  // namespace
+
+/// Points along a series: its curve sampled finely where it has one, else its points.
+std::vector<std::pair<double, double>> dense(const plot::series& s) { return points_of(s).xy; }
 
 namespace {
 
@@ -281,26 +324,24 @@ std::string curves_words(const panel_words& w) {
     return std::string(w.shown.size() == 1 ? " One curve: " : " Curves: ") + join(items) + ".";
 }
 
-/// Where a series first leaves the sorted reference by more than `visible`: its x, or
-/// nothing; `covered` tells whether they share any x at all.
 /// y of a series at x: its function's value where it is a function y = f(x) defined at x,
-/// else between its points (sorted by x); none outside them.
-std::optional<double> y_of(const plot::series& s, const std::vector<std::pair<double, double>>& sorted, double x) {
-    if (s.curve && x >= s.curve->u0 && x <= s.curve->u1) {
+/// else between its points (sorted by x); none outside them. Values a drawing evaluated are
+/// taken as drawn, between them (no value is evaluated for the words).
+std::optional<double> y_of(const plot::series& s, const series_points& sorted, double x) {
+    if (s.curve && !sorted.drawn && x >= s.curve->u0 && x <= s.curve->u1) {
         const auto [cx, cy] = plot::curve_at(*s.curve, x);  // through the memo: dense() and the drawing evaluated most
         if (cx == x && std::isfinite(cy)) return cy;
     }
-    return value_at(sorted, x);
+    return value_at(sorted.xy, x);
 }
 
 /// Where series s first leaves the reference by more than `visible` (none if it never does):
 /// the first of its points past it, then the crossing between it and the point before, by
 /// bisection on the functions where both curves are functions of x. `covered`: whether any
 /// point of s lies within the reference's x range.
-std::optional<double> departure(const plot::series& reference, const std::vector<std::pair<double, double>>& sorted,
-                                const plot::series& s, double visible, bool& covered) {
-    auto points = dense(s);
-    std::sort(points.begin(), points.end());
+std::optional<double> departure(const plot::series& reference, const series_points& sorted, const plot::series& s,
+                                double visible, bool& covered) {
+    const series_points points = sorted_points(s);
     covered = false;
     const auto gap = [&](double x) -> std::optional<double> {
         const auto e = y_of(reference, sorted, x);
@@ -309,7 +350,7 @@ std::optional<double> departure(const plot::series& reference, const std::vector
         return std::fabs(*y - *e);
     };
     std::optional<double> inside;
-    for (const auto& [px, py] : points) {
+    for (const auto& [px, py] : points.xy) {
         const auto g = gap(px);
         if (!g) continue;
         covered = true;
@@ -331,8 +372,7 @@ std::optional<double> departure(const plot::series& reference, const std::vector
 
 /// The sentences of the curves leaving the reference, and of those staying on it.
 std::string departures_words(const panel_words& w, const plot::series& exact, const std::string& reference_name) {
-    auto reference = dense(exact);
-    std::sort(reference.begin(), reference.end());
+    const series_points reference = sorted_points(exact);
     // A fraction of the axis, as the sentence says (the axis reaches past the data).
     const double visible = visible_fraction * (w.axis_y1 - w.axis_y0);
     std::vector<std::string> leaves, stays;
@@ -398,7 +438,22 @@ std::string middle_words(const panel_words& w) {
     return " At " + w.x + " = " + spoken(mid, p.x.ticks) + ": " + join(values) + ".";
 }
 
-/// Where the curves first cross a horizontal line at y.
+/// Where the segment from p to q, whose ends lie on either side of the horizontal line at y,
+/// meets it, as the axes draw the segment: straight in a logarithmic axis' logarithms.
+double crossing_x(const plot::panel& panel, const std::pair<double, double>& p, const std::pair<double, double>& q,
+                  double y) {
+    const bool log_y = panel.y.kind == plot::scale::log && p.second > 0 && q.second > 0 && y > 0;
+    const bool log_x = panel.x.kind == plot::scale::log && p.first > 0 && q.first > 0;
+    const auto in_y = [&](double v) { return log_y ? std::log10(v) : v; };
+    const auto in_x = [&](double v) { return log_x ? std::log10(v) : v; };
+    const double a = in_y(p.second) - in_y(y);
+    const double b = in_y(q.second) - in_y(y);
+    const double x = in_x(p.first) + (in_x(q.first) - in_x(p.first)) * (a / (a - b));
+    return log_x ? std::pow(10.0, x) : x;
+}
+
+/// Where the curves first cross a horizontal line at y: between the first two of their
+/// points (sorted by x) on either side of it.
 std::string crossings_words(const panel_words& w, double y) {
     std::vector<std::string> crossings;
     for (const auto* s : w.shown) {
@@ -408,7 +463,7 @@ std::string crossings_words(const panel_words& w, double y) {
             const double a = points[i - 1].second - y, b = points[i].second - y;
             if ((a < 0) != (b < 0)) {
                 crossings.push_back(spoken_label(s->label.markup) + " at " + w.x + " = " +
-                                    spoken(points[i].first, w.p.x.ticks));
+                                    spoken(crossing_x(w.p, points[i - 1], points[i], y), w.p.x.ticks));
                 break;
             }
         }
@@ -505,6 +560,7 @@ figure_description describe(const figure_spec& spec, const plot::figure& unstyle
     const std::string title = spoken_label(built.title.markup);
     if (!title.empty()) d.text = "Title: " + title + ".\n" + d.text;
     const std::vector<plot::panel_frame> frames = drawn_frames(built, drawn);
+    const drawn_scope values_drawn(drawn != nullptr);
     for (std::size_t i = 0; i < built.panels.size() && i < panels.size(); ++i) {
         d.text += describe_panel(built.panels[i], panels[i], i, built.panels.size(),
                                  i < frames.size() ? &frames[i] : nullptr, spec.animation.has_value(), th) +

@@ -17,6 +17,7 @@
 #include <numbers>
 #include <optional>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -100,60 +101,75 @@ std::string spoken_label(const std::string& markup) {
 
 namespace {
 
-/// Whether this thread is describing a figure a file has drawn: its curves' values are then
-/// the ones the drawing evaluated (none is evaluated for the words).
-thread_local bool describing_drawn = false;
+/// Points along a series, in its order.
+using points = std::vector<std::pair<double, double>>;
 
-/// Describes a drawn figure on this thread while it lives.
-class drawn_scope {
+/// What the describe call on this thread knows: whether a file drew the figure (the words
+/// then evaluate no curve the drawing drew, nor any curve between its points), and each
+/// curve's points found so far (the words read them a few times over).
+struct describing {
+    bool drawn = false;                                         ///< describing a drawn figure
+    std::unordered_map<const plot::curve*, points> curves{};    ///< each curve's points
+};
+
+/// This thread's describe call, if any.
+thread_local describing* current = nullptr;
+
+/// A describe call on this thread while it lives.
+class describing_scope {
 public:
-    explicit drawn_scope(bool drawn) : outer_(describing_drawn) { describing_drawn = drawn; }
-    ~drawn_scope() { describing_drawn = outer_; }
-    drawn_scope(const drawn_scope&) = delete;
-    drawn_scope& operator=(const drawn_scope&) = delete;
+    explicit describing_scope(bool drawn) : outer_(current) {
+        now_.drawn = drawn;
+        current = &now_;
+    }
+    ~describing_scope() { current = outer_; }
+    describing_scope(const describing_scope&) = delete;
+    describing_scope& operator=(const describing_scope&) = delete;
 
 private:
-    bool outer_;
+    describing now_;
+    describing* outer_;
 };
 
-}  // namespace
+/// Whether the words are of a figure a file drew.
+bool of_drawing() { return current && current->drawn; }
 
-namespace {
+/// A curve's finite points: the values its drawing evaluated when a file drew it (its memo
+/// covers it), else about 512 values shared with a later drawing through the curve's memo
+/// (a costly function, an error in MPFR, is evaluated once between them).
+points curve_points(const plot::curve& c) {
+    points out;
+    if (of_drawing()) out = plot::memo_values(c);
+    if (out.empty()) out = plot::first_values(c, 512);
+    std::erase_if(out, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
+    return out;
+}
 
-/// Points along a series (dense's), and whether they are the values a drawing evaluated.
-struct series_points {
-    std::vector<std::pair<double, double>> xy;  ///< the finite points, in the series' order
-    bool drawn = false;                         ///< a drawn curve's values (no others are evaluated)
-};
-
-/// A series' points: a drawn curve's values as its drawing evaluated them (finer than 512
-/// where it bends, and always its pieces' quarters), else about 512 values of its curve,
-/// shared with a later drawing through the curve's memo (a costly function, an error in
-/// MPFR, is evaluated once between them), else its points.
-series_points points_of(const plot::series& s) {
-    series_points out;
+/// A series' points: its curve's (found once per describe call), else its own finite points.
+points points_of(const plot::series& s) {
     if (s.curve) {
-        if (describing_drawn) out.xy = plot::memo_values(*s.curve);
-        out.drawn = !out.xy.empty();
-        if (!out.drawn) out.xy = plot::first_values(*s.curve, 512);
-    } else {
-        for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) out.xy.emplace_back(s.x[i], s.y[i]);
+        if (!current) return curve_points(*s.curve);
+        const auto known = current->curves.find(s.curve.get());
+        if (known != current->curves.end()) return known->second;
+        return current->curves.emplace(s.curve.get(), curve_points(*s.curve)).first->second;
     }
-    std::erase_if(out.xy, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
+    points out;
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) out.emplace_back(s.x[i], s.y[i]);
+    std::erase_if(out, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
     return out;
 }
 
 /// points_of, sorted by x.
-series_points sorted_points(const plot::series& s) {
-    series_points out = points_of(s);
-    std::sort(out.xy.begin(), out.xy.end());
+points sorted_points(const plot::series& s) {
+    points out = points_of(s);
+    std::sort(out.begin(), out.end());
     return out;
 }
 
 }  // namespace
 
 /// Points along a series: its curve sampled finely where it has one, else its points.
-std::vector<std::pair<double, double>> dense(const plot::series& s) { return points_of(s).xy; }
+std::vector<std::pair<double, double>> dense(const plot::series& s) { return points_of(s); }
 
 namespace {
 
@@ -325,32 +341,32 @@ std::string curves_words(const panel_words& w) {
 }
 
 /// y of a series at x: its function's value where it is a function y = f(x) defined at x,
-/// else between its points (sorted by x); none outside them. Values a drawing evaluated are
-/// taken as drawn, between them (no value is evaluated for the words).
-std::optional<double> y_of(const plot::series& s, const series_points& sorted, double x) {
-    if (s.curve && !sorted.drawn && x >= s.curve->u0 && x <= s.curve->u1) {
+/// else between its points (sorted by x); none outside them. The words of a drawn figure take
+/// every curve between its points (the drawn ones as drawn), and evaluate none.
+std::optional<double> y_of(const plot::series& s, const points& sorted, double x) {
+    if (s.curve && !of_drawing() && x >= s.curve->u0 && x <= s.curve->u1) {
         const auto [cx, cy] = plot::curve_at(*s.curve, x);  // through the memo: dense() and the drawing evaluated most
         if (cx == x && std::isfinite(cy)) return cy;
     }
-    return value_at(sorted.xy, x);
+    return value_at(sorted, x);
 }
 
 /// Where series s first leaves the reference by more than `visible` (none if it never does):
 /// the first of its points past it, then the crossing between it and the point before, by
 /// bisection on the functions where both curves are functions of x. `covered`: whether any
 /// point of s lies within the reference's x range.
-std::optional<double> departure(const plot::series& reference, const series_points& sorted, const plot::series& s,
+std::optional<double> departure(const plot::series& reference, const points& sorted, const plot::series& s,
                                 double visible, bool& covered) {
-    const series_points points = sorted_points(s);
+    const points along = sorted_points(s);
     covered = false;
     const auto gap = [&](double x) -> std::optional<double> {
         const auto e = y_of(reference, sorted, x);
-        const auto y = y_of(s, points, x);
+        const auto y = y_of(s, along, x);
         if (!e || !y) return std::nullopt;
         return std::fabs(*y - *e);
     };
     std::optional<double> inside;
-    for (const auto& [px, py] : points.xy) {
+    for (const auto& [px, py] : along) {
         const auto g = gap(px);
         if (!g) continue;
         covered = true;
@@ -372,7 +388,7 @@ std::optional<double> departure(const plot::series& reference, const series_poin
 
 /// The sentences of the curves leaving the reference, and of those staying on it.
 std::string departures_words(const panel_words& w, const plot::series& exact, const std::string& reference_name) {
-    const series_points reference = sorted_points(exact);
+    const points reference = sorted_points(exact);
     // A fraction of the axis, as the sentence says (the axis reaches past the data).
     const double visible = visible_fraction * (w.axis_y1 - w.axis_y0);
     std::vector<std::string> leaves, stays;
@@ -560,7 +576,7 @@ figure_description describe(const figure_spec& spec, const plot::figure& unstyle
     const std::string title = spoken_label(built.title.markup);
     if (!title.empty()) d.text = "Title: " + title + ".\n" + d.text;
     const std::vector<plot::panel_frame> frames = drawn_frames(built, drawn);
-    const drawn_scope values_drawn(drawn != nullptr);
+    const describing_scope describing_now(drawn != nullptr);
     for (std::size_t i = 0; i < built.panels.size() && i < panels.size(); ++i) {
         d.text += describe_panel(built.panels[i], panels[i], i, built.panels.size(),
                                  i < frames.size() ? &frames[i] : nullptr, spec.animation.has_value(), th) +

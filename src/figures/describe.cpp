@@ -353,8 +353,8 @@ std::optional<double> y_of(const plot::series& s, const points& sorted, double x
 
 /// Where series s first leaves the reference by more than `visible` (none if it never does):
 /// the first of its points past it, then the crossing between it and the point before, by
-/// bisection on the functions where both curves are functions of x. `covered`: whether any
-/// point of s lies within the reference's x range.
+/// bisection on the functions where both curves are functions of x (between their points, in
+/// a drawn figure's words). `covered`: whether any point of s lies within the reference's x range.
 std::optional<double> departure(const plot::series& reference, const points& sorted, const plot::series& s,
                                 double visible, bool& covered) {
     const points along = sorted_points(s);

@@ -19,6 +19,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
+#include <filesystem>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -455,4 +457,94 @@ TEST(DescribeCost, EveryBuiltinSaysTheWordsOfTheStart) {
     EXPECT_EQ(counts.checked, 110);
     EXPECT_EQ(counts.refused, 7);
     EXPECT_EQ(listed_cases, static_cast<int>(start_sums.size()));
+}
+
+namespace {
+
+/// A spectrum (|c_(2k+1)| on a logarithmic axis, points joined by lines) with a reference line at y = `line`.
+std::string spectrum_with_line(const std::string& line) {
+    return "[figure]\ndescription = \"spectrum with a line\"\npanel_width_cm = 8.0\npanel_aspect = 0.7\n\n"
+           "[[panel]]\nplot = \"spectrum\"\ntheta0 = [\"0.5pi\", \"0.9pi\", \"0.99pi\", \"0.999pi\"]\n"
+           "methods = [\"exact\"]\nharmonics = 15\n\n[[panel.line]]\ny = " +
+           line + "\n";
+}
+
+/// Each series' points as `data` prints them (long CSV), by id, in order.
+std::map<std::string, std::vector<std::pair<double, double>>> data_points(const std::string& csv) {
+    std::map<std::string, std::vector<std::pair<double, double>>> out;
+    std::stringstream in(csv);
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+        // panel,series,x,y,id: the label may hold no comma here ("ϑ0 = 0.5π").
+        std::stringstream row(line);
+        std::string panel, label, x, y, id;
+        std::getline(row, panel, ',');
+        std::getline(row, label, ',');
+        std::getline(row, x, ',');
+        std::getline(row, y, ',');
+        std::getline(row, id);
+        if (id.starts_with("theta0:")) out[id].emplace_back(std::stod(x), std::stod(y));
+    }
+    return out;
+}
+
+/// "4.74": where the segment between the first two points on either side of y meets it, on a
+/// logarithmic y axis (straight in the logarithms, as drawn); empty if none does.
+std::string crossing_said(const std::vector<std::pair<double, double>>& pts, double y) {
+    for (std::size_t i = 1; i < pts.size(); ++i) {
+        const double a = std::log10(pts[i - 1].second) - std::log10(y);
+        const double b = std::log10(pts[i].second) - std::log10(y);
+        if ((a < 0) != (b < 0)) {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%.3g", pts[i - 1].first + (pts[i].first - pts[i - 1].first) * a / (a - b));
+            return buf;
+        }
+    }
+    return {};
+}
+
+}  // namespace
+
+// A line on a logarithmic axis is crossed where the segment drawn between two points (straight
+// in the logarithms) meets it: theta0 = 0.5pi between 2k+1 = 3 and 5 at 4.74 (the first point
+// past it, 5, before). Hostile: a line through a point is crossed at that point; lines at zero,
+// below zero and above every point are crossed by none.
+TEST(DescribeCost, CrossingsOnALogarithmicAxisAreBetweenThePointsAsDrawn) {
+    const auto dir = test_support::temp_dir("describe-crossings");
+    const auto spec = (dir / "spectrum-line.toml").string();
+    const auto write = [&](const std::string& line) { std::ofstream(spec) << spectrum_with_line(line); };
+    write("1e-3");
+    const auto data = test_support::run_cli("data '" + spec + "'");
+    ASSERT_EQ(data.status, 0) << data.err;
+    const auto points = data_points(data.out);
+    ASSERT_EQ(points.size(), 4u);
+    const auto said = test_support::run_cli("describe '" + spec + "'");
+    ASSERT_EQ(said.status, 0) << said.err;
+    const char* names[] = {"0.5pi", "0.9pi", "0.99pi", "0.999pi"};
+    std::string expected = "; first crossed by ";
+    for (int i = 0; i < 4; ++i) {
+        const std::string at = crossing_said(points.at("theta0:" + std::to_string(i + 1)), 1e-3);
+        ASSERT_FALSE(at.empty()) << names[i];
+        expected += std::string(i == 0 ? "" : i == 3 ? ", and " : ", ") + "theta0 = " + names[i] + " at 2k + 1 = " + at;
+    }
+    EXPECT_NE(said.out.find(expected + "."), std::string::npos) << said.out << "\n" << expected;
+    EXPECT_NE(said.out.find("theta0 = 0.5pi at 2k + 1 = 4.74,"), std::string::npos) << said.out;
+
+    // Through a point: 0.5pi's at 2k+1 = 3, as `data` prints it.
+    const auto& half = points.at("theta0:1");
+    char through[40];
+    std::snprintf(through, sizeof through, "%.17g", half.at(1).second);
+    write(through);
+    const auto on_point = test_support::run_cli("describe '" + spec + "'");
+    ASSERT_EQ(on_point.status, 0) << on_point.err;
+    EXPECT_NE(on_point.out.find("first crossed by theta0 = 0.5pi at 2k + 1 = 3,"), std::string::npos) << on_point.out;
+
+    for (const std::string line : {"0", "-1", "10"}) {
+        write(line);
+        const auto none = test_support::run_cli("describe '" + spec + "'");
+        ASSERT_EQ(none.status, 0) << line << ": " << none.err;
+        EXPECT_NE(none.out.find("; no curve crosses it."), std::string::npos) << line << ": " << none.out;
+    }
+    std::filesystem::remove_all(dir);
 }

@@ -455,17 +455,14 @@ std::string middle_words(const panel_words& w) {
 }
 
 /// Where the segment from p to q, whose ends lie on either side of the horizontal line at y,
-/// meets it, as the axes draw the segment: straight in a logarithmic axis' logarithms.
+/// meets it, as the axes draw the segment: straight in a logarithmic y axis' logarithms.
 double crossing_x(const plot::panel& panel, const std::pair<double, double>& p, const std::pair<double, double>& q,
                   double y) {
     const bool log_y = panel.y.kind == plot::scale::log && p.second > 0 && q.second > 0 && y > 0;
-    const bool log_x = panel.x.kind == plot::scale::log && p.first > 0 && q.first > 0;
     const auto in_y = [&](double v) { return log_y ? std::log10(v) : v; };
-    const auto in_x = [&](double v) { return log_x ? std::log10(v) : v; };
     const double a = in_y(p.second) - in_y(y);
     const double b = in_y(q.second) - in_y(y);
-    const double x = in_x(p.first) + (in_x(q.first) - in_x(p.first)) * (a / (a - b));
-    return log_x ? std::pow(10.0, x) : x;
+    return p.first + (q.first - p.first) * (a / (a - b));
 }
 
 /// Where the curves first cross a horizontal line at y: between the first two of their

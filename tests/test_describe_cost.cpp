@@ -2,8 +2,8 @@
 // The alt text's cost: the words of a drawn figure (a PDF's, an SVG's) take their curves'
 // values from what the drawing evaluated (the curve's memo) instead of evaluating each curve
 // at 512 parameters more, and say the same words as before, every built-in x theme x size,
-// except the crossings of reference lines, which are now where the line between two points
-// meets it (an mpmath reference holds them) instead of the first point past it.
+// except the crossings of reference lines, which are now where the segment between two points
+// meets the line (an mpmath reference holds period-error's) instead of the first point past it.
 #include "figures/batch.hpp"
 #include "figures/catalog.hpp"
 #include "figures/describe.hpp"
@@ -20,15 +20,15 @@
 
 #include <atomic>
 #include <cmath>
-#include <filesystem>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <sstream>
 #include <string>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace {

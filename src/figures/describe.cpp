@@ -17,6 +17,7 @@
 #include <numbers>
 #include <optional>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -98,19 +99,77 @@ std::string spoken_label(const std::string& markup) {
     return out;
 }
 
-/// Points along a series: its curve sampled finely where it has one, else its points.
-std::vector<std::pair<double, double>> dense(const plot::series& s) {
-    std::vector<std::pair<double, double>> out;
-    if (s.curve) {
-        // About 512 values, shared with the drawing through the curve's memo (a costly
-        // function, an error in MPFR, is evaluated once between them).
-        out = plot::first_values(*s.curve, 512);
-    } else {
-        for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) out.emplace_back(s.x[i], s.y[i]);
+namespace {
+
+/// Points along a series, in its order.
+using points = std::vector<std::pair<double, double>>;
+
+/// What the describe call on this thread knows: whether a file drew the figure (the words
+/// then evaluate no curve the drawing drew, nor any curve between its points), and each
+/// curve's points found so far (the words read them a few times over).
+struct describing {
+    bool drawn = false;                                         ///< describing a drawn figure
+    std::unordered_map<const plot::curve*, points> curves{};    ///< each curve's points
+};
+
+/// This thread's describe call, if any.
+thread_local describing* current = nullptr;
+
+/// A describe call on this thread while it lives.
+class describing_scope {
+public:
+    explicit describing_scope(bool drawn) : outer_(current) {
+        now_.drawn = drawn;
+        current = &now_;
     }
+    ~describing_scope() { current = outer_; }
+    describing_scope(const describing_scope&) = delete;
+    describing_scope& operator=(const describing_scope&) = delete;
+
+private:
+    describing now_;
+    describing* outer_;
+};
+
+/// Whether the words are of a figure a file drew.
+bool of_drawing() { return current && current->drawn; }
+
+/// A curve's finite points: the values its drawing evaluated when a file drew it (its memo
+/// covers it), else about 512 values shared with a later drawing through the curve's memo
+/// (a costly function, an error in MPFR, is evaluated once between them).
+points curve_points(const plot::curve& c) {
+    points out;
+    if (of_drawing()) out = plot::memo_values(c);
+    if (out.empty()) out = plot::first_values(c, 512);
     std::erase_if(out, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
     return out;
 }
+
+/// A series' points: its curve's (found once per describe call), else its own finite points.
+points points_of(const plot::series& s) {
+    if (s.curve) {
+        if (!current) return curve_points(*s.curve);
+        const auto known = current->curves.find(s.curve.get());
+        if (known != current->curves.end()) return known->second;
+        return current->curves.emplace(s.curve.get(), curve_points(*s.curve)).first->second;
+    }
+    points out;
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) out.emplace_back(s.x[i], s.y[i]);
+    std::erase_if(out, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
+    return out;
+}
+
+/// points_of, sorted by x.
+points sorted_points(const plot::series& s) {
+    points out = points_of(s);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+}  // namespace
+
+/// Points along a series: its curve sampled finely where it has one, else its points.
+std::vector<std::pair<double, double>> dense(const plot::series& s) { return points_of(s); }
 
 namespace {
 
@@ -281,12 +340,11 @@ std::string curves_words(const panel_words& w) {
     return std::string(w.shown.size() == 1 ? " One curve: " : " Curves: ") + join(items) + ".";
 }
 
-/// Where a series first leaves the sorted reference by more than `visible`: its x, or
-/// nothing; `covered` tells whether they share any x at all.
 /// y of a series at x: its function's value where it is a function y = f(x) defined at x,
-/// else between its points (sorted by x); none outside them.
-std::optional<double> y_of(const plot::series& s, const std::vector<std::pair<double, double>>& sorted, double x) {
-    if (s.curve && x >= s.curve->u0 && x <= s.curve->u1) {
+/// else between its points (sorted by x); none outside them. The words of a drawn figure take
+/// every curve between its points (the drawn ones as drawn), and evaluate none.
+std::optional<double> y_of(const plot::series& s, const points& sorted, double x) {
+    if (s.curve && !of_drawing() && x >= s.curve->u0 && x <= s.curve->u1) {
         const auto [cx, cy] = plot::curve_at(*s.curve, x);  // through the memo: dense() and the drawing evaluated most
         if (cx == x && std::isfinite(cy)) return cy;
     }
@@ -295,21 +353,20 @@ std::optional<double> y_of(const plot::series& s, const std::vector<std::pair<do
 
 /// Where series s first leaves the reference by more than `visible` (none if it never does):
 /// the first of its points past it, then the crossing between it and the point before, by
-/// bisection on the functions where both curves are functions of x. `covered`: whether any
-/// point of s lies within the reference's x range.
-std::optional<double> departure(const plot::series& reference, const std::vector<std::pair<double, double>>& sorted,
-                                const plot::series& s, double visible, bool& covered) {
-    auto points = dense(s);
-    std::sort(points.begin(), points.end());
+/// bisection on the functions where both curves are functions of x (between their points, in
+/// a drawn figure's words). `covered`: whether any point of s lies within the reference's x range.
+std::optional<double> departure(const plot::series& reference, const points& sorted, const plot::series& s,
+                                double visible, bool& covered) {
+    const points along = sorted_points(s);
     covered = false;
     const auto gap = [&](double x) -> std::optional<double> {
         const auto e = y_of(reference, sorted, x);
-        const auto y = y_of(s, points, x);
+        const auto y = y_of(s, along, x);
         if (!e || !y) return std::nullopt;
         return std::fabs(*y - *e);
     };
     std::optional<double> inside;
-    for (const auto& [px, py] : points) {
+    for (const auto& [px, py] : along) {
         const auto g = gap(px);
         if (!g) continue;
         covered = true;
@@ -331,8 +388,7 @@ std::optional<double> departure(const plot::series& reference, const std::vector
 
 /// The sentences of the curves leaving the reference, and of those staying on it.
 std::string departures_words(const panel_words& w, const plot::series& exact, const std::string& reference_name) {
-    auto reference = dense(exact);
-    std::sort(reference.begin(), reference.end());
+    const points reference = sorted_points(exact);
     // A fraction of the axis, as the sentence says (the axis reaches past the data).
     const double visible = visible_fraction * (w.axis_y1 - w.axis_y0);
     std::vector<std::string> leaves, stays;
@@ -398,7 +454,19 @@ std::string middle_words(const panel_words& w) {
     return " At " + w.x + " = " + spoken(mid, p.x.ticks) + ": " + join(values) + ".";
 }
 
-/// Where the curves first cross a horizontal line at y.
+/// Where the segment from p to q, whose ends lie on either side of the horizontal line at y,
+/// meets it, as the axes draw the segment: straight in a logarithmic y axis' logarithms.
+double crossing_x(const plot::panel& panel, const std::pair<double, double>& p, const std::pair<double, double>& q,
+                  double y) {
+    const bool log_y = panel.y.kind == plot::scale::log && p.second > 0 && q.second > 0 && y > 0;
+    const auto in_y = [&](double v) { return log_y ? std::log10(v) : v; };
+    const double a = in_y(p.second) - in_y(y);
+    const double b = in_y(q.second) - in_y(y);
+    return p.first + (q.first - p.first) * (a / (a - b));
+}
+
+/// Where the curves first cross a horizontal line at y: between the first two of their
+/// points (sorted by x) on either side of it.
 std::string crossings_words(const panel_words& w, double y) {
     std::vector<std::string> crossings;
     for (const auto* s : w.shown) {
@@ -408,7 +476,7 @@ std::string crossings_words(const panel_words& w, double y) {
             const double a = points[i - 1].second - y, b = points[i].second - y;
             if ((a < 0) != (b < 0)) {
                 crossings.push_back(spoken_label(s->label.markup) + " at " + w.x + " = " +
-                                    spoken(points[i].first, w.p.x.ticks));
+                                    spoken(crossing_x(w.p, points[i - 1], points[i], y), w.p.x.ticks));
                 break;
             }
         }
@@ -505,6 +573,7 @@ figure_description describe(const figure_spec& spec, const plot::figure& unstyle
     const std::string title = spoken_label(built.title.markup);
     if (!title.empty()) d.text = "Title: " + title + ".\n" + d.text;
     const std::vector<plot::panel_frame> frames = drawn_frames(built, drawn);
+    const describing_scope describing_now(drawn != nullptr);
     for (std::size_t i = 0; i < built.panels.size() && i < panels.size(); ++i) {
         d.text += describe_panel(built.panels[i], panels[i], i, built.panels.size(),
                                  i < frames.size() ? &frames[i] : nullptr, spec.animation.has_value(), th) +

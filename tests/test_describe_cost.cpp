@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The alt text's cost: the words of a drawn figure (a PDF's, an SVG's) take their curves'
-// values from what the drawing evaluated (the curve's memo) instead of evaluating each curve
-// at 512 parameters more, and say the same words as before, every built-in x theme x size,
+// The alt text's cost: the words of a drawn figure (a PDF's, an SVG's) take their curves at
+// the vertices the file's drawing drew (their values in the curve's memo) instead of evaluating
+// each curve at 512 parameters more, and say the same words as before, every built-in x theme x size,
 // except the crossings of reference lines, which are now where the segment between two points
 // meets the line (an mpmath reference holds period-error's) instead of the first point past it.
 #include "figures/batch.hpp"
@@ -277,10 +277,12 @@ words_cost render_counted(counted_figure& c, const figures::entry& e, const plot
 
 // The reproduction: Fig. 7's PDF made describe evaluate each curve at ~512 parameters the
 // drawing had not (an MPFR period error each in panel (b)): 29 M of its 213 M instructions.
-// Now describe evaluates none of the curves the drawing drew. Panel (a)'s exact curve is drawn
-// as 23 circles, its line not drawn: describe evaluates it at 513 parameters (a double-precision
-// elliptic integral each), as it did, for the axis' range and the departures from it.
-TEST(DescribeCost, Fig7PdfWordsEvaluateNoDrawnCurve) {
+// Now describe takes the curves the drawing drew at the drawing's own vertices, and evaluates
+// them only where a departure's bisection looks between two vertices (at most 80 values each).
+// Panel (a)'s exact curve is drawn as 23 circles, its line not drawn: describe evaluates it at
+// 513 parameters (a double-precision elliptic integral each), as it did, for the axis' range,
+// and where the departures from it are looked for.
+TEST(DescribeCost, Fig7PdfWordsTakeTheDrawnVerticesAndBisectOnly) {
     const figures::entry& e = figures::find("period");
     const plot::figure_words own = own_words(e, fig7(), paper());
     for (const std::string format : {"pdf", "svg"}) {
@@ -289,20 +291,24 @@ TEST(DescribeCost, Fig7PdfWordsEvaluateNoDrawnCurve) {
         const words_cost cost = render_counted(c, e, paper(), format);
         ASSERT_EQ(cost.describe.size(), 7u) << format;
         EXPECT_EQ(cost.drawing[0], 0) << format << ": the exact curve's line is not drawn";
-        EXPECT_EQ(cost.describe[0], 513) << format << ": 32 pieces, each halved 4 times";
+        EXPECT_GE(cost.describe[0], 513) << format << ": 32 pieces, each halved 4 times";
+        EXPECT_LE(cost.describe[0], 1000) << format;
         for (std::size_t i = 1; i < 7; ++i) {
             EXPECT_GT(cost.drawing[i], 0) << format << " curve " << i;
-            EXPECT_EQ(cost.describe[i], 0) << format << " curve " << i;
+            EXPECT_LE(cost.describe[i], 80) << format << " curve " << i << ": one bisection at most";
         }
         EXPECT_EQ(cost.words.alt, own.alt) << format;
         EXPECT_EQ(cost.words.description, own.description) << format;
 
         // The file with describe's words evaluates what the file with the words given does,
-        // but for the exact curve's.
+        // but for the exact curve's and the bisections'.
         counted_figure told = counted(fig7());
         told.fig.words = [own](const plot::drawing*) { return own; };
         (void)plot::render(told.fig, paper(), format, {});
-        EXPECT_EQ(minus(c.now(), told.now()), (std::vector<long>{513, 0, 0, 0, 0, 0, 0})) << format;
+        const std::vector<long> more = minus(c.now(), told.now());
+        ASSERT_EQ(more.size(), 7u);
+        EXPECT_GE(more[0], 513) << format;
+        for (std::size_t i = 1; i < 7; ++i) EXPECT_LE(more[i], 80) << format << " curve " << i;
     }
 }
 
@@ -330,7 +336,7 @@ TEST(DescribeCost, CurvesNotDrawnAreEvaluatedAsWithoutADrawing) {
     // Its own layout samples the curves drawn with a line; the exact curve's line is not drawn.
     const std::vector<long> evaluated = c.now();
     ASSERT_EQ(evaluated.size(), 7u);
-    EXPECT_EQ(evaluated[0], 513);
+    EXPECT_GE(evaluated[0], 513);
     for (std::size_t i = 1; i < 7; ++i) EXPECT_GT(evaluated[i], 0) << i;
     EXPECT_EQ(d.alt, own.alt);
     EXPECT_EQ(d.text, own.description);
@@ -347,34 +353,34 @@ TEST(DescribeCost, CurvesNotDrawnAreEvaluatedAsWithoutADrawing) {
     const std::vector<long> words = minus(whole.now(), drawn);
     ASSERT_EQ(words.size(), 7u);
     EXPECT_EQ(drawn[0], 0);
-    EXPECT_EQ(words[0], 513);
+    EXPECT_GE(words[0], 513);
     EXPECT_EQ(both.text, own.description);
 }
 
-// A curve's memo lends its values only when they cover the curve (both ends) and are all
-// there: 65535 values are lent, at 65536 (the memo's bound: one more would not be kept) none.
-TEST(DescribeCost, MemoValuesCoverTheCurveAndAreAllThere) {
-    const auto c = plot::parametric_curve(0.0, 1.0, [](double u) { return std::pair{1.0 - u, u * u}; });
-    EXPECT_TRUE(plot::memo_values(*c).empty());
-    (void)plot::curve_at(*c, 0.5);
-    (void)plot::curve_at(*c, 0.0);
-    EXPECT_TRUE(plot::memo_values(*c).empty()) << "the last parameter not evaluated";
-    (void)plot::curve_at(*c, 1.0);
-    (void)plot::curve_at(*c, 0.25);
-    const auto values = plot::memo_values(*c);
-    ASSERT_EQ(values.size(), 4u);
-    // In the order of the parameters (x falls as u rises).
-    EXPECT_EQ(values[0], (std::pair{1.0, 0.0}));
-    EXPECT_EQ(values[1], (std::pair{0.75, 0.0625}));
-    EXPECT_EQ(values[2], (std::pair{0.5, 0.25}));
-    EXPECT_EQ(values[3], (std::pair{0.0, 1.0}));
-
-    const auto full = plot::function_curve(0.0, 1.0, [](double x) { return x; });
-    constexpr int bound = 1 << 16;
-    for (int i = 0; i < bound - 1; ++i) (void)plot::curve_at(*full, static_cast<double>(i) / (bound - 2));
-    EXPECT_EQ(plot::memo_values(*full).size(), static_cast<std::size_t>(bound - 1));
-    (void)plot::curve_at(*full, 0.5 / (bound - 2));
-    EXPECT_TRUE(plot::memo_values(*full).empty()) << "at the bound, a value evaluated may be missing";
+// The words of a file are its own drawing's: a curve's memo holding other values (a PNG drawn
+// first at another scale, or values asked for anywhere on the curve, as a parallel render
+// may leave them) changes neither the words nor the evaluations describe makes.
+TEST(DescribeCost, WordsAreTheFilesWhateverTheMemoHolds) {
+    for (const char* id : {"period", "period-error", "spectrum"}) {
+        SCOPED_TRACE(id);
+        const figures::entry& e = figures::find(id);
+        const auto build = [&] { return figures::build(e, figures::sized_by({}, paper())); };
+        counted_figure fresh = counted(build());
+        const words_cost alone = render_counted(fresh, e, paper(), "pdf");
+        counted_figure busy = counted(build());
+        plot::output_options fine;
+        fine.dpi = 1200;
+        (void)plot::render(busy.fig, paper(), "png", fine);
+        for (const auto& p : busy.fig.panels) {
+            for (const auto& s : p.data) {
+                if (!s.curve) continue;
+                for (int k = 0; k <= 997; ++k) (void)plot::curve_at(*s.curve, s.curve->u0 + (s.curve->u1 - s.curve->u0) * k / 997.0);
+            }
+        }
+        const words_cost after = render_counted(busy, e, paper(), "pdf");
+        EXPECT_EQ(after.words.alt, alone.words.alt);
+        EXPECT_EQ(after.words.description, alone.words.description);
+    }
 }
 
 namespace {

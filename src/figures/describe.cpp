@@ -110,6 +110,7 @@ using points = std::vector<std::pair<double, double>>;
 struct describing {
     bool drawn = false;                                         ///< describing a drawn figure
     std::unordered_map<const plot::curve*, points> curves{};    ///< each curve's points
+    std::unordered_map<const plot::curve*, points> as_drawn{};  ///< the drawn curves' vertices
 };
 
 /// This thread's describe call, if any.
@@ -118,8 +119,10 @@ thread_local describing* current = nullptr;
 /// A describe call on this thread while it lives.
 class describing_scope {
 public:
-    explicit describing_scope(bool drawn) : outer_(current) {
-        now_.drawn = drawn;
+    /// The words of `built`, drawn by `drawn` (null: not drawn).
+    describing_scope(const plot::figure& built, const plot::drawing* drawn) : outer_(current) {
+        now_.drawn = drawn != nullptr;
+        if (drawn) now_.as_drawn = plot::drawn_curve_values(built, *drawn);
         current = &now_;
     }
     ~describing_scope() { current = outer_; }
@@ -134,12 +137,16 @@ private:
 /// Whether the words are of a figure a file drew.
 bool of_drawing() { return current && current->drawn; }
 
-/// A curve's finite points: the values its drawing evaluated when a file drew it (its memo
-/// covers it), else about 512 values shared with a later drawing through the curve's memo
-/// (a costly function, an error in MPFR, is evaluated once between them).
+/// A curve's finite points: its vertices as the file's drawing drew it (their values are in
+/// its memo: nothing is evaluated, and the words are the file's whatever else drew the figure
+/// first), else about 512 values shared with a later drawing through the curve's memo (a
+/// costly function, an error in MPFR, is evaluated once between them).
 points curve_points(const plot::curve& c) {
     points out;
-    if (of_drawing()) out = plot::memo_values(c);
+    if (current) {
+        const auto drawn = current->as_drawn.find(&c);
+        if (drawn != current->as_drawn.end()) out = drawn->second;
+    }
     if (out.empty()) out = plot::first_values(c, 512);
     std::erase_if(out, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
     return out;
@@ -341,10 +348,9 @@ std::string curves_words(const panel_words& w) {
 }
 
 /// y of a series at x: its function's value where it is a function y = f(x) defined at x,
-/// else between its points (sorted by x); none outside them. The words of a drawn figure take
-/// every curve between its points (the drawn ones as drawn), and evaluate none.
+/// else between its points (sorted by x); none outside them.
 std::optional<double> y_of(const plot::series& s, const points& sorted, double x) {
-    if (s.curve && !of_drawing() && x >= s.curve->u0 && x <= s.curve->u1) {
+    if (s.curve && x >= s.curve->u0 && x <= s.curve->u1) {
         const auto [cx, cy] = plot::curve_at(*s.curve, x);  // through the memo: dense() and the drawing evaluated most
         if (cx == x && std::isfinite(cy)) return cy;
     }
@@ -573,7 +579,7 @@ figure_description describe(const figure_spec& spec, const plot::figure& unstyle
     const std::string title = spoken_label(built.title.markup);
     if (!title.empty()) d.text = "Title: " + title + ".\n" + d.text;
     const std::vector<plot::panel_frame> frames = drawn_frames(built, drawn);
-    const describing_scope describing_now(drawn != nullptr);
+    const describing_scope describing_now(built, drawn);
     for (std::size_t i = 0; i < built.panels.size() && i < panels.size(); ++i) {
         d.text += describe_panel(built.panels[i], panels[i], i, built.panels.size(),
                                  i < frames.size() ? &frames[i] : nullptr, spec.animation.has_value(), th) +

@@ -353,18 +353,4 @@ void simplify(std::vector<std::pair<double, double>>& run, double tolerance) {
     run = std::move(out);
 }
 
-std::vector<std::pair<double, double>> memo_values(const curve& c) {
-    if (!c.last) return {};
-    const std::lock_guard<std::mutex> hold(c.last->lock);
-    const curve_values& values = c.last->values;
-    if (values.size() >= max_values || !values.contains(c.u0) || !values.contains(c.u1)) return {};
-    std::vector<std::pair<double, std::pair<double, double>>> by_parameter(values.begin(), values.end());
-    std::sort(by_parameter.begin(), by_parameter.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<std::pair<double, double>> out;
-    out.reserve(by_parameter.size());
-    for (const auto& [u, v] : by_parameter) out.push_back(v);
-    return out;
-}
-
 }  // namespace plot

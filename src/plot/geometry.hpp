@@ -111,10 +111,4 @@ double distance_to_segment(double px, double py, double ax, double ay, double bx
 /// small and fast to draw.
 void simplify(std::vector<std::pair<double, double>>& run, double tolerance);
 
-/// The values the curve's memo holds, in the order of their parameters: every value its
-/// samplings (and curve_at, first_values) evaluated. None unless they cover the curve (both
-/// ends evaluated, as every sampling evaluates them) and are all there (the memo short of
-/// its bound, so that none evaluated was left out of it).
-std::vector<std::pair<double, double>> memo_values(const curve& c);
-
 }  // namespace plot

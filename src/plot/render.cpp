@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 
 namespace plot {
@@ -1456,6 +1457,31 @@ drawn_points drawn_series(const series& s, const axis_map& mx, const axis_map& m
 }
 
 }  // namespace
+
+std::unordered_map<const curve*, std::vector<std::pair<double, double>>> drawn_curve_values(const figure& fig,
+                                                                                             const drawing& drawn) {
+    std::unordered_map<const curve*, std::vector<std::pair<double, double>>> out;
+    if (!drawn.fig || !drawn.th || drawn.raster || drawn.frames.size() != fig.panels.size()) return out;
+    const figure styled = with_theme_styles(*drawn.fig, *drawn.th);
+    if (!same_content(fig, *drawn.fig) && !same_content(with_theme_styles(fig, *drawn.th), styled)) return out;
+    // As draw_figure samples on a vector page (one unit a point) and follows the curves.
+    const double tolerance = curve_tolerance(1.0, false);
+    for (std::size_t i = 0; i < styled.panels.size() && i < drawn.frames.size(); ++i) {
+        const panel& p = styled.panels[i];
+        const panel_frame& f = drawn.frames[i];
+        const axis_map mx{f.x_lo, f.x_hi, p.x.kind == scale::log, f.x, f.x + f.w};
+        const axis_map my{f.y_lo, f.y_hi, p.y.kind == scale::log, f.y + f.h, f.y};
+        const double reach = drawn.th->line_width_pt;
+        const rect clip{f.x - reach, f.y - reach, f.w + 2 * reach, f.h + 2 * reach};
+        for (const auto& s : p.data) {
+            if (!s.curve || s.line == line_style::none || out.contains(s.curve.get())) continue;
+            const drawn_points d = drawn_series(s, mx, my, clip, tolerance);
+            auto& values = out[s.curve.get()];
+            for (std::size_t k = 0; k < d.x.size(); ++k) values.emplace_back(d.x[k], d.y[k]);
+        }
+    }
+    return out;
+}
 
 std::vector<std::vector<drawn_points>> drawn_data(const figure& unstyled, const theme& th, double dpi,
                                                   std::vector<panel_frame>& frames) {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -168,5 +169,12 @@ struct drawn_points {
 /// 0.05 pt; the panels' frames go to `frames`.
 std::vector<std::vector<drawn_points>> drawn_data(const figure& fig, const theme& th, double dpi,
                                                   std::vector<panel_frame>& frames);
+
+/// Each curve that `drawn` (a vector drawing of `fig`, in any theme) drew with a line, at
+/// the vertices it drew, in data values (NaN between the pieces of a broken line): from the
+/// curve's memo, so found with no evaluation, and the same whatever else drew the figure
+/// before. Empty where `drawn` is a raster or of another figure.
+std::unordered_map<const curve*, std::vector<std::pair<double, double>>> drawn_curve_values(const figure& fig,
+                                                                                             const drawing& drawn);
 
 }  // namespace plot

@@ -1,1 +1,91 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The period errors' cost cuts change no number: every output that prints a period error
+// (Fig. 7, period-error, period-formulas, convergence, every built-in's data, the claims and
+// eval's err: columns of every closed-form method over 1100 amplitudes) is byte for byte what
+// it was before them. The SHA-256 sums below were taken with the program of the commit
+// before the cuts ("tests: four empty cost test files registered").
+#include "process.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace {
+
+using test_support::run_command;
+
+struct printed {
+    std::string args;    ///< the command's arguments after the program
+    const char* sha256;  ///< the sum of its standard output before the cuts
+};
+
+/// eval's err: columns of every closed-form method (and agm, series at several N).
+std::string every_closed_form_error() {
+    std::string cols = "theta0";
+    for (const char* m : {"harmonic", "lowest", "first", "second", "polynomial", "kidd-fogg", "lima-arun", "ganley",
+                          "agm:1", "agm:2", "agm:3", "agm:5", "agm:10", "denman", "series:1", "series:3", "series:8",
+                          "series:20", "log-asymptote", "molina"}) {
+        cols += std::string(",err:") + m;
+    }
+    return "eval --theta0 @'" + std::string(PENDULUM_TEST_DATA) + "/perr_amplitudes.txt' --columns " + cols;
+}
+
+/// The outputs and their sums before the cuts.
+std::vector<printed> before_the_cuts() {
+    // clang-format off
+    return {
+        {"data fig1 -f csv --layout long", "2272b40d2868aeb4d8dff469ee91a55877b0fac9ccf79efa8032ffe18303084c"},
+        {"data fig2 -f csv --layout long", "f35219093996e51ae9eb0de121cfbc04e0796025803c8309cbe41e04ea9046d7"},
+        {"data fig3 -f csv --layout long", "64691f922adc2a85373899eb0d5fb2933d511281932c083cf4c58b8f6a4d10af"},
+        {"data fig4 -f csv --layout long", "dfab133d8e05bfcaf6978b7011d3791d8e106f9326617c4f7c5f060fdc85f326"},
+        {"data fig5 -f csv --layout long", "cb4e80742b2452ce33764df43ee78630d56f2bda7897ebbcd6ca7535aadf74e3"},
+        {"data fig6 -f csv --layout long", "fabdb3feac7f6c04405529ebe0ea36bf451dba32f82aaff53446a7835d5f85bb"},
+        {"data fig7 -f csv --layout long", "bae66cc47b24c47007f2760b21c9b9f3210107e94984a7b695a156bca7732f88"},
+        {"data convergence -f csv --layout long", "e96157363606a9e40793b4d30fb0dfce5b22d8c61e4b2456812a41ed615b4b98"},
+        {"data period-formulas -f csv --layout long", "611d12bac58706046a161a06143ef62d79484f4a0b9d0c1d8b00861cb1f4c97e"},
+        {"data period-error -f csv --layout long", "6b377a0956f2a651717429ae502f85e299b0febae501b446797d5d1e6655e3be"},
+        {"data phase-portrait -f csv --layout long", "4e811a3a2719ce9c653b9bb9b3b9a24fe1e1d8a54eec5ebebce678f81d9c84b9"},
+        {"data spectrum -f csv --layout long", "fb8304297d7a4b6e707141f8c536cb976aa7f68b8860516633debc4fab845fe5"},
+        {"data regimes -f csv --layout long", "563778863a7d74789588134daa4b8f8afde60c7a164056a918fd12a14778f96e"},
+        {"data swing -f csv --layout long", "cc0a5805d46a1f690d3f303283caadf95135ffdaca00897ecb7ee8ef30664eff"},
+        {"data separatrix -f csv --layout long", "1cfe6a3712b6e0b6043990bd00104a9141f6d317b0312e9706162441180c6abb"},
+        {"data over-the-top -f csv --layout long", "95a71663cc793046d74c355e8865f12c1f88a36862d2d28351c119d5612881b5"},
+        {"data fig7 -f csv --layout wide", "ea789eec19089f95b4aa4b9b36f47d7a2fa368e51351bd9b4dba79db15a2440c"},
+        {"data fig7 -f json", "6c422badff231f2360cb131f732ec2dcaeb979f646b8b9836a26103fe8155b57"},
+        {"data period-error -f csv --layout wide", "2ba51ccb3f5597efd2a3af13d8d8e9e14dbacc5c248328768452a4df4ea241dc"},
+        {"data period-error -f json", "19543fe6e5f8ef5eda3e104cd1d7959268518399880fc81f06040aa2671e6c96"},
+        {"data convergence -f csv --layout wide", "0af1a43d8c23667c82905ca738f14c4075e3616e8585845193426e22da4f8daa"},
+        {"data convergence -f json", "7960b4ec86be58caf2a7cbdfade8eeec1f6072329d12c3197c2c2cb10186d003"},
+        {"claims", "1299ce1e4f1070deab6bfba5c68187daf9401935b0c6a133787c53a5dace2477"},
+        {"claims --format json", "a8cb88dfdaf72075062be8c6aff2d5a0f953e9ec02a676803066c0e0d545acda"},
+        {every_closed_form_error(), "2ca75fbfa1d8d907296431600f7083e5f95cd2d8d1910ca2de7d7850471aa9da"},
+        {every_closed_form_error() + " --format json", "a80c030860498b0861e619c6be14d131d1331717ed783dfb0f4fb0f248fc7918"},
+    };
+    // clang-format on
+}
+
+/// The SHA-256 sum of the program's output with `args` (data and eval on two workers).
+std::string sum_of(const std::string& args) {
+    const std::string jobs = args.rfind("claims", 0) == 0 ? "" : " --jobs 2";
+    const auto r = run_command("'" + std::string(PENDULUM_EXE) + "' " + args + jobs + " | sha256sum");
+    EXPECT_EQ(r.status, 0) << args << ": " << r.err;
+    return r.out.substr(0, 64);
+}
+
+}  // namespace
+
+// Every output that prints a period error, byte for byte as before the cuts.
+TEST(PerrCost, EveryPrintedPeriodErrorIsAsBeforeTheCuts) {
+    for (const auto& p : before_the_cuts()) EXPECT_EQ(sum_of(p.args), p.sha256) << p.args;
+}
+
+// The amplitudes' file is what its script writes (its first and last lines, and its length).
+TEST(PerrCost, TheAmplitudesAreTheScriptsOwn) {
+    const std::string text = test_support::slurp(std::string(PENDULUM_TEST_DATA) + "/perr_amplitudes.txt");
+    EXPECT_EQ(text.rfind("# written by make_perr_amplitudes.py\n1.000000e-300\n", 0), 0u);
+    EXPECT_NE(text.find("\npi-1.000000e-300\n"), std::string::npos);
+    EXPECT_NE(text.find("\n3.0000\n"), std::string::npos);
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1101);
+}

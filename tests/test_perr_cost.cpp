@@ -6,9 +6,13 @@
 // before the cuts ("tests: four empty cost test files registered").
 #include "process.hpp"
 
+#include "pendulum/formulas_mp.hpp"
+#include "pendulum/mp_bessel.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -88,4 +92,71 @@ TEST(PerrCost, TheAmplitudesAreTheScriptsOwn) {
     EXPECT_NE(text.find("\npi-1.000000e-300\n"), std::string::npos);
     EXPECT_NE(text.find("\n3.0000\n"), std::string::npos);
     EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1101);
+}
+
+// ---- Bessel functions in MPFR: the same numbers by less work ----------------------------
+
+namespace {
+
+using pendulum::mp::real;
+
+/// x with `bits`, from a double.
+real at(double x, long bits) { return real(x, bits); }
+
+/// The arguments of the Bessel checks: a sweep of (0, 4], the smallest and largest ones,
+/// and the zeros of J_0 and J_1 to the last bit of a double (where the series cannot round
+/// and MPFR's own function is used).
+std::vector<double> bessel_arguments() {
+    std::vector<double> xs = {1e-300, 1e-30, 1e-8, 1e-4, 0.01, 2.404825557695773, 2.4048255576957724,
+                              2.4048255576957732, 3.8317059702075125, 3.831705970207512, 3.9999999999999996, 4.0};
+    for (int i = 1; i <= 97; ++i) xs.push_back(0.0412 * i - 1e-3 * (i % 7));
+    return xs;
+}
+
+}  // namespace
+
+// J_n correctly rounded by its series is mpfr_jn's number, bit for bit, at every precision the
+// period errors use, n = 0..10, across (0, 4] and at the zeros (where it falls back).
+TEST(PerrCost, RoundedBesselIsMpfrsOwn) {
+    for (const long bits : {128L, 256L, 512L, 1152L}) {
+        for (const double x : bessel_arguments()) {
+            for (int n = 0; n <= 10; ++n) {
+                const real mine = pendulum::mp::bessel_j_rounded(n, at(x, bits));
+                const real theirs = pendulum::mp::bessel_j(n, at(x, bits));
+                ASSERT_TRUE(mpfr_equal_p(mine.get(), theirs.get()) != 0) << "J_" << n << "(" << x << ") at " << bits;
+                ASSERT_EQ(mine.precision(), bits);
+            }
+        }
+    }
+}
+
+// Outside the series' domain (x = 0, |x| > 4, negative x) it is mpfr_jn itself.
+TEST(PerrCost, RoundedBesselOutsideTheSeriesIsMpfrs) {
+    for (const double x : {0.0, 4.000000000000001, 5.0, 100.0, -1.5, -4.0}) {
+        for (int n = 0; n <= 4; ++n) {
+            const real mine = pendulum::mp::bessel_j_rounded(n, at(x, 128));
+            const real theirs = pendulum::mp::bessel_j(n, at(x, 128));
+            EXPECT_TRUE(mpfr_equal_p(mine.get(), theirs.get()) != 0 || (mine.is_zero() && theirs.is_zero()))
+                << "J_" << n << "(" << x << ")";
+        }
+    }
+}
+
+// J_n alone is element n of J_0..J_n, bit for bit; and refuses what bessel_j_upto refuses.
+TEST(PerrCost, OneBesselIsTheLastOfTheRun) {
+    for (const long bits : {128L, 256L, 1152L}) {
+        for (const double x : bessel_arguments()) {
+            for (int n = 0; n <= 9; ++n) {
+                const real one = pendulum::mp::bessel_j_nth(n, at(x, bits));
+                const auto run = pendulum::mp::bessel_j_upto(n, at(x, bits));
+                ASSERT_TRUE(mpfr_equal_p(one.get(), run[static_cast<std::size_t>(n)].get()) != 0)
+                    << "J_" << n << "(" << x << ") at " << bits;
+            }
+        }
+    }
+    EXPECT_THROW((void)pendulum::mp::bessel_j_nth(-1, at(1.0, 128)), std::invalid_argument);
+    EXPECT_THROW((void)pendulum::mp::bessel_j_nth(1, at(0.0, 128)), std::domain_error);
+    EXPECT_THROW((void)pendulum::mp::bessel_j_nth(1, at(4.000000000000001, 128)), std::domain_error);
+    EXPECT_NO_THROW((void)pendulum::mp::bessel_j_nth(1, at(4.0, 128)));
+    EXPECT_NO_THROW((void)pendulum::mp::bessel_j_nth(1, at(-4.0, 128)));
 }

@@ -8,10 +8,15 @@
 
 #include "pendulum/formulas_mp.hpp"
 #include "pendulum/mp_bessel.hpp"
+#include "pendulum/approximants_mp.hpp"
+#include "pendulum/formula_methods.hpp"
+#include "pendulum/period_error.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -159,4 +164,170 @@ TEST(PerrCost, OneBesselIsTheLastOfTheRun) {
     EXPECT_THROW((void)pendulum::mp::bessel_j_nth(1, at(4.000000000000001, 128)), std::domain_error);
     EXPECT_NO_THROW((void)pendulum::mp::bessel_j_nth(1, at(4.0, 128)));
     EXPECT_NO_THROW((void)pendulum::mp::bessel_j_nth(1, at(-4.0, 128)));
+}
+
+// ---- Closed forms' MPFR tier: the first precision is foreseen ---------------------------
+
+namespace {
+
+using pendulum::amplitude;
+using pendulum::mp_period;
+using pendulum::period_error;
+using pendulum::mp::mp_amplitude;
+
+/// A closed form's MPFR period and its N.
+struct closed_form {
+    const char* name;
+    mp_period f;
+    int n;
+};
+
+/// Every closed form of the method table (the paper's three orders by their own MPFR
+/// formulas, as period_error.cpp has them).
+std::vector<closed_form> closed_forms() {
+    namespace f = pendulum::formulas;
+    using pendulum::closed_form_period_mp;
+    return {
+        {"harmonic", closed_form_period_mp<f::harmonic>, 0},
+        {"lowest", [](const mp_amplitude& x, int) { return 1.0 / f::lowest_frequency(x.theta); }, 0},
+        {"first", [](const mp_amplitude& x, int) { return 1.0 / f::first_order_of(x.theta).frequency; }, 0},
+        {"second", pendulum::detail::second_period_mp, 0},
+        {"polynomial", closed_form_period_mp<f::polynomial>, 0},
+        {"kidd-fogg", closed_form_period_mp<f::kidd_fogg>, 0},
+        {"lima-arun", closed_form_period_mp<f::lima_arun>, 0},
+        {"ganley", closed_form_period_mp<f::ganley>, 0},
+        {"agm:1", closed_form_period_mp<f::agm>, 1},
+        {"agm:3", closed_form_period_mp<f::agm>, 3},
+        {"agm:10", closed_form_period_mp<f::agm>, 10},
+        {"denman", closed_form_period_mp<f::denman>, 0},
+        {"series:1", closed_form_period_mp<f::series>, 1},
+        {"series:8", closed_form_period_mp<f::series>, 8},
+        {"series:20", closed_form_period_mp<f::series>, 20},
+        {"log-asymptote", closed_form_period_mp<f::log_asymptote>, 0},
+        {"molina", closed_form_period_mp<f::molina>, 0},
+    };
+}
+
+/// The precisions of the MPFR tier, in turn.
+constexpr long tier_bits[] = {128, 256, 512, 1152};
+
+/// The tier as before the cuts, written out: the index of the first precision whose error
+/// is 56 bits above its rounding (4 where none is).
+std::size_t resolving_precision(const amplitude& a, const closed_form& c) {
+    for (std::size_t i = 0; i < 4; ++i) {
+        const long bits = tier_bits[i];
+        const auto x = pendulum::mp::exact_amplitude(a, bits);
+        const real e = c.f(x, c.n) / (1.0 / pendulum::mp::agm(real(1.0, bits), x.kp)) - 1.0;
+        if (!e.is_zero() && pendulum::mp::exponent(e) > -(bits - 56)) return i;
+    }
+    return 4;
+}
+
+/// The foreseen tier against the tier from 128 bits: the same kind and the same value.
+void expect_same(const amplitude& a, const closed_form& c, const std::string& where) {
+    const period_error foreseen = pendulum::detail::mp_closed_form_error(a, c.n, c.f);
+    const period_error from_128 = pendulum::detail::mp_closed_form_error_from(a, c.n, c.f, 0);
+    EXPECT_EQ(foreseen.what, from_128.what) << c.name << " at " << where;
+    EXPECT_EQ(foreseen.value, from_128.value) << c.name << " at " << where;
+}
+
+/// The amplitudes on either side of a change of the resolving precision between lo < hi
+/// (log-spaced bisection down to adjacent doubles).
+double resolving_boundary(const closed_form& c, double lo, double hi) {
+    const std::size_t at_lo = resolving_precision(lo, c);
+    while (std::nextafter(lo, hi) < hi) {
+        const double mid = std::sqrt(lo) * std::sqrt(hi);
+        const double m = mid > lo && mid < hi ? mid : std::nextafter(lo, hi);
+        (resolving_precision(m, c) == at_lo ? lo : hi) = m;
+    }
+    return hi;
+}
+
+}  // namespace
+
+// The brief's sweep and tiny amplitudes down to 1e-300 (below_limit), every closed form.
+TEST(PerrCost, ForeseenPrecisionGivesTheErrorsFrom128Bits) {
+    const std::vector<std::pair<amplitude, std::string>> sweep = {
+        {1e-300, "1e-300"}, {1e-200, "1e-200"}, {1e-150, "1e-150"}, {1e-100, "1e-100"}, {1e-70, "1e-70"},
+        {1e-40, "1e-40"},   {1e-30, "1e-30"},   {1e-20, "1e-20"},   {1e-15, "1e-15"},   {1e-12, "1e-12"},
+        {1e-8, "1e-8"},     {1e-4, "1e-4"},     {0.01, "0.01"},     {0.1, "0.1"},       {1.0, "1"},
+        {2.0, "2"},         {3.0, "3"},         {amplitude::from_pi(1e-6), "pi - 1e-6"},
+        {amplitude::from_pi(1e-15), "pi - 1e-15"}, {4.9406564584124654e-324, "the smallest double"},
+    };
+    for (const auto& c : closed_forms()) {
+        for (const auto& [a, where] : sweep) expect_same(a, c, where);
+    }
+    // The sweep reaches every precision and below_limit.
+    const closed_form harmonic = closed_forms().front();
+    EXPECT_EQ(resolving_precision(1e-8, harmonic), 0u);    // theta0^2/16 = 6e-18
+    EXPECT_EQ(resolving_precision(1e-20, harmonic), 1u);   // 6e-42
+    EXPECT_EQ(resolving_precision(1e-40, harmonic), 2u);   // 6e-82
+    EXPECT_EQ(resolving_precision(1e-100, harmonic), 3u);  // 6e-202
+    EXPECT_EQ(resolving_precision(1e-150, harmonic), 3u);  // 6e-302: resolved, below 1e-300
+    EXPECT_EQ(resolving_precision(1e-200, harmonic), 4u);  // 6e-402: not resolved at all
+    EXPECT_EQ(pendulum::detail::mp_closed_form_error(1e-150, 0, harmonic.f).what, period_error::kind::below_limit);
+    EXPECT_EQ(pendulum::detail::mp_closed_form_error(1e-200, 0, harmonic.f).what, period_error::kind::below_limit);
+    EXPECT_EQ(pendulum::detail::mp_closed_form_error(1e-100, 0, harmonic.f).what, period_error::kind::value);
+}
+
+// Where a precision just resolves (adjacent doubles on either side, found by bisection) and
+// where the foreseen start moves (theta0^2 = 2^(49 - bits)), every closed form the same.
+TEST(PerrCost, ForeseenPrecisionAtTheBoundaries) {
+    int boundaries = 0;
+    for (const auto& c : closed_forms()) {
+        double lo = 1e-300;
+        for (const double hi : {1e-250, 1e-150, 1e-100, 1e-60, 1e-40, 1e-25, 1e-15, 1e-8, 0.5}) {
+            if (resolving_precision(lo, c) != resolving_precision(hi, c)) {
+                const double b = resolving_boundary(c, lo, hi);
+                ++boundaries;
+                for (const double t : {std::nextafter(b, 0.0), b, std::nextafter(b, 1.0)}) {
+                    expect_same(t, c, "boundary " + std::to_string(t));
+                }
+            }
+            lo = hi;
+        }
+        for (const long bits : {128L, 256L, 512L}) {
+            const double t = std::ldexp(1.0, static_cast<int>(49 - bits) / 2) * std::sqrt(0.5);  // 2^((49-bits)/2)
+            for (const double s : {std::nextafter(t, 0.0), t, std::nextafter(t, 1.0), t * 0.99, t * 1.01}) {
+                expect_same(s, c, "foreseen start " + std::to_string(s));
+            }
+        }
+    }
+    EXPECT_GE(boundaries, 40);  // the harmonic alone has four
+}
+
+// The foreseen start: 128 bits from 2^-39.5 up, 1152 bits below 2^-231.5; one more double
+// up moves it back.
+TEST(PerrCost, ForeseenStartAtItsLimits) {
+    using pendulum::detail::foreseen_closed_form_start;
+    const double to_256 = std::ldexp(std::sqrt(0.5), -39);    // theta0^2 = 2^-79
+    const double to_512 = std::ldexp(std::sqrt(0.5), -103);   // 2^-207
+    const double to_1152 = std::ldexp(std::sqrt(0.5), -231);  // 2^-463
+    EXPECT_EQ(foreseen_closed_form_start(1.0), 0u);
+    EXPECT_EQ(foreseen_closed_form_start(amplitude::from_pi(1e-300)), 0u);
+    EXPECT_EQ(foreseen_closed_form_start(std::nextafter(to_256, 1.0)), 0u);
+    EXPECT_EQ(foreseen_closed_form_start(std::nextafter(to_256, 0.0)), 1u);
+    EXPECT_EQ(foreseen_closed_form_start(std::nextafter(to_512, 1.0)), 1u);
+    EXPECT_EQ(foreseen_closed_form_start(std::nextafter(to_512, 0.0)), 2u);
+    EXPECT_EQ(foreseen_closed_form_start(std::nextafter(to_1152, 1.0)), 2u);
+    EXPECT_EQ(foreseen_closed_form_start(std::nextafter(to_1152, 0.0)), 3u);
+    EXPECT_EQ(foreseen_closed_form_start(1e-300), 3u);
+    EXPECT_EQ(foreseen_closed_form_start(4.9406564584124654e-324), 3u);
+}
+
+// A hostile period whose error (2^-60 + 2^(20 - bits)) is far above theta0^2: 128 bits
+// resolve it, and their value (2^-60 + 2^-108) is the one given, not 1152 bits' (2^-60), at
+// an amplitude whose foreseen start is 1152 bits.
+TEST(PerrCost, AnErrorAboveTheForesightIsComputedFrom128Bits) {
+    const mp_period hostile = [](const mp_amplitude& x, int) {
+        const long bits = x.theta.precision();
+        const real t = 1.0 / pendulum::mp::agm(real(1.0, bits), x.kp);
+        return t * (1.0 + (real(std::ldexp(1.0, -60), bits) + real(std::ldexp(1.0, static_cast<int>(20 - bits)), bits)));
+    };
+    const amplitude tiny = 1e-200;
+    ASSERT_EQ(pendulum::detail::foreseen_closed_form_start(tiny), 3u);
+    const period_error e = pendulum::detail::mp_closed_form_error(tiny, 0, hostile);
+    ASSERT_EQ(e.what, period_error::kind::value);
+    EXPECT_EQ(e.value, std::ldexp(1.0, -60) + std::ldexp(1.0, -108));
+    EXPECT_EQ(pendulum::detail::mp_closed_form_error_from(tiny, 0, hostile, 3).value, std::ldexp(1.0, -60));
 }

@@ -34,6 +34,11 @@ using mp::real;
 /// Above this |T_m/T - 1| the doubles' difference is right to 1e-13 relative.
 constexpr double double_enough = 1e-2;
 
+/// Below this extended-precision error the doubles' error is surely below double_enough: the
+/// two differ by a few units of 2^-53, and the margin is 1e-4.
+constexpr long double surely_below_double = 0.99e-2L;
+static_assert(surely_below_double < double_enough, "the doubles are skipped only below their own threshold");
+
 /// Periods in extended precision are within about 12 units of 2^-64 (6.5e-19) of the truth
 /// (both T_m and T), so their difference is right to 1e-13 relative from this error up.
 constexpr long double extended_enough = 1e-5L;
@@ -240,12 +245,15 @@ period_error closed_form_error(const amplitude& a, int n, precision p, double (*
     if (p == precision::correctly_rounded) return detail::mp_closed_form_error(a, n, f);
     // One AGM for both tiers: period_ratio(a) is this, rounded to a double.
     const long double exact = exact_period_extended(a);
-    const double fast = period(a, n) / static_cast<double>(exact) - 1;
-    if (std::fabs(fast) >= double_enough) return {period_error::kind::value, fast};
-    if (extended) {
-        const long double error = extended(a) / exact - 1;
-        if (std::fabs(error) >= extended_enough) return {period_error::kind::value, static_cast<double>(error)};
+    // Extended precision first where the method has it: an error below surely_below_double
+    // there is below double_enough in doubles too (the two differ by about 1e-15), so the
+    // doubles' period is not needed.
+    const long double error = extended ? extended(a) / exact - 1 : std::numeric_limits<long double>::quiet_NaN();
+    if (!(std::fabs(error) < surely_below_double)) {
+        const double fast = period(a, n) / static_cast<double>(exact) - 1;
+        if (std::fabs(fast) >= double_enough) return {period_error::kind::value, fast};
     }
+    if (std::fabs(error) >= extended_enough) return {period_error::kind::value, static_cast<double>(error)};
     return detail::mp_closed_form_error(a, n, f);
 }
 

@@ -24,15 +24,34 @@ struct series_parts {
     unsigned long terms;  ///< the number of terms added
 };
 
-/// J_m(x) by its power series, with `bits`: (x/2)^m/m! * sum_k (-x^2/4)^k m!/(k! (m+k)!).
-series_parts series_of(int m, const real& x, mpfr_prec_t bits) {
-    real half(bits);
-    mpfr_div_2ui(half.get(), x.get(), 1, MPFR_RNDN);
+/// The larger of `largest` and the exponent of v (where v is not zero).
+mpfr_exp_t with_exponent(mpfr_exp_t largest, const real& v) {
+    return v.is_zero() ? largest : std::max(largest, mpfr_get_exp(v.get()));
+}
+
+/// Whether the series ends after term k: the terms fall faster than geometrically once
+/// k(m+k) > x^2/4, so it ends when the next cannot reach the sum's last bit.
+bool series_ends(const real& term, const real& sum, unsigned long k, int m, mpfr_prec_t bits) {
+    if (term.is_zero()) return true;
+    return k * (static_cast<unsigned long>(m) + k) > 8 &&
+           mpfr_get_exp(term.get()) < mpfr_get_exp(sum.get()) - static_cast<mpfr_exp_t>(bits) - 2;
+}
+
+/// (x/2)^m/m! with `bits`.
+real series_lead(int m, const real& half, mpfr_prec_t bits) {
     real lead(1.0, bits);
     for (int j = 1; j <= m; ++j) {
         mpfr_mul(lead.get(), lead.get(), half.get(), MPFR_RNDN);
         mpfr_div_ui(lead.get(), lead.get(), static_cast<unsigned long>(j), MPFR_RNDN);
     }
+    return lead;
+}
+
+/// J_m(x) by its power series, with `bits`: (x/2)^m/m! * sum_k (-x^2/4)^k m!/(k! (m+k)!).
+series_parts series_of(int m, const real& x, mpfr_prec_t bits) {
+    real half(bits);
+    mpfr_div_2ui(half.get(), x.get(), 1, MPFR_RNDN);
+    real lead = series_lead(m, half, bits);
     real q(bits);  // -x^2/4
     mpfr_sqr(q.get(), half.get(), MPFR_RNDN);
     mpfr_neg(q.get(), q.get(), MPFR_RNDN);
@@ -44,14 +63,8 @@ series_parts series_of(int m, const real& x, mpfr_prec_t bits) {
         mpfr_mul(term.get(), term.get(), q.get(), MPFR_RNDN);
         mpfr_div_ui(term.get(), term.get(), k * (static_cast<unsigned long>(m) + k), MPFR_RNDN);
         mpfr_add(sum.get(), sum.get(), term.get(), MPFR_RNDN);
-        if (!mpfr_zero_p(term.get())) largest = std::max(largest, mpfr_get_exp(term.get()));
-        if (!mpfr_zero_p(sum.get())) largest = std::max(largest, mpfr_get_exp(sum.get()));
-        // The terms fall faster than geometrically once k(m+k) > x^2/4: stop when the next
-        // cannot reach the sum's last bit.
-        if (mpfr_zero_p(term.get()) ||
-            (k * (static_cast<unsigned long>(m) + k) > 8 &&
-             mpfr_get_exp(term.get()) < mpfr_get_exp(sum.get()) - static_cast<mpfr_exp_t>(bits) - 2))
-            break;
+        largest = with_exponent(with_exponent(largest, term), sum);
+        if (series_ends(term, sum, k, m, bits)) break;
     }
     return {std::move(lead), std::move(sum), largest, k};
 }

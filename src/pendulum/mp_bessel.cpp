@@ -92,7 +92,7 @@ long bit_width_of(unsigned long n) {
 /// the last term is below 2^(largest - bits - 1)); lead's 2m roundings and the product's
 /// one add (2m + 2) 2^(largest - bits) relative to lead. Four bits spare.
 mpfr_exp_t rounding_bound(int m, const series_parts& p, mpfr_prec_t bits) {
-    const long sum_bits = 2 + 2 * bit_width_of(p.terms);  // 4 K^2 >= 3.03 K^2 + K + 1
+    const long sum_bits = 2 + 2 * bit_width_of(p.terms);  // 4 (K+1)^2 >= 3.03 K^2 + K + 1
     const long lead_bits = bit_width_of(2 * static_cast<unsigned long>(m) + 2);
     return mpfr_get_exp(p.lead.get()) + p.largest - static_cast<mpfr_exp_t>(bits) + std::max(sum_bits, lead_bits) + 4;
 }

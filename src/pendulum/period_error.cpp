@@ -2,7 +2,8 @@
 // Period errors T_m/T - 1 without cancellation. Where the two periods differ in their first
 // two digits, doubles give the error to 1e-13; closer, both periods are computed again with
 // MPFR from the exact amplitude (theta0, or pi - d near pi), with 128 bits and then more, until
-// the difference is far above the rounding of the precision used.
+// the difference is far above the rounding of the precision used (a closed form starts at the
+// first precision an error of at most theta0^2 may need, with the same results).
 #include "pendulum/period_error.hpp"
 
 #include "pendulum/approximants.hpp"

@@ -47,9 +47,10 @@ namespace {
 /// elsewhere (an expression's d, e.g. 2pi/3 for pi/3, is rounded twice as coarsely).
 long double theta_extended(const amplitude& a) { return a.near_pi() ? a.radians_extended() : a.radians(); }
 
-/// J_n(x) in extended precision (the power series) and in MPFR.
+/// J_n(x) in extended precision (the power series) and in MPFR (correctly rounded, as
+/// mpfr_jn gives it, by the power series where that rounds correctly).
 long double j_of(int n, long double x) { return bessel_j_series(n, x); }
-mp::real j_of(int n, const mp::real& x) { return mp::bessel_j(n, x); }
+mp::real j_of(int n, const mp::real& x) { return mp::bessel_j_rounded(n, x); }
 
 /// The second order's parts in units of theta0: lambda = (w/w0)^2 and C_{2k+1}/theta0.
 template <class Real>
@@ -70,8 +71,11 @@ second_order_parts<Real> second_order_of(const Real& theta0) {
     const Real b_ratio = p.eta / (1.0 + p.eta);
     const Real a = theta0 * a_ratio;
     second_order_parts<Real> out{zero_like(theta0), {}};
+    // J_0, J_2, ..., J_8 at a, each once (J_2 enters twice).
+    std::array<Real, 5> even{j_of(0, a), j_of(2, a), j_of(4, a), j_of(6, a), j_of(8, a)};
+    const auto j_even = [&even](int n) -> const Real& { return even[static_cast<std::size_t>(n / 2)]; };
     for (int k = 0; k < 3; ++k) {
-        const Real inner = 2.0 * j_over_x(2 * k + 1, a) * a_ratio + b_ratio * (j_of(2 * k + 4, a) - j_of(std::abs(2 * k - 2), a));
+        const Real inner = 2.0 * j_over_x(2 * k + 1, a) * a_ratio + b_ratio * (j_even(2 * k + 4) - j_even(std::abs(2 * k - 2)));
         out.C.push_back(k % 2 == 0 ? inner : -inner);
         out.lambda = out.lambda + out.C.back() / static_cast<double>((2 * k + 1) * (2 * k + 1));
     }

@@ -9,6 +9,8 @@
 #include "pendulum/formulas_mp.hpp"
 #include "pendulum/period_error.hpp"
 
+#include <cstddef>
+
 namespace pendulum {
 
 /// A period in MPFR at the exact amplitude (with its precision), with the method's N.
@@ -22,6 +24,20 @@ using extended_period = long double (*)(const amplitude& a);
 /// MPFR throughout for precision::correctly_rounded (period_error.cpp).
 period_error closed_form_error(const amplitude& a, int n, precision p, double (*period)(const amplitude&, int),
                                mp_period f, extended_period extended = nullptr);
+
+namespace detail {
+
+/// The MPFR tier of closed_form_error: the error with 128, 256, 512 and 1152 bits in turn,
+/// from the `first` of them, the first that resolves it (below_limit where none does).
+period_error mp_closed_form_error_from(const amplitude& a, int n, mp_period f, std::size_t first);
+/// The first of those precisions that may resolve an error at `a`: the ones before it surely
+/// cannot (the error is at most theta0^2 there), 0 where nothing is foreseen.
+std::size_t foreseen_closed_form_start(const amplitude& a);
+/// The MPFR tier from the foreseen precision; the same as from 128 bits, since a value whose
+/// skipped precisions might have resolved it is computed again from 128 bits.
+period_error mp_closed_form_error(const amplitude& a, int n, mp_period f);
+
+}  // namespace detail
 
 /// T/T0 of formula F in doubles, as a method table entry.
 template <class F>

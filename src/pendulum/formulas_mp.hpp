@@ -10,6 +10,7 @@
 #include "pendulum/mp_real.hpp"
 
 #include <array>
+#include <utility>
 
 namespace pendulum::mp {
 
@@ -26,7 +27,7 @@ inline real log1p(const real& x) { return apply(mpfr_log1p, x); }
 /// ln k' = log1p(-d) from d = 1 - k', exact itself.
 inline real log_kp(const real&, const real& d) { return log1p(-d); }
 /// J_n(x)/x, 0 <= n, 0 < |x| <= 4.
-inline real j_over_x(int n, const real& x) { return bessel_j_upto(n, x)[static_cast<std::size_t>(n)] / x; }
+inline real j_over_x(int n, const real& x) { return bessel_j_nth(n, x) / x; }
 
 /// a_n of the Taylor series of T/T0 in theta0^2 from its exact rational: the error of the
 /// series is far below a double's rounding of its coefficients at small amplitudes.
@@ -49,14 +50,19 @@ using mp_amplitude = formulas::amplitude_view<real>;
 inline mp_amplitude exact_amplitude(const amplitude& a, mpfr_prec_t bits) {
     // From d where it is the nearer of the two to the exact amplitude; a double theta0 is
     // the exact amplitude itself (its d is rounded).
+    // sin and cos of one angle by one call (each correctly rounded, as by two).
+    real sine(bits);
+    real cosine(bits);
     if (a.near_pi() && !a.exact_radians()) {
         const real d(a.from_pi(), bits);
-        const real kp = sin(d / 2.0);
-        return {pi(bits) - d, cos(d / 2.0), kp, 1.0 - kp};
+        mpfr_sin_cos(sine.get(), cosine.get(), (d / 2.0).get(), MPFR_RNDN);
+        real d_kp = 1.0 - sine;
+        return {pi(bits) - d, std::move(cosine), std::move(sine), std::move(d_kp)};
     }
     const real theta(a.radians(), bits);
     const real s = sin(theta / 4.0);
-    return {theta, sin(theta / 2.0), cos(theta / 2.0), 2.0 * s * s};
+    mpfr_sin_cos(sine.get(), cosine.get(), (theta / 2.0).get(), MPFR_RNDN);
+    return {theta, std::move(sine), std::move(cosine), 2.0 * s * s};
 }
 
 }  // namespace pendulum::mp

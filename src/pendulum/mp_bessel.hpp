@@ -15,4 +15,13 @@ namespace pendulum::mp {
 /// about as much as two of MPFR's mpfr_jn, whatever n.
 std::vector<real> bessel_j_upto(int n, const real& x);
 
+/// J_n(x), n >= 0, for 0 < |x| <= 4: element n of bessel_j_upto(n, x), the same number
+/// (its power series with guard bits, rounded once), without the others.
+real bessel_j_nth(int n, const real& x);
+
+/// J_n(x) correctly rounded to x's precision, the number MPFR's mpfr_jn gives: its power
+/// series with guard bits where their rounding bound shows the result rounds correctly
+/// (n >= 0, 0 < |x| <= 4), mpfr_jn otherwise (close to a zero of J_n, or a hard case).
+real bessel_j_rounded(int n, const real& x);
+
 }  // namespace pendulum::mp

@@ -2,7 +2,8 @@
 // Period errors T_m/T - 1 without cancellation. Where the two periods differ in their first
 // two digits, doubles give the error to 1e-13; closer, both periods are computed again with
 // MPFR from the exact amplitude (theta0, or pi - d near pi), with 128 bits and then more, until
-// the difference is far above the rounding of the precision used.
+// the difference is far above the rounding of the precision used (a closed form starts at the
+// first precision an error of at most theta0^2 may need, with the same results).
 #include "pendulum/period_error.hpp"
 
 #include "pendulum/approximants.hpp"
@@ -33,6 +34,11 @@ using mp::real;
 
 /// Above this |T_m/T - 1| the doubles' difference is right to 1e-13 relative.
 constexpr double double_enough = 1e-2;
+
+/// Below this extended-precision error the doubles' error is surely below double_enough: the
+/// two differ by a few units of 2^-53, and the margin is 1e-4.
+constexpr long double surely_below_double = 0.99e-2L;
+static_assert(surely_below_double < double_enough, "the doubles are skipped only below their own threshold");
 
 /// Periods in extended precision are within about 12 units of 2^-64 (6.5e-19) of the truth
 /// (both T_m and T), so their difference is right to 1e-13 relative from this error up.
@@ -67,15 +73,48 @@ period_error known(const real& error) {
     return {period_error::kind::value, error.to_double()};
 }
 
-/// The error of a closed-form period in MPFR, correctly rounded.
-period_error mp_closed_form_error(const amplitude& a, int n, mp_period f) {
-    for (const mpfr_prec_t bits : precisions) {
+/// Whether an error of at most `bound` is surely not resolved with `bits`: it would have to
+/// reach 2^(57 - bits), and below 2^(49 - bits) it cannot, with the run's own rounding
+/// (about 2^-bits times a few) far below those 8 bits.
+bool surely_unresolved(double bound, mpfr_prec_t bits) {
+    return bound < std::ldexp(1.0, static_cast<int>(margin_bits - 7 - bits));
+}
+
+}  // namespace
+
+period_error detail::mp_closed_form_error_from(const amplitude& a, int n, mp_period f, std::size_t first) {
+    for (std::size_t i = first; i < precisions.size(); ++i) {
+        const mpfr_prec_t bits = precisions[i];
         const mp_amplitude x = exact_amplitude(a, bits);
         const real error = f(x, n) / exact_period(x) - 1.0;
         if (resolved(error, bits)) return known(error);
     }
     return {period_error::kind::below_limit, 0};
 }
+
+std::size_t detail::foreseen_closed_form_start(const amplitude& a) {
+    // Every closed form's error that reaches MPFR is at most theta0^2 at small amplitudes
+    // (the harmonic's theta0^2/16 the largest; the log asymptote's stays above 1e-2, in
+    // doubles).
+    const double theta0 = a.radians();
+    const double bound = theta0 * theta0;
+    std::size_t i = 0;
+    while (i + 1 < precisions.size() && surely_unresolved(bound, precisions[i])) ++i;
+    return i;
+}
+
+period_error detail::mp_closed_form_error(const amplitude& a, int n, mp_period f) {
+    const std::size_t first = foreseen_closed_form_start(a);
+    const period_error e = mp_closed_form_error_from(a, n, f, first);
+    // The runs skipped would not have resolved this error (else they are run, as before).
+    if (first == 0 || e.what != period_error::kind::value ||
+        surely_unresolved(std::fabs(e.value), precisions[first - 1])) {
+        return e;
+    }
+    return mp_closed_form_error_from(a, n, f, 0);
+}
+
+namespace {
 
 real lowest_mp(const mp_amplitude& x, int) { return 1.0 / formulas::lowest_frequency(x.theta); }
 
@@ -204,16 +243,19 @@ int first_level_within(const amplitude& a, double tolerance, int up_to) {
 /// where the method has it and it suffices, MPFR otherwise.
 period_error closed_form_error(const amplitude& a, int n, precision p, double (*period)(const amplitude&, int),
                                mp_period f, extended_period extended) {
-    if (p == precision::correctly_rounded) return mp_closed_form_error(a, n, f);
+    if (p == precision::correctly_rounded) return detail::mp_closed_form_error(a, n, f);
     // One AGM for both tiers: period_ratio(a) is this, rounded to a double.
     const long double exact = exact_period_extended(a);
-    const double fast = period(a, n) / static_cast<double>(exact) - 1;
-    if (std::fabs(fast) >= double_enough) return {period_error::kind::value, fast};
-    if (extended) {
-        const long double error = extended(a) / exact - 1;
-        if (std::fabs(error) >= extended_enough) return {period_error::kind::value, static_cast<double>(error)};
+    // Extended precision first where the method has it: an error below surely_below_double
+    // there is below double_enough in doubles too (the two differ by about 1e-15), so the
+    // doubles' period is not needed.
+    const long double error = extended ? extended(a) / exact - 1 : std::numeric_limits<long double>::quiet_NaN();
+    if (!(std::fabs(error) < surely_below_double)) {
+        const double fast = period(a, n) / static_cast<double>(exact) - 1;
+        if (std::fabs(fast) >= double_enough) return {period_error::kind::value, fast};
     }
-    return mp_closed_form_error(a, n, f);
+    if (std::fabs(error) >= extended_enough) return {period_error::kind::value, static_cast<double>(error)};
+    return detail::mp_closed_form_error(a, n, f);
 }
 
 period_error exact_period_error(const amplitude&, int, precision) { return {period_error::kind::value, 0}; }

@@ -15,6 +15,7 @@
 #include <array>
 #include <limits>
 #include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <optional>
 #include <numbers>
@@ -364,6 +365,109 @@ std::pair<double, double> moduli(const real& theta0, const real& d) {
     return closer_to_pi ? std::pair{c, s.to_double()} : std::pair{s.to_double(), c};
 }
 
+/// A plain decimal's text as M / 10^q, with M below 2^64 and 0 <= q <= 19 (at most 19
+/// digits); nothing for a longer one or another scale.
+struct scaled_decimal {
+    std::uint64_t m = 0;  ///< the digits as an integer
+    int q = 0;            ///< the power of ten below them
+};
+
+/// The text of a plain number (plain_value read all of it) as M / 10^q, if it fits.
+std::optional<scaled_decimal> scaled_of(std::string_view t) {
+    scaled_decimal s;
+    int after_point = 0;
+    bool point = false;
+    std::size_t i = 0;
+    for (; i < t.size() && t[i] != 'e' && t[i] != 'E'; ++i) {
+        if (t[i] == '.') {
+            point = true;
+            continue;
+        }
+        const auto digit = static_cast<std::uint64_t>(t[i] - '0');
+        if (s.m > (std::numeric_limits<std::uint64_t>::max() - digit) / 10) return std::nullopt;
+        s.m = s.m * 10 + digit;
+        after_point += point ? 1 : 0;
+    }
+    long exponent = 0;
+    if (i < t.size()) {
+        const char* first = t.data() + i + 1 + (t[i + 1] == '+' ? 1 : 0);
+        const auto [end, ec] = std::from_chars(first, t.data() + t.size(), exponent);
+        if (ec != std::errc() || end != t.data() + t.size() || exponent < -19 || exponent > 19) return std::nullopt;
+    }
+    const long q = after_point - exponent;
+    if (q < 0 || q > 19) return std::nullopt;
+    s.q = static_cast<int>(q);
+    return s;
+}
+
+/// A 128-bit integer (a GCC and Clang extension): M 2^51 and T 10^q are exact in it.
+__extension__ using int128 = __int128;
+
+/// True where long double arithmetic carries at least 64 bits (not where it is a double, nor
+/// under an emulator that rounds it so): the bounds below count on it.
+bool extended_carries_64_bits() {
+    static const bool carries = [] {
+        volatile long double one = 1;
+        volatile long double tiny = 0x1p-63L;
+        return one + tiny != one;
+    }();
+    return carries;
+}
+
+/// The double y rounds to where every number within err of it rounds to that same double;
+/// nothing where the interval straddles a rounding boundary.
+std::optional<double> rounded_within(long double y, long double err) {
+    const auto lo = static_cast<double>(y - err);
+    const auto hi = static_cast<double>(y + err);
+    if (lo != hi) return std::nullopt;
+    return lo;
+}
+
+/// sin x and cos x for 0 <= x <= 0.071, by their Taylor series to x^11 and x^12 in long
+/// double: the terms left out are below 2^-74 of each, and the roundings a few in 2^-64.
+std::pair<long double, long double> small_sin_cos(long double x) {
+    const long double y = x * x;
+    constexpr long double f3 = 6.0L, f5 = 120.0L, f7 = 5040.0L, f9 = 362880.0L, f11 = 39916800.0L;
+    constexpr long double f2 = 2.0L, f4 = 24.0L, f6 = 720.0L, f8 = 40320.0L, f10 = 3628800.0L, f12 = 479001600.0L;
+    const long double s = x * (1 - y * (1 / f3 - y * (1 / f5 - y * (1 / f7 - y * (1 / f9 - y / f11)))));
+    const long double c = 1 - y * (1 / f2 - y * (1 / f4 - y * (1 / f6 - y * (1 / f8 - y * (1 / f10 - y / f12)))));
+    return {s, c};
+}
+
+/// The amplitude of a plain number of at most 19 digits, v its double in [3, pi), without
+/// MPFR: d = pi - text (pi_hi - v exact by Sterbenz, then pi's next bits and the text's own
+/// excess over v, exact as an integer), k' = sin(d/2) and k = cos(d/2), each bounded in long
+/// double and rounded once, as MPFR rounds them; nothing where a bound straddles a rounding
+/// boundary or the text is not such a number (the MPFR path decides those).
+std::optional<amplitude> plain_near_pi(std::string_view text, double v) {
+    constexpr double pi_hi = std::numbers::pi;
+    constexpr long double pi_lo = 1.2246467991473531772260659281409368386e-16L;  // pi - pi_hi to 64 bits
+    const auto s = scaled_of(text);
+    if (!s || !(v >= 3.0 && v <= pi_hi) || !extended_carries_64_bits()) return std::nullopt;
+    // text - v = (M 2^51 - T 10^q) / (10^q 2^51), where v = T 2^-51; at most half an ulp of v.
+    int128 ten_q = 1;
+    for (int i = 0; i < s->q; ++i) ten_q *= 10;
+    const auto t = static_cast<int128>(std::ldexp(v, 51));
+    const int128 excess = (static_cast<int128>(s->m) << 51) - t * ten_q;
+    if (excess == 0) return amplitude(v);  // the text is the double itself, as equals() finds
+    if (excess > (int128{1} << 62) || excess < -(int128{1} << 62)) return std::nullopt;
+    const long double r = std::ldexp(static_cast<long double>(static_cast<std::int64_t>(excess)) /
+                                         static_cast<long double>(static_cast<std::uint64_t>(ten_q)), -51);
+    const long double dh = pi_hi - v;  // exact
+    const long double d = (dh + pi_lo) - r;
+    // Four roundings of 2^-64 of at most |dh| + pi_lo + |r| each: 2^-61 of that bounds them twice over.
+    const long double err = std::ldexp(std::fabs(dh) + pi_lo + std::fabs(r), -61);
+    if (!(d > 2 * err)) return std::nullopt;
+    const long double rel = err / (d - err);  // d/2's relative error
+    const auto [sine, cosine] = small_sin_cos(d / 2);
+    // sin x moves by x cot x <= 1 of x's relative error, cos x by x tan x <= 0.01; the series 2^-60.
+    const auto dd = rounded_within(d, err);
+    const auto kp = rounded_within(sine, sine * (rel + 0x1p-60L));
+    const auto k = rounded_within(cosine, cosine * (rel / 100 + 0x1p-60L));
+    if (!dd || !kp || !k) return std::nullopt;
+    return amplitude::from_parts(v, *dd, *k, *kp);
+}
+
 }  // namespace
 
 double parse_angle(std::string_view text) { return evaluate(text, true); }
@@ -371,9 +475,14 @@ double parse_angle(std::string_view text) { return evaluate(text, true); }
 amplitude parse_amplitude(std::string_view text, std::string_view name) {
     // A plain number below 3 (d > 0.14): its double is all there is to know, and its distance
     // from pi and k' follow from it to rounding (a million amplitudes read without MPFR).
-    if (const auto v = plain_value(text); v && *v < 3.0 && *v > 0) {
+    const auto v = plain_value(text);
+    if (v && *v < 3.0 && *v > 0) {
         check_amplitude(*v, name);
         return amplitude(*v);
+    }
+    // A plain number from 3 to pi: its exact digits, without MPFR where the bounds decide.
+    if (v) {
+        if (auto a = plain_near_pi(text, *v)) return *a;
     }
     // 128 bits (checked against 256) for plain numbers and most expressions, the working
     // precision where those disagree: where they cancel, as pi - 1e-300 does.

@@ -403,67 +403,99 @@ std::optional<scaled_decimal> scaled_of(std::string_view t) {
 /// A 128-bit integer (a GCC and Clang extension): M 2^51 and T 10^q are exact in it.
 __extension__ using int128 = __int128;
 
-/// True where long double arithmetic carries at least 64 bits (not where it is a double, nor
-/// under an emulator that rounds it so): the bounds below count on it.
-bool extended_carries_64_bits() {
-    static const bool carries = [] {
-        volatile long double one = 1;
-        volatile long double tiny = 0x1p-63L;
-        return one + tiny != one;
-    }();
-    return carries;
+/// A number as the unevaluated sum hi + lo of two doubles, |lo| at most half an ulp of hi.
+struct two_doubles {
+    double hi = 0;
+    double lo = 0;
+};
+
+/// a + b exactly (Knuth's two-sum).
+two_doubles two_sum(double a, double b) {
+    const double s = a + b;
+    const double v = s - a;
+    return {s, (a - (s - v)) + (b - v)};
 }
 
-/// The double y rounds to where every number within err of it rounds to that same double;
-/// nothing where the interval straddles a rounding boundary.
-std::optional<double> rounded_within(long double y, long double err) {
-    const auto lo = static_cast<double>(y - err);
-    const auto hi = static_cast<double>(y + err);
-    if (lo != hi) return std::nullopt;
-    return lo;
+/// a + b exactly where |a| >= |b| (or a is 0).
+two_doubles fast_two_sum(double a, double b) {
+    const double s = a + b;
+    return {s, b - (s - a)};
 }
 
-/// sin x and cos x for 0 <= x <= 0.071, by their Taylor series to x^11 and x^12 in long
-/// double: the terms left out are below 2^-74 of each, and the roundings a few in 2^-64.
-std::pair<long double, long double> small_sin_cos(long double x) {
-    const long double y = x * x;
-    constexpr long double f3 = 6.0L, f5 = 120.0L, f7 = 5040.0L, f9 = 362880.0L, f11 = 39916800.0L;
-    constexpr long double f2 = 2.0L, f4 = 24.0L, f6 = 720.0L, f8 = 40320.0L, f10 = 3628800.0L, f12 = 479001600.0L;
-    const long double s = x * (1 - y * (1 / f3 - y * (1 / f5 - y * (1 / f7 - y * (1 / f9 - y / f11)))));
-    const long double c = 1 - y * (1 / f2 - y * (1 / f4 - y * (1 / f6 - y * (1 / f8 - y * (1 / f10 - y / f12)))));
-    return {s, c};
+/// a b exactly (the rounding error by a fused multiply-add).
+two_doubles two_product(double a, double b) {
+    const double p = a * b;
+    return {p, std::fma(a, b, -p)};
+}
+
+/// The double x rounds to where every number within err of it rounds to that same double
+/// (x.hi, since |x.lo| is at most half an ulp); nothing where the interval reaches a midpoint.
+std::optional<double> rounded_within(two_doubles x, double err) {
+    // The two half-gaps to the neighbours of hi (unequal at a power of 2), with a margin for
+    // the roundings of lo +- err themselves.
+    const double below = 0.5 * (x.hi - std::nextafter(x.hi, 0.0));
+    const double above = 0.5 * (std::nextafter(x.hi, 2 * x.hi) - x.hi);
+    const double margin = err * 1.001 + std::fabs(x.lo) * 0x1p-50;
+    if (x.lo - margin <= -below || x.lo + margin >= above) return std::nullopt;
+    return x.hi;
+}
+
+/// k' = sin x and k = cos x for 0 < x <= 0.071 given as xh + xl, by their Taylor series to
+/// x^11 and x^12 (the rest below 2^-74) in doubles about the leading 1 and x, which two-sums
+/// keep exact; each within `err` of the pair returned (2^-59 of x and of 1 for the series and
+/// its roundings, and what x's relative error `rel` moves them by: x and x^2 of it).
+std::pair<two_doubles, two_doubles> small_sin_cos(two_doubles x, double rel, double& sin_err, double& cos_err) {
+    const double y = x.hi * x.hi;
+    const double p = y * (1.0 / 6 - y * (1.0 / 120 - y * (1.0 / 5040 - y * (1.0 / 362880 - y / 39916800))));
+    const double q =
+        y * (0.5 - y * (1.0 / 24 - y * (1.0 / 720 - y * (1.0 / 40320 - y * (1.0 / 3628800 - y / 479001600)))));
+    const two_doubles t = two_product(x.hi, p);  // x - t is sin x
+    const two_doubles s = two_sum(x.hi, -t.hi);
+    const two_doubles c = two_sum(1.0, -q);
+    sin_err = x.hi * (0x1p-59 + 2 * rel);
+    cos_err = 0x1p-59 + 2 * y * rel;
+    return {fast_two_sum(s.hi, s.lo - t.lo + x.lo * (1 - 0.5 * y)), fast_two_sum(c.hi, c.lo - x.lo * x.hi)};
 }
 
 /// The amplitude of a plain number of at most 19 digits, v its double in [3, pi), without
-/// MPFR: d = pi - text (pi_hi - v exact by Sterbenz, then pi's next bits and the text's own
-/// excess over v, exact as an integer), k' = sin(d/2) and k = cos(d/2), each bounded in long
-/// double and rounded once, as MPFR rounds them; nothing where a bound straddles a rounding
-/// boundary or the text is not such a number (the MPFR path decides those).
+/// MPFR: d = pi - text as two doubles (pi_hi - v exact by Sterbenz, pi's next bits, and the
+/// text's excess over v, exact as an integer), k' = sin(d/2) and k = cos(d/2), each bounded
+/// and rounded once, as MPFR rounds them; nothing where a bound reaches a midpoint between
+/// doubles or the text is not such a number (the MPFR path decides those).
 std::optional<amplitude> plain_near_pi(std::string_view text, double v) {
     constexpr double pi_hi = std::numbers::pi;
-    constexpr long double pi_lo = 1.2246467991473531772260659281409368386e-16L;  // pi - pi_hi to 64 bits
+    constexpr double pi_lo = 1.2246467991473532e-16;     // pi - pi_hi, rounded
+    constexpr double pi_lo2 = -2.9947698097183397e-33;   // pi - pi_hi - pi_lo, rounded
     const auto s = scaled_of(text);
-    if (!s || !(v >= 3.0 && v <= pi_hi) || !extended_carries_64_bits()) return std::nullopt;
-    // text - v = (M 2^51 - T 10^q) / (10^q 2^51), where v = T 2^-51; at most half an ulp of v.
+    if (!s || !(v >= 3.0 && v <= pi_hi)) return std::nullopt;
+    // text - v = (M 2^51 - T 10^q) / (10^q 2^51), where v = T 2^-51: at most half an ulp of v.
     int128 ten_q = 1;
     for (int i = 0; i < s->q; ++i) ten_q *= 10;
     const auto t = static_cast<int128>(std::ldexp(v, 51));
     const int128 excess = (static_cast<int128>(s->m) << 51) - t * ten_q;
     if (excess == 0) return amplitude(v);  // the text is the double itself, as equals() finds
     if (excess > (int128{1} << 62) || excess < -(int128{1} << 62)) return std::nullopt;
-    const long double r = std::ldexp(static_cast<long double>(static_cast<std::int64_t>(excess)) /
-                                         static_cast<long double>(static_cast<std::uint64_t>(ten_q)), -51);
-    const long double dh = pi_hi - v;  // exact
-    const long double d = (dh + pi_lo) - r;
-    // Four roundings of 2^-64 of at most |dh| + pi_lo + |r| each: 2^-61 of that bounds them twice over.
-    const long double err = std::ldexp(std::fabs(dh) + pi_lo + std::fabs(r), -61);
-    if (!(d > 2 * err)) return std::nullopt;
-    const long double rel = err / (d - err);  // d/2's relative error
-    const auto [sine, cosine] = small_sin_cos(d / 2);
-    // sin x moves by x cot x <= 1 of x's relative error, cos x by x tan x <= 0.01; the series 2^-60.
-    const auto dd = rounded_within(d, err);
-    const auto kp = rounded_within(sine, sine * (rel + 0x1p-60L));
-    const auto k = rounded_within(cosine, cosine * (rel / 100 + 0x1p-60L));
+    // r = excess / 10^q / 2^51 to 2^-104: excess is e_hi + e_lo exactly, 10^q a double.
+    const auto e = static_cast<std::int64_t>(excess);
+    const auto e_hi = static_cast<double>(e);
+    const auto e_lo = static_cast<double>(e - static_cast<std::int64_t>(e_hi));
+    const auto ten = static_cast<double>(ten_q);
+    const double r_hi = e_hi / ten;
+    const double r_lo = (std::fma(-r_hi, ten, e_hi) + e_lo) / ten;
+    const two_doubles r = fast_two_sum(std::ldexp(r_hi, -51), std::ldexp(r_lo, -51));
+    // d = (pi_hi - v) + pi_lo + pi_lo2 - r: the roundings of the low parts, 2^-102 of the sizes.
+    const double dh = pi_hi - v;  // exact
+    const two_doubles a = two_sum(dh, pi_lo);
+    const two_doubles b = two_sum(a.hi, -r.hi);
+    const two_doubles d = fast_two_sum(b.hi, (a.lo + b.lo) + (pi_lo2 - r.lo));
+    const double d_err = 0x1p-98 * (std::fabs(dh) + pi_lo + std::fabs(r.hi));
+    if (!(d.hi > 2 * d_err)) return std::nullopt;
+    double sin_err = 0;
+    double cos_err = 0;
+    const auto [sine, cosine] = small_sin_cos({0.5 * d.hi, 0.5 * d.lo}, d_err / (d.hi - d_err), sin_err, cos_err);
+    const auto dd = rounded_within(d, d_err);
+    const auto kp = rounded_within(sine, sin_err);
+    const auto k = rounded_within(cosine, cos_err);
     if (!dd || !kp || !k) return std::nullopt;
     return amplitude::from_parts(v, *dd, *k, *kp);
 }

@@ -202,3 +202,62 @@ TEST(EvalCost, PlainNumbersAbovePiAreRefused) {
         EXPECT_EQ(r.out, "") << text;
     }
 }
+
+// The list reader takes a megabyte at a time: a line of 65536 bytes is read, one of 65537 is
+// refused naming its line, first or last, with or without its newline.
+TEST(EvalCost, ListLinesOfTheLongestLengthAndOneMore) {
+    const auto dir = temp_dir("eval-lines");
+    const std::string longest = "1" + std::string(65535, ' ');
+    std::ofstream(dir / "longest.txt", std::ios::binary) << "0.5\n" << longest << "\n2";
+    std::ofstream(dir / "longer.txt", std::ios::binary) << longest << " \n0.5\n";
+    std::ofstream(dir / "longer-last.txt", std::ios::binary) << "0.5\n0.25\n" << longest << " ";
+    const auto ok = run_cli("eval --theta0 @longest.txt --columns theta0", dir);
+    EXPECT_EQ(ok.status, 0) << ok.err;
+    EXPECT_EQ(ok.out, "theta0\n0.5\n1\n2\n");
+    const auto first = run_cli("eval --theta0 @longer.txt --columns theta0", dir);
+    EXPECT_EQ(first.status, 2);
+    EXPECT_NE(first.err.find("--theta0 @longer.txt: line 1 is longer than 65536 bytes"), std::string::npos) << first.err;
+    EXPECT_EQ(first.out, "");
+    const auto last = run_cli("eval --theta0 - --columns theta0 <longer-last.txt", dir);
+    EXPECT_EQ(last.status, 2);
+    EXPECT_NE(last.err.find("--theta0 -: line 3 is longer than 65536 bytes"), std::string::npos) << last.err;
+    EXPECT_EQ(last.out, "");
+    std::filesystem::remove_all(dir);
+}
+
+// Standard input that never ends a line (/dev/zero) is refused after the longest line, and
+// a NUL byte inside an item is named as a control character.
+TEST(EvalCost, HostileListBytesAreRefused) {
+    const auto zero = run_command("'" + std::string(PENDULUM_EXE) + "' eval --theta0 - </dev/zero");
+    EXPECT_EQ(zero.status, 2);
+    EXPECT_NE(zero.err.find("line 1 is longer than 65536 bytes"), std::string::npos) << zero.err;
+    const auto dir = temp_dir("eval-nul");
+    std::ofstream(dir / "nul.txt", std::ios::binary) << std::string("0.5\n1\0002\n", 8);
+    const auto nul = run_cli("eval --theta0 @nul.txt", dir);
+    EXPECT_EQ(nul.status, 2);
+    EXPECT_NE(nul.err.find("'1\\x002' has the control character U+0000"), std::string::npos) << nul.err;
+    EXPECT_EQ(nul.out, "");
+    std::filesystem::remove_all(dir);
+}
+
+// Lines that straddle the reader's megabyte blocks at every offset of a 61 kB comment: every
+// item is read once, in order, CRLF and a last line without its newline included.
+TEST(EvalCost, LinesAcrossTheReadersBlocksAreReadWhole) {
+    const auto dir = temp_dir("eval-blocks");
+    std::string text;
+    std::string expected = "theta0\n";
+    for (int i = 1; i <= 60; ++i) {
+        const std::string item = shortest(i / 32.0);
+        text += item + (i % 2 ? ", " : " ,") + shortest(i / 64.0) + " #" + std::string(61000 + 977 * i % 3000, 'x');
+        text += i % 3 == 0 ? "\r\n" : "\n";
+        expected += item + "\n" + shortest(i / 64.0) + "\n";
+    }
+    text += "3.0625";  // no newline
+    expected += "3.0625\n";
+    ASSERT_GT(text.size(), std::size_t{3} << 20);
+    std::ofstream(dir / "blocks.txt", std::ios::binary) << text;
+    const auto r = run_cli("eval --theta0 @blocks.txt --columns theta0", dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, expected);
+    std::filesystem::remove_all(dir);
+}

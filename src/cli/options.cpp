@@ -142,8 +142,9 @@ void check_list_item(const std::string& option, const std::string& text, std::si
                           std::to_string(max_list_items));
     }
     // Printable ASCII of at most max_label_bytes, as numbers are, has nothing text_problem refuses.
-    const bool printable = std::all_of(item.begin(), item.end(), [](char c) { return c >= ' ' && c <= '~'; });
-    if (printable && item.size() <= plot::max_label_bytes) return;
+    bool printable = item.size() <= plot::max_label_bytes;
+    for (const char c : item) printable &= static_cast<unsigned char>(c - ' ') <= '~' - ' ';
+    if (printable) return;
     if (const std::string why = plot::text_problem(item); !why.empty()) {
         const std::string shown = shown_text(item.size() <= 80 ? std::string(item)
                                                                : std::string(item.substr(0, 40)) + "..." +

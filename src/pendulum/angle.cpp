@@ -157,15 +157,11 @@ private:
 constexpr mpfr_prec_t working_bits = 1280;
 
 /// A plain decimal number ("2.5", "1e-3", no sign, no spaces), as from_chars reads it: that
-/// rounds correctly already, and a million of them are read without MPFR.
+/// rounds correctly already, and a million of them are read without MPFR. A digit or point
+/// first (no sign, inf or nan) and the whole text read leave digits, one point and an
+/// exponent only: from_chars' general format takes no hexadecimal.
 std::optional<double> plain_value(std::string_view t) {
     if (t.empty() || !lexer::number_start(t[0])) return std::nullopt;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        const char c = t[i];
-        if (lexer::number_start(c) || c == 'e' || c == 'E') continue;
-        if ((c == '+' || c == '-') && (t[i - 1] == 'e' || t[i - 1] == 'E')) continue;
-        return std::nullopt;
-    }
     double v = 0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
     if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v)) return std::nullopt;

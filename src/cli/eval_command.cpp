@@ -286,11 +286,11 @@ amplitude_table amplitude_columns(const eval_options& o, const std::vector<int>&
     return t;
 }
 
-/// One amplitude's fields; the iteration's levels without a period go to `broken`.
-std::vector<field> amplitude_row(const amplitude& value, const amplitude_table& t, const std::vector<int>& orders,
-                                 long double small_period_s, std::vector<int>& broken) {
+/// One amplitude's fields, into `fields`; the iteration's levels without a period go to `broken`.
+void amplitude_row(const amplitude& value, const amplitude_table& t, const std::vector<int>& orders,
+                   long double small_period_s, std::vector<int>& broken, std::vector<field>& fields) {
     const eval_point point(value, t.needs);
-    std::vector<field> fields;
+    fields.clear();
     for (const auto* c : t.fixed) fields.emplace_back(c->value(point));
     for (double x : method_periods(value, orders, t.methods, highest_level(orders, t.methods), broken)) {
         fields.emplace_back(x);
@@ -306,25 +306,61 @@ std::vector<field> amplitude_row(const amplitude& value, const amplitude_table& 
         }
     }
     if (t.seconds) fields.emplace_back(period_seconds(*point.exact_period, small_period_s));
-    return fields;
 }
 
-/// Rows computed at a time, on every worker, before they are written in order: a block's
-/// fields take about 0.5 MB, and a warning still follows its row.
+/// Rows computed and formatted at a time, on every worker, before they are written in order:
+/// a block's text takes about 0.2 MB, and a warning still follows its row.
 constexpr std::size_t rows_per_block = 4096;
 /// Rows one worker takes at a time from a block.
 constexpr std::size_t rows_per_task = 128;
 
-/// The rows of amplitudes [first, first + n), computed on every worker; each row's levels
-/// without a period go to its own `broken`.
+/// A block's rows as the table writes them: each task's rows in a text of its own, where each
+/// row ends in it, and each row's levels of the iteration without a period.
+struct block_rows {
+    std::vector<std::string> texts;
+    std::vector<std::size_t> ends;
+    std::vector<std::vector<int>> broken;
+};
+
+/// The rows of amplitudes [first, first + n), computed and formatted on every worker.
 void amplitude_block(const std::vector<amplitude>& amplitudes, std::size_t first, std::size_t n,
                      const amplitude_table& t, const std::vector<int>& orders, long double small_period_s,
-                     std::vector<std::vector<field>>& rows, std::vector<std::vector<int>>& broken) {
-    rows.assign(n, {});
-    broken.assign(n, {});
-    plot::parallel_for_each(n, rows_per_task, [&](std::size_t i) {
-        rows[i] = amplitude_row(amplitudes[first + i], t, orders, small_period_s, broken[i]);
+                     const table_writer& writer, block_rows& rows) {
+    const std::size_t tasks = (n + rows_per_task - 1) / rows_per_task;
+    rows.texts.resize(tasks);
+    rows.ends.assign(n, 0);
+    rows.broken.assign(n, {});
+    plot::parallel_for(tasks, [&](std::size_t task) {
+        std::string& text = rows.texts[task];
+        text.clear();
+        std::vector<field> fields;
+        for (std::size_t i = task * rows_per_task; i < std::min(n, (task + 1) * rows_per_task); ++i) {
+            amplitude_row(amplitudes[first + i], t, orders, small_period_s, rows.broken[i], fields);
+            writer.format(text, fields, first + i == 0);
+            rows.ends[i] = text.size();
+        }
     });
+}
+
+/// Writes a block's rows in order, each warning after its row.
+void write_block(table_writer& writer, const block_rows& rows, const std::vector<amplitude>& amplitudes,
+                 std::size_t first) {
+    for (std::size_t task = 0; task < rows.texts.size(); ++task) {
+        const std::string_view text = rows.texts[task];
+        const std::size_t begin = task * rows_per_task;
+        const std::size_t end = std::min(rows.ends.size(), begin + rows_per_task);
+        std::size_t written = 0;  // bytes of the text
+        std::size_t row = begin;  // the first row not yet written
+        for (std::size_t i = begin; i < end; ++i) {
+            if (rows.broken[i].empty()) continue;
+            writer.write_formatted(text.substr(written, rows.ends[i] - written), i + 1 - row);
+            writer.flush();  // the warning follows its row
+            warn_breakdown(amplitudes[first + i], rows.broken[i]);
+            written = rows.ends[i];
+            row = i + 1;
+        }
+        writer.write_formatted(text.substr(written), end - row);
+    }
 }
 
 void eval_stream(std::ostream& out, const eval_options& o) {
@@ -339,17 +375,11 @@ void eval_stream(std::ostream& out, const eval_options& o) {
     // The iteration is computed once per amplitude, to the highest level asked for, and
     // every --order and --method order:N column is read off that one sequence.
     table_writer writer(out, t.columns, format);
-    std::vector<std::vector<field>> rows;
-    std::vector<std::vector<int>> broken;
+    block_rows rows;
     for (std::size_t first = 0; first < amplitudes.size(); first += rows_per_block) {
         const std::size_t n = std::min(rows_per_block, amplitudes.size() - first);
-        amplitude_block(amplitudes, first, n, t, orders, small_period_s, rows, broken);
-        for (std::size_t i = 0; i < n; ++i) {
-            writer.record(rows[i]);
-            if (broken[i].empty()) continue;
-            writer.flush();  // the warning follows its row
-            warn_breakdown(amplitudes[first + i], broken[i]);
-        }
+        amplitude_block(amplitudes, first, n, t, orders, small_period_s, writer, rows);
+        write_block(writer, rows, amplitudes, first);
     }
     writer.finish();
 }

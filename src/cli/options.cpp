@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <functional>
@@ -52,26 +53,46 @@ unsigned chosen_jobs(const std::optional<int>& given) {
     return check(n, what);
 }
 
-pendulum::amplitude amplitude_item(const std::string& item) {
+pendulum::amplitude amplitude_item(std::string_view item) {
     try {
         return pendulum::parse_amplitude(item);
     } catch (const std::invalid_argument& e) {
-        const std::string shown =
-            shown_text(item.size() <= 80 ? item : item.substr(0, 40) + "..." + item.substr(item.size() - 20));
+        const std::string shown = shown_text(
+            item.size() <= 80 ? std::string(item)
+                              : std::string(item.substr(0, 40)) + "..." + std::string(item.substr(item.size() - 20)));
         throw usage_error("--theta0 '" + shown + "': " + e.what());
     }
 }
 
 namespace {
 
-/// Items read before they are parsed together: 16384 strings, about 0.5 MB.
+/// Items read before they are parsed together: 16384 of them, their bytes in one string.
 constexpr std::size_t items_per_block = std::size_t{1} << 14;
 /// Items one worker parses at a time.
 constexpr std::size_t items_per_task = 256;
 
+/// Items of a list held together: their bytes one after another, and where each ends.
+struct item_block {
+    std::string bytes;
+    std::vector<std::size_t> ends;
+    std::size_t size() const { return ends.size(); }
+    std::string_view operator[](std::size_t i) const {
+        const std::size_t begin = i ? ends[i - 1] : 0;
+        return std::string_view(bytes).substr(begin, ends[i] - begin);
+    }
+    void add(std::string_view item) {
+        bytes += item;
+        ends.push_back(bytes.size());
+    }
+    void clear() {
+        bytes.clear();
+        ends.clear();
+    }
+};
+
 /// Parses `items` on every worker and appends their amplitudes to `values` in order; the
 /// first bad item's error is thrown, whichever worker met it.
-void parse_items(const std::vector<std::string>& items, std::vector<pendulum::amplitude>& values) {
+void parse_items(const item_block& items, std::vector<pendulum::amplitude>& values) {
     std::vector<std::optional<pendulum::amplitude>> parsed(items.size());
     std::vector<std::exception_ptr> errors(items.size());
     plot::parallel_for_each(items.size(), items_per_task, [&](std::size_t i) {
@@ -91,9 +112,9 @@ void parse_items(const std::vector<std::string>& items, std::vector<pendulum::am
 
 std::vector<pendulum::amplitude> parse_amplitude_values(const std::string& given) {
     std::vector<pendulum::amplitude> values;
-    std::vector<std::string> items;
-    for_each_item(given, "--theta0", [&](const std::string& item) {
-        items.push_back(item);
+    item_block items;
+    for_each_item(given, "--theta0", [&](std::string_view item) {
+        items.add(item);
         if (items.size() < items_per_block) return;
         parse_items(items, values);
         items.clear();
@@ -120,6 +141,10 @@ void check_list_item(const std::string& option, const std::string& text, std::si
                           std::to_string(max_list_items) + " values; a list takes at most " +
                           std::to_string(max_list_items));
     }
+    // Printable ASCII of at most max_label_bytes, as numbers are, has nothing text_problem refuses.
+    bool printable = item.size() <= plot::max_label_bytes;
+    for (const char c : item) printable &= static_cast<unsigned char>(c - ' ') <= '~' - ' ';
+    if (printable) return;
     if (const std::string why = plot::text_problem(item); !why.empty()) {
         const std::string shown = shown_text(item.size() <= 80 ? std::string(item)
                                                                : std::string(item.substr(0, 40)) + "..." +
@@ -145,21 +170,48 @@ std::istream& list_source(const std::string& text, const std::string& option, st
     return file;
 }
 
-bool read_line(std::istream& in, std::string& line) {
-    // istream::getline scans the stream's buffer a block at a time (a character at a time
-    // was a tenth of reading a million amplitudes); it stores at most max_list_line_bytes + 1.
-    static thread_local std::vector<char> buffer(max_list_line_bytes + 2);
-    line.clear();
-    in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-    auto count = static_cast<std::size_t>(in.gcount());
-    if (in.bad() || count == 0) return !in.fail();  // at the end: nothing read
-    if (in.fail()) {
-        in.clear();  // a longer line: what was read is returned, and the caller refuses it
-    } else if (!in.eof()) {
-        --count;  // the newline, read and dropped
+/// The bytes a line reader holds: a block read at a time, and room for the longest line kept.
+constexpr std::size_t line_block_bytes = std::size_t{1} << 20;
+
+line_reader::line_reader(std::istream& in) : in_(in), buffer_(line_block_bytes + max_list_line_bytes + 1) {}
+
+bool line_reader::fill() {
+    if (at_end_) return false;
+    // The unread bytes (the start of a line, at most max_list_line_bytes) go to the front.
+    std::copy(buffer_.begin() + static_cast<std::ptrdiff_t>(begin_), buffer_.begin() + static_cast<std::ptrdiff_t>(end_),
+              buffer_.begin());
+    end_ -= begin_;
+    begin_ = 0;
+    in_.read(buffer_.data() + end_, static_cast<std::streamsize>(buffer_.size() - end_));
+    const auto count = static_cast<std::size_t>(in_.gcount());
+    end_ += count;
+    if (!in_) at_end_ = true;
+    return count > 0;
+}
+
+bool line_reader::next(std::string_view& line) {
+    for (std::size_t searched = begin_;;) {
+        const char* data = buffer_.data();
+        const void* newline = std::memchr(data + searched, '\n', end_ - searched);
+        if (newline) {
+            const auto at = static_cast<std::size_t>(static_cast<const char*>(newline) - data);
+            line = std::string_view(data + begin_, at - begin_);
+            begin_ = at + 1;
+            return true;
+        }
+        if (end_ - begin_ > max_list_line_bytes) {  // too long: the caller refuses it
+            line = std::string_view(data + begin_, max_list_line_bytes + 1);
+            begin_ = end_;
+            return true;
+        }
+        searched = end_ - begin_;
+        if (!fill()) {
+            if (begin_ == end_) return false;
+            line = std::string_view(buffer_.data() + begin_, end_ - begin_);  // the last line, no newline
+            begin_ = end_;
+            return true;
+        }
     }
-    line.assign(buffer.data(), count);
-    return true;
 }
 
 const char* const start_help =

@@ -20,6 +20,8 @@
 #include <optional>
 #include <iostream>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace pendulum::cli {
@@ -41,10 +43,25 @@ inline constexpr std::size_t max_list_items = 1'000'000;
 /// is not one line of printable UTF-8 of at most plot::max_label_bytes (titles show it).
 void check_list_item(const std::string& option, const std::string& text, std::size_t count, std::string_view item);
 
-/// Reads a line as std::getline does, but stops after max_list_line_bytes + 1 bytes (a
-/// line that long is refused by the caller): a file of no newlines, /dev/zero, takes no
-/// more time or memory than that.
-bool read_line(std::istream& in, std::string& line);
+/// Reads a list's lines a block of 1 MB at a time, each line a view into the block (valid
+/// until the next one): no copy per line or item.
+class line_reader {
+public:
+    /// Reads `in`.
+    explicit line_reader(std::istream& in);
+    /// The next line without its newline; one longer than max_list_line_bytes comes as its
+    /// first max_list_line_bytes + 1 bytes (the caller refuses it), so that a file of no
+    /// newlines, /dev/zero, takes no more time or memory than that. False at the end.
+    bool next(std::string_view& line);
+
+private:
+    bool fill();  // reads more after the unread bytes; false at the end of the stream
+    std::istream& in_;
+    std::vector<char> buffer_;
+    std::size_t begin_ = 0;  // the unread bytes are [begin_, end_)
+    std::size_t end_ = 0;
+    bool at_end_ = false;
+};
 
 /// The stream a list option reads, `text` being @FILE (opened into `file`) or - (standard
 /// input); a directory or a file that cannot be read is a usage error.
@@ -68,32 +85,37 @@ void for_each_line_item(std::string_view line, Take take) {
 
 /// Calls take(item) for each item of a list option: its text, or the lines (each
 /// comma-separated, # comments) of FILE for @FILE and of standard input for -, read as
-/// they come, so that a million amplitudes need no more memory than their values.
+/// they come, so that a million amplitudes need no more memory than their values. The item
+/// is a std::string_view (valid during the call) where take accepts one, a std::string otherwise.
 template <class Take>
 void for_each_item(const std::string& text, const std::string& option, Take take) {
+    const auto give = [&](std::string_view item) {
+        if constexpr (std::is_invocable_v<Take&, std::string_view>) take(item);
+        else take(std::string(item));
+    };
     std::size_t count = 0;
     if (text != "-" && (text.empty() || text[0] != '@')) {
         for (const auto& item : split_list(text)) {
             check_list_item(option, text, ++count, item);
-            take(item);
+            give(item);
         }
         return;
     }
     std::ifstream file;
-    std::istream& in = list_source(text, option, file);
+    line_reader lines(list_source(text, option, file));
     bool any = false;
     std::size_t number = 0;
-    for (std::string line; read_line(in, line);) {
+    for (std::string_view line; lines.next(line);) {
         ++number;
         if (line.size() > max_list_line_bytes) {
             throw usage_error(option + " " + text + ": line " + std::to_string(number) + " is longer than " +
                               std::to_string(max_list_line_bytes) + " bytes");
         }
-        if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        line = line.substr(0, line.find('#'));
+        if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
         for_each_line_item(line, [&](std::string_view item) {
             check_list_item(option, text, ++count, item);
-            take(std::string(item));
+            give(item);
             any = true;
         });
     }
@@ -101,7 +123,7 @@ void for_each_item(const std::string& text, const std::string& option, Take take
 }
 
 /// One --theta0 item's amplitude; bad input (usage_error) names the item.
-pendulum::amplitude amplitude_item(const std::string& item);
+pendulum::amplitude amplitude_item(std::string_view item);
 
 /// One --theta0 item, checked; take(text, value) receives it.
 template <class Take>

@@ -111,28 +111,43 @@ void table_writer::write_row(const std::vector<Value>& values) {
         }
         if (empty_[i]++ == 0) first_empty_[i] = number_of(values.front());
     }
-    if (format_ == table_format::csv) {
-        for (std::size_t i = 0; i < values.size(); ++i) {
-            if (i) buffer_ += ',';
-            append_cell(buffer_, values[i], format_);
-        }
-        buffer_ += '\n';
-    } else {
-        buffer_ += rows_ ? ",\n {" : "\n {";
-        for (std::size_t i = 0; i < keys_.size() && i < values.size(); ++i) {
-            if (i) buffer_ += ", ";
-            buffer_ += keys_[i];
-            append_cell(buffer_, values[i], format_);
-        }
-        buffer_ += '}';
-    }
+    append_row(buffer_, values, rows_ == 0);
     ++rows_;
     if (buffer_.size() >= flush_bytes) flush();
+}
+
+template <class Value>
+void table_writer::append_row(std::string& out, const std::vector<Value>& values, bool first) const {
+    if (format_ == table_format::csv) {
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (i) out += ',';
+            append_cell(out, values[i], format_);
+        }
+        out += '\n';
+    } else {
+        out += first ? "\n {" : ",\n {";
+        for (std::size_t i = 0; i < keys_.size() && i < values.size(); ++i) {
+            if (i) out += ", ";
+            out += keys_[i];
+            append_cell(out, values[i], format_);
+        }
+        out += '}';
+    }
 }
 
 void table_writer::row(const std::vector<double>& values) { write_row(values); }
 
 void table_writer::record(const std::vector<field>& values) { write_row(values); }
+
+void table_writer::format(std::string& out, const std::vector<field>& values, bool first) const {
+    append_row(out, values, first);
+}
+
+void table_writer::write_formatted(std::string_view text, std::size_t rows) {
+    buffer_ += text;
+    rows_ += rows;
+    if (buffer_.size() >= flush_bytes) flush();
+}
 
 void table_writer::flush() {
     out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));

@@ -37,6 +37,12 @@ public:
     void row(const std::vector<double>& values);
     /// Writes one row of text and numbers, one per column.
     void record(const std::vector<field>& values);
+    /// Appends one row of text and numbers to `out` as record() writes it, `first` where it is
+    /// the table's first row, without writing it (workers format rows apart; not counted in
+    /// empty_fields).
+    void format(std::string& out, const std::vector<field>& values, bool first) const;
+    /// Writes `rows` rows that format() made, in order.
+    void write_formatted(std::string_view text, std::size_t rows);
     /// Ends the table (JSON's closing bracket) and writes what is gathered.
     void finish();
     /// Writes the rows gathered so far to the stream.
@@ -50,6 +56,8 @@ public:
 private:
     template <class Value>
     void write_row(const std::vector<Value>& values);
+    template <class Value>
+    void append_row(std::string& out, const std::vector<Value>& values, bool first) const;
 
     std::ostream& out_;
     std::vector<std::string> keys_;  // JSON: each column's quoted name and ": "

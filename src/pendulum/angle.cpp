@@ -15,6 +15,7 @@
 #include <array>
 #include <limits>
 #include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <optional>
 #include <numbers>
@@ -156,15 +157,11 @@ private:
 constexpr mpfr_prec_t working_bits = 1280;
 
 /// A plain decimal number ("2.5", "1e-3", no sign, no spaces), as from_chars reads it: that
-/// rounds correctly already, and a million of them are read without MPFR.
+/// rounds correctly already, and a million of them are read without MPFR. A digit or point
+/// first (no sign, inf or nan) and the whole text read leave digits, one point and an
+/// exponent only: from_chars' general format takes no hexadecimal.
 std::optional<double> plain_value(std::string_view t) {
     if (t.empty() || !lexer::number_start(t[0])) return std::nullopt;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        const char c = t[i];
-        if (lexer::number_start(c) || c == 'e' || c == 'E') continue;
-        if ((c == '+' || c == '-') && (t[i - 1] == 'e' || t[i - 1] == 'E')) continue;
-        return std::nullopt;
-    }
     double v = 0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
     if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v)) return std::nullopt;
@@ -364,6 +361,141 @@ std::pair<double, double> moduli(const real& theta0, const real& d) {
     return closer_to_pi ? std::pair{c, s.to_double()} : std::pair{s.to_double(), c};
 }
 
+/// A plain decimal's text as M / 10^q, with M below 2^64 and 0 <= q <= 19 (at most 19
+/// digits); nothing for a longer one or another scale.
+struct scaled_decimal {
+    std::uint64_t m = 0;  ///< the digits as an integer
+    int q = 0;            ///< the power of ten below them
+};
+
+/// The text of a plain number (plain_value read all of it) as M / 10^q, if it fits.
+std::optional<scaled_decimal> scaled_of(std::string_view t) {
+    scaled_decimal s;
+    int after_point = 0;
+    bool point = false;
+    std::size_t i = 0;
+    for (; i < t.size() && t[i] != 'e' && t[i] != 'E'; ++i) {
+        if (t[i] == '.') {
+            point = true;
+            continue;
+        }
+        const auto digit = static_cast<std::uint64_t>(t[i] - '0');
+        if (s.m > (std::numeric_limits<std::uint64_t>::max() - digit) / 10) return std::nullopt;
+        s.m = s.m * 10 + digit;
+        after_point += point ? 1 : 0;
+    }
+    long exponent = 0;
+    if (i < t.size()) {
+        const char* first = t.data() + i + 1 + (t[i + 1] == '+' ? 1 : 0);
+        const auto [end, ec] = std::from_chars(first, t.data() + t.size(), exponent);
+        if (ec != std::errc() || end != t.data() + t.size() || exponent < -19 || exponent > 19) return std::nullopt;
+    }
+    const long q = after_point - exponent;
+    if (q < 0 || q > 19) return std::nullopt;
+    s.q = static_cast<int>(q);
+    return s;
+}
+
+/// A 128-bit integer (a GCC and Clang extension): M 2^51 and T 10^q are exact in it.
+__extension__ using int128 = __int128;
+
+/// A number as the unevaluated sum hi + lo of two doubles, |lo| at most half an ulp of hi.
+struct two_doubles {
+    double hi = 0;
+    double lo = 0;
+};
+
+/// a + b exactly (Knuth's two-sum).
+two_doubles two_sum(double a, double b) {
+    const double s = a + b;
+    const double v = s - a;
+    return {s, (a - (s - v)) + (b - v)};
+}
+
+/// a + b exactly where |a| >= |b| (or a is 0).
+two_doubles fast_two_sum(double a, double b) {
+    const double s = a + b;
+    return {s, b - (s - a)};
+}
+
+/// a b exactly (the rounding error by a fused multiply-add).
+two_doubles two_product(double a, double b) {
+    const double p = a * b;
+    return {p, std::fma(a, b, -p)};
+}
+
+/// The double x rounds to where every number within err of it rounds to that same double
+/// (x.hi, since |x.lo| is at most half an ulp); nothing where the interval reaches a midpoint.
+std::optional<double> rounded_within(two_doubles x, double err) {
+    // The two half-gaps to the neighbours of hi (unequal at a power of 2), with a margin for
+    // the roundings of lo +- err themselves.
+    const double below = 0.5 * (x.hi - std::nextafter(x.hi, 0.0));
+    const double above = 0.5 * (std::nextafter(x.hi, 2 * x.hi) - x.hi);
+    const double margin = err * 1.001 + std::fabs(x.lo) * 0x1p-50;
+    if (x.lo - margin <= -below || x.lo + margin >= above) return std::nullopt;
+    return x.hi;
+}
+
+/// k' = sin x and k = cos x for 0 < x <= 0.071 given as xh + xl, by their Taylor series to
+/// x^11 and x^12 (the rest below 2^-74) in doubles about the leading 1 and x, which two-sums
+/// keep exact; each within `err` of the pair returned (2^-59 of x and of 1 for the series and
+/// its roundings, and what x's relative error `rel` moves them by: x and x^2 of it).
+std::pair<two_doubles, two_doubles> small_sin_cos(two_doubles x, double rel, double& sin_err, double& cos_err) {
+    const double y = x.hi * x.hi;
+    const double p = y * (1.0 / 6 - y * (1.0 / 120 - y * (1.0 / 5040 - y * (1.0 / 362880 - y / 39916800))));
+    const double q =
+        y * (0.5 - y * (1.0 / 24 - y * (1.0 / 720 - y * (1.0 / 40320 - y * (1.0 / 3628800 - y / 479001600)))));
+    const two_doubles t = two_product(x.hi, p);  // x - t is sin x
+    const two_doubles s = two_sum(x.hi, -t.hi);
+    const two_doubles c = two_sum(1.0, -q);
+    sin_err = x.hi * (0x1p-59 + 2 * rel);
+    cos_err = 0x1p-59 + 2 * y * rel;
+    return {fast_two_sum(s.hi, s.lo - t.lo + x.lo * (1 - 0.5 * y)), fast_two_sum(c.hi, c.lo - x.lo * x.hi)};
+}
+
+/// The amplitude of a plain number of at most 19 digits, v its double in [3, pi), without
+/// MPFR: d = pi - text as two doubles (pi_hi - v exact by Sterbenz, pi's next bits, and the
+/// text's excess over v, exact as an integer), k' = sin(d/2) and k = cos(d/2), each bounded
+/// and rounded once, as MPFR rounds them; nothing where a bound reaches a midpoint between
+/// doubles or the text is not such a number (the MPFR path decides those).
+std::optional<amplitude> plain_near_pi(std::string_view text, double v) {
+    constexpr double pi_hi = std::numbers::pi;
+    constexpr double pi_lo = 1.2246467991473532e-16;     // pi - pi_hi, rounded
+    constexpr double pi_lo2 = -2.9947698097183397e-33;   // pi - pi_hi - pi_lo, rounded
+    const auto s = scaled_of(text);
+    if (!s || !(v >= 3.0 && v <= pi_hi)) return std::nullopt;
+    // text - v = (M 2^51 - T 10^q) / (10^q 2^51), where v = T 2^-51: at most half an ulp of v.
+    int128 ten_q = 1;
+    for (int i = 0; i < s->q; ++i) ten_q *= 10;
+    const auto t = static_cast<int128>(std::ldexp(v, 51));
+    const int128 excess = (static_cast<int128>(s->m) << 51) - t * ten_q;
+    if (excess == 0) return amplitude(v);  // the text is the double itself, as equals() finds
+    if (excess > (int128{1} << 62) || excess < -(int128{1} << 62)) return std::nullopt;
+    // r = excess / 10^q / 2^51 to 2^-104: excess is e_hi + e_lo exactly, 10^q a double.
+    const auto e = static_cast<std::int64_t>(excess);
+    const auto e_hi = static_cast<double>(e);
+    const auto e_lo = static_cast<double>(e - static_cast<std::int64_t>(e_hi));
+    const auto ten = static_cast<double>(ten_q);
+    const double r_hi = e_hi / ten;
+    const double r_lo = (std::fma(-r_hi, ten, e_hi) + e_lo) / ten;
+    const two_doubles r = fast_two_sum(std::ldexp(r_hi, -51), std::ldexp(r_lo, -51));
+    // d = (pi_hi - v) + pi_lo + pi_lo2 - r: the roundings of the low parts, 2^-102 of the sizes.
+    const double dh = pi_hi - v;  // exact
+    const two_doubles a = two_sum(dh, pi_lo);
+    const two_doubles b = two_sum(a.hi, -r.hi);
+    const two_doubles d = fast_two_sum(b.hi, (a.lo + b.lo) + (pi_lo2 - r.lo));
+    const double d_err = 0x1p-98 * (std::fabs(dh) + pi_lo + std::fabs(r.hi));
+    if (!(d.hi > 2 * d_err)) return std::nullopt;
+    double sin_err = 0;
+    double cos_err = 0;
+    const auto [sine, cosine] = small_sin_cos({0.5 * d.hi, 0.5 * d.lo}, d_err / (d.hi - d_err), sin_err, cos_err);
+    const auto dd = rounded_within(d, d_err);
+    const auto kp = rounded_within(sine, sin_err);
+    const auto k = rounded_within(cosine, cos_err);
+    if (!dd || !kp || !k) return std::nullopt;
+    return amplitude::from_parts(v, *dd, *k, *kp);
+}
+
 }  // namespace
 
 double parse_angle(std::string_view text) { return evaluate(text, true); }
@@ -371,9 +503,14 @@ double parse_angle(std::string_view text) { return evaluate(text, true); }
 amplitude parse_amplitude(std::string_view text, std::string_view name) {
     // A plain number below 3 (d > 0.14): its double is all there is to know, and its distance
     // from pi and k' follow from it to rounding (a million amplitudes read without MPFR).
-    if (const auto v = plain_value(text); v && *v < 3.0 && *v > 0) {
+    const auto v = plain_value(text);
+    if (v && *v < 3.0 && *v > 0) {
         check_amplitude(*v, name);
         return amplitude(*v);
+    }
+    // A plain number from 3 to pi: its exact digits, without MPFR where the bounds decide.
+    if (v) {
+        if (auto a = plain_near_pi(text, *v)) return *a;
     }
     // 128 bits (checked against 256) for plain numbers and most expressions, the working
     // precision where those disagree: where they cancel, as pi - 1e-300 does.

@@ -23,4 +23,18 @@ inline plot::argb_image rgb24(const std::vector<std::uint32_t>& pixels, int widt
     return im;
 }
 
+/// The image's pixels as R, G, B bytes (Cairo's unused byte left out).
+inline std::vector<unsigned char> rgb_of(const plot::argb_image& im) {
+    std::vector<unsigned char> out;
+    for (int y = 0; y < im.height; ++y) {
+        for (int x = 0; x < im.width; ++x) {
+            std::uint32_t p;
+            std::memcpy(&p, im.data.data() + static_cast<std::size_t>(y) * im.stride + 4 * x, 4);
+            out.insert(out.end(), {static_cast<unsigned char>(p >> 16), static_cast<unsigned char>(p >> 8),
+                                   static_cast<unsigned char>(p)});
+        }
+    }
+    return out;
+}
+
 }  // namespace test_support

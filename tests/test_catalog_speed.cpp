@@ -11,6 +11,7 @@
 #include "plot/text.hpp"
 #include "plot/workers.hpp"
 #include "png_image.hpp"
+#include "rgb24_image.hpp"
 #include "process.hpp"
 
 #include <fontconfig/fontconfig.h>
@@ -34,6 +35,8 @@ using namespace test_support;
 
 namespace {
 
+using test_support::rgb_of;
+
 /// An RGB24 image of w x h pixels, pixel(x, y) each (0xRRGGBB).
 plot::argb_image image_of(int w, int h, const std::function<std::uint32_t(int, int)>& pixel) {
     plot::argb_image im;
@@ -49,20 +52,6 @@ plot::argb_image image_of(int w, int h, const std::function<std::uint32_t(int, i
         }
     }
     return im;
-}
-
-/// The image's pixels as R, G, B bytes.
-std::vector<unsigned char> rgb_of(const plot::argb_image& im) {
-    std::vector<unsigned char> out;
-    for (int y = 0; y < im.height; ++y) {
-        for (int x = 0; x < im.width; ++x) {
-            std::uint32_t p;
-            std::memcpy(&p, im.data.data() + static_cast<std::size_t>(y) * im.stride + 4 * x, 4);
-            out.insert(out.end(), {static_cast<unsigned char>(p >> 16), static_cast<unsigned char>(p >> 8),
-                                   static_cast<unsigned char>(p)});
-        }
-    }
-    return out;
 }
 
 /// CRC-32 of PNG (ISO 3309), bit by bit: independent of the encoder's own.

@@ -6,6 +6,7 @@
 #include "plot/frames.hpp"
 #include "plot/output.hpp"
 #include "png_image.hpp"
+#include "rgb24_image.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,8 @@
 using namespace test_support;
 
 namespace {
+
+using test_support::rgb_of;
 
 /// An RGB24 image of w x h pixels, pixel(x, y) each (0xUURRGGBB: the top byte is the one
 /// Cairo leaves as it likes).
@@ -35,20 +38,6 @@ plot::argb_image image_of(int w, int h, const std::function<std::uint32_t(int, i
         }
     }
     return im;
-}
-
-/// The image's pixels as R, G, B bytes.
-std::vector<unsigned char> rgb_of(const plot::argb_image& im) {
-    std::vector<unsigned char> out;
-    for (int y = 0; y < im.height; ++y) {
-        for (int x = 0; x < im.width; ++x) {
-            std::uint32_t p;
-            std::memcpy(&p, im.data.data() + static_cast<std::size_t>(y) * im.stride + 4 * x, 4);
-            out.insert(out.end(), {static_cast<unsigned char>(p >> 16), static_cast<unsigned char>(p >> 8),
-                                   static_cast<unsigned char>(p)});
-        }
-    }
-    return out;
 }
 
 /// The PNG's colour type (IHDR's tenth byte): 0 grey, 2 RGB, 3 palette.

@@ -104,11 +104,9 @@ namespace {
 /// Points along a series, in its order.
 using points = std::vector<std::pair<double, double>>;
 
-/// What the describe call on this thread knows: whether a file drew the figure (the words
-/// then evaluate no curve the drawing drew, nor any curve between its points), and each
-/// curve's points found so far (the words read them a few times over).
+/// What the describe call on this thread knows: the curves a file's drawing drew, at its
+/// vertices, and each curve's points found so far (the words read them a few times over).
 struct describing {
-    bool drawn = false;                                         ///< describing a drawn figure
     std::unordered_map<const plot::curve*, points> curves{};    ///< each curve's points
     std::unordered_map<const plot::curve*, points> as_drawn{};  ///< the drawn curves' vertices
 };
@@ -121,7 +119,6 @@ class describing_scope {
 public:
     /// The words of `built`, drawn by `drawn` (null: not drawn).
     describing_scope(const plot::figure& built, const plot::drawing* drawn) : outer_(current) {
-        now_.drawn = drawn != nullptr;
         if (drawn) now_.as_drawn = plot::drawn_curve_values(built, *drawn);
         current = &now_;
     }
@@ -133,9 +130,6 @@ private:
     describing now_;
     describing* outer_;
 };
-
-/// Whether the words are of a figure a file drew.
-bool of_drawing() { return current && current->drawn; }
 
 /// A curve's finite points: its vertices as the file's drawing drew it (their values are in
 /// its memo: nothing is evaluated, and the words are the file's whatever else drew the figure

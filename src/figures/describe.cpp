@@ -104,12 +104,17 @@ namespace {
 /// Points along a series, in its order.
 using points = std::vector<std::pair<double, double>>;
 
-/// What the describe call on this thread knows: the curves a file's drawing drew, at its
-/// vertices, and each curve's points found so far (the words read them a few times over).
+/// What the describe call on this thread knows: each curve's finite points found so far (the
+/// words read them a few times over), from the start those a file's drawing drew.
 struct describing {
-    std::unordered_map<const plot::curve*, points> curves{};    ///< each curve's points
-    std::unordered_map<const plot::curve*, points> as_drawn{};  ///< the drawn curves' vertices
+    std::unordered_map<const plot::curve*, points> curves{};  ///< each curve's points
 };
+
+/// Points without their non-finite ones.
+points finite(points p) {
+    std::erase_if(p, [](const auto& v) { return !std::isfinite(v.first) || !std::isfinite(v.second); });
+    return p;
+}
 
 /// This thread's describe call, if any.
 thread_local describing* current = nullptr;
@@ -119,7 +124,14 @@ class describing_scope {
 public:
     /// The words of `built`, drawn by `drawn` (null: not drawn).
     describing_scope(const plot::figure& built, const plot::drawing* drawn) : outer_(current) {
-        if (drawn) now_.as_drawn = plot::drawn_curve_values(built, *drawn);
+        // The curves the file drew, at the vertices it drew (their values are in the curves'
+        // memos: nothing is evaluated, and the words are the file's whatever else drew the
+        // figure first).
+        if (drawn) {
+            for (auto& [c, values] : plot::drawn_curve_values(built, *drawn)) {
+                if (!values.empty()) now_.curves.emplace(c, finite(std::move(values)));
+            }
+        }
         current = &now_;
     }
     ~describing_scope() { current = outer_; }
@@ -131,20 +143,10 @@ private:
     describing* outer_;
 };
 
-/// A curve's finite points: its vertices as the file's drawing drew it (their values are in
-/// its memo: nothing is evaluated, and the words are the file's whatever else drew the figure
-/// first), else about 512 values shared with a later drawing through the curve's memo (a
-/// costly function, an error in MPFR, is evaluated once between them).
-points curve_points(const plot::curve& c) {
-    points out;
-    if (current) {
-        const auto drawn = current->as_drawn.find(&c);
-        if (drawn != current->as_drawn.end()) out = drawn->second;
-    }
-    if (out.empty()) out = plot::first_values(c, 512);
-    std::erase_if(out, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
-    return out;
-}
+/// A curve's finite points where the file did not draw it: about 512 values shared with a
+/// later drawing through the curve's memo (a costly function, an error in MPFR, is evaluated
+/// once between them).
+points curve_points(const plot::curve& c) { return finite(plot::first_values(c, 512)); }
 
 /// A series' points: its curve's (found once per describe call), else its own finite points.
 points points_of(const plot::series& s) {
@@ -156,8 +158,7 @@ points points_of(const plot::series& s) {
     }
     points out;
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) out.emplace_back(s.x[i], s.y[i]);
-    std::erase_if(out, [](const auto& p) { return !std::isfinite(p.first) || !std::isfinite(p.second); });
-    return out;
+    return finite(std::move(out));
 }
 
 /// points_of, sorted by x.
@@ -353,8 +354,8 @@ std::optional<double> y_of(const plot::series& s, const points& sorted, double x
 
 /// Where series s first leaves the reference by more than `visible` (none if it never does):
 /// the first of its points past it, then the crossing between it and the point before, by
-/// bisection on the functions where both curves are functions of x (between their points, in
-/// a drawn figure's words). `covered`: whether any point of s lies within the reference's x range.
+/// bisection on the functions where both curves are functions of x. `covered`: whether any
+/// point of s lies within the reference's x range.
 std::optional<double> departure(const plot::series& reference, const points& sorted, const plot::series& s,
                                 double visible, bool& covered) {
     const points along = sorted_points(s);

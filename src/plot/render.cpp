@@ -1456,28 +1456,35 @@ drawn_points drawn_series(const series& s, const axis_map& mx, const axis_map& m
     return d;
 }
 
+/// A panel's series as a drawing at `tolerance` in frame `f` draws them (drawn_series), the
+/// curves followed a line's width past the frame as draw_panel follows them.
+std::vector<drawn_points> drawn_panel(const panel& p, const panel_frame& f, const theme& th, double tolerance) {
+    const axis_map mx{f.x_lo, f.x_hi, p.x.kind == scale::log, f.x, f.x + f.w};
+    const axis_map my{f.y_lo, f.y_hi, p.y.kind == scale::log, f.y + f.h, f.y};
+    const double reach = th.line_width_pt;
+    const rect clip{f.x - reach, f.y - reach, f.w + 2 * reach, f.h + 2 * reach};
+    std::vector<drawn_points> out;
+    for (const auto& s : p.data) out.push_back(drawn_series(s, mx, my, clip, tolerance));
+    return out;
+}
+
 }  // namespace
 
 std::unordered_map<const curve*, std::vector<std::pair<double, double>>> drawn_curve_values(const figure& fig,
                                                                                              const drawing& drawn) {
     std::unordered_map<const curve*, std::vector<std::pair<double, double>>> out;
-    if (!drawn.fig || !drawn.th || drawn.raster || drawn.frames.size() != fig.panels.size()) return out;
+    if (!drawn.th || !laid_out_alike(fig, *drawn.th, drawn)) return out;
     const figure styled = with_theme_styles(*drawn.fig, *drawn.th);
-    if (!same_content(fig, *drawn.fig) && !same_content(with_theme_styles(fig, *drawn.th), styled)) return out;
-    // As draw_figure samples on a vector page (one unit a point) and follows the curves.
+    // As draw_figure samples on a vector page (one unit a point).
     const double tolerance = curve_tolerance(1.0, false);
     for (std::size_t i = 0; i < styled.panels.size() && i < drawn.frames.size(); ++i) {
         const panel& p = styled.panels[i];
-        const panel_frame& f = drawn.frames[i];
-        const axis_map mx{f.x_lo, f.x_hi, p.x.kind == scale::log, f.x, f.x + f.w};
-        const axis_map my{f.y_lo, f.y_hi, p.y.kind == scale::log, f.y + f.h, f.y};
-        const double reach = drawn.th->line_width_pt;
-        const rect clip{f.x - reach, f.y - reach, f.w + 2 * reach, f.h + 2 * reach};
-        for (const auto& s : p.data) {
-            if (!s.curve || s.line == line_style::none || out.contains(s.curve.get())) continue;
-            const drawn_points d = drawn_series(s, mx, my, clip, tolerance);
+        const std::vector<drawn_points> points = drawn_panel(p, drawn.frames[i], *drawn.th, tolerance);
+        for (std::size_t k = 0; k < p.data.size(); ++k) {
+            const series& s = p.data[k];
+            if (!points[k].sampled || out.contains(s.curve.get())) continue;
             auto& values = out[s.curve.get()];
-            for (std::size_t k = 0; k < d.x.size(); ++k) values.emplace_back(d.x[k], d.y[k]);
+            for (std::size_t j = 0; j < points[k].x.size(); ++j) values.emplace_back(points[k].x[j], points[k].y[j]);
         }
     }
     return out;
@@ -1497,15 +1504,7 @@ std::vector<std::vector<drawn_points>> drawn_data(const figure& unstyled, const 
     const double tolerance = curve_tolerance(cr.get());
     std::vector<std::vector<drawn_points>> out;
     for (std::size_t i = 0; i < fig.panels.size() && i < frames.size(); ++i) {
-        const panel& p = fig.panels[i];
-        const panel_frame& f = frames[i];
-        const axis_map mx{f.x_lo, f.x_hi, p.x.kind == scale::log, f.x, f.x + f.w};
-        const axis_map my{f.y_lo, f.y_hi, p.y.kind == scale::log, f.y + f.h, f.y};
-        const double reach = th.line_width_pt;  // as draw_panel follows curves
-        const rect clip{f.x - reach, f.y - reach, f.w + 2 * reach, f.h + 2 * reach};
-        std::vector<drawn_points> panel_points;
-        for (const auto& s : p.data) panel_points.push_back(drawn_series(s, mx, my, clip, tolerance));
-        out.push_back(std::move(panel_points));
+        out.push_back(drawn_panel(fig.panels[i], frames[i], th, tolerance));
     }
     return out;
 }

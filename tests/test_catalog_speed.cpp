@@ -35,23 +35,9 @@ using namespace test_support;
 
 namespace {
 
-using test_support::rgb_of;
-
-/// An RGB24 image of w x h pixels, pixel(x, y) each (0xRRGGBB).
+/// An RGB24 image of w x h pixels, pixel(x, y) each (0xRRGGBB), its unused byte 0xff.
 plot::argb_image image_of(int w, int h, const std::function<std::uint32_t(int, int)>& pixel) {
-    plot::argb_image im;
-    im.width = w;
-    im.height = h;
-    im.stride = 4 * w;
-    im.rgb24 = true;
-    im.data.resize(static_cast<std::size_t>(im.stride) * h);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const std::uint32_t p = pixel(x, y) | 0xff000000u;  // Cairo leaves the unused byte as it likes
-            std::memcpy(im.data.data() + static_cast<std::size_t>(y) * im.stride + 4 * x, &p, 4);
-        }
-    }
-    return im;
+    return rgb24_of(w, h, [&](int x, int y) { return pixel(x, y) | 0xff000000u; });
 }
 
 /// CRC-32 of PNG (ISO 3309), bit by bit: independent of the encoder's own.
@@ -83,9 +69,6 @@ std::vector<std::string> checked_chunks(const std::string& png) {
     }
     return types;
 }
-
-/// The PNG's colour type (IHDR's tenth byte).
-int color_type(const std::string& png) { return static_cast<unsigned char>(png.at(25)); }
 
 /// Encodes, checks the chunks and decodes the image; the decoded pixels must be the image's.
 std::string round_trip(const plot::argb_image& im, double dpi = 300) {

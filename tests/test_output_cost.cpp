@@ -20,28 +20,10 @@ using namespace test_support;
 
 namespace {
 
-using test_support::rgb_of;
-
-/// An RGB24 image of w x h pixels, pixel(x, y) each (0xUURRGGBB: the top byte is the one
-/// Cairo leaves as it likes).
+/// An RGB24 image of w x h pixels, pixel(x, y) each, rows with a gap after them.
 plot::argb_image image_of(int w, int h, const std::function<std::uint32_t(int, int)>& pixel) {
-    plot::argb_image im;
-    im.width = w;
-    im.height = h;
-    im.stride = 4 * w + 8;  // rows with a gap after them, as a wider stride leaves
-    im.rgb24 = true;
-    im.data.assign(static_cast<std::size_t>(im.stride) * h, 0x5a);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const std::uint32_t p = pixel(x, y);
-            std::memcpy(im.data.data() + static_cast<std::size_t>(y) * im.stride + 4 * x, &p, 4);
-        }
-    }
-    return im;
+    return rgb24_of(w, h, pixel, 8);
 }
-
-/// The PNG's colour type (IHDR's tenth byte): 0 grey, 2 RGB, 3 palette.
-int color_type(const std::string& png) { return static_cast<unsigned char>(png.at(25)); }
 
 /// The PNG of the image, after checking that it decodes to the image's pixels.
 std::string encoded(const plot::argb_image& im) {

@@ -12,6 +12,7 @@
 #include "pendulum/bessel_series.hpp"
 #include "pendulum/formulas_mp.hpp"
 #include "pendulum/gsl_support.hpp"
+#include "pendulum/mp_bessel.hpp"
 #include "pendulum/mp_real.hpp"
 
 #include <algorithm>
@@ -74,8 +75,8 @@ inline mp::real sine_over(const mp::real& theta0, const mp::real& u) { return mp
 
 /// 2 J_n(x)/x in extended precision: the power series.
 inline long double twice_j_over_x(int n, long double x) { return 2 * bessel_j_over_x_series(n, x); }
-/// 2 J_n(x)/x for mp::real: MPFR's J_n.
-inline mp::real twice_j_over_x(int n, const mp::real& x) { return 2.0 * mp::bessel_j(n, x) / x; }
+/// 2 J_n(x)/x for mp::real: J_n correctly rounded (bessel_j_rounded: mpfr_jn's number).
+inline mp::real twice_j_over_x(int n, const mp::real& x) { return 2.0 * mp::bessel_j_rounded(n, x) / x; }
 
 // ---- The projection.
 

@@ -58,8 +58,8 @@ TEST(MpBessel, EveryOrderAgainstMpfr) {
         for (const double x0 : xs) {
             for (const int n : {0, 1, 3, 8, 40}) {
                 const pendulum::mp::real x(x0, bits);
-                const auto j = pendulum::mp::bessel_j_upto(n, x);
-                ASSERT_EQ(j.size(), static_cast<std::size_t>(n) + 1);
+                std::vector<pendulum::mp::real> j;
+                for (int m = 0; m <= n; ++m) j.push_back(pendulum::mp::bessel_j_nth(m, x));
                 pendulum::mp::real largest(bits);
                 std::vector<pendulum::mp::real> want;
                 for (int m = 0; m <= n + 1; ++m) {  // J_{n+1} too: near a zero of J_n it sets the scale

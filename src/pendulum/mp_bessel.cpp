@@ -97,36 +97,13 @@ mpfr_exp_t rounding_bound(int m, const series_parts& p, mpfr_prec_t bits) {
     return mpfr_get_exp(p.lead.get()) + p.largest - static_cast<mpfr_exp_t>(bits) + std::max(sum_bits, lead_bits) + 4;
 }
 
-/// The argument's check of bessel_j_upto and bessel_j_nth.
+/// The argument's check of bessel_j_nth.
 void check_argument(int n, const real& x, const char* who) {
     if (n < 0) throw std::invalid_argument(std::string(who) + " needs n >= 0, got " + std::to_string(n));
     if (x.is_zero() || !(mp::abs(x) <= 4.0)) throw std::domain_error(std::string(who) + " needs 0 < |x| <= 4");
 }
 
 }  // namespace
-
-std::vector<real> bessel_j_upto(int n, const real& x) {
-    check_argument(n, x, "bessel_j_upto");
-    const mpfr_prec_t bits = x.precision() + guard_bits;
-    const real wide = real(x, bits);
-    std::vector<real> j(static_cast<std::size_t>(n) + 2, real(bits));
-    j[static_cast<std::size_t>(n) + 1] = series(n + 1, wide, bits);
-    j[static_cast<std::size_t>(n)] = series(n, wide, bits);
-    // J_{m-1} = (2m/x) J_m - J_{m+1}.
-    real two_over_x(bits);
-    mpfr_ui_div(two_over_x.get(), 2, wide.get(), MPFR_RNDN);
-    real step(bits);
-    for (int m = n; m >= 1; --m) {
-        const auto i = static_cast<std::size_t>(m);
-        mpfr_mul(step.get(), two_over_x.get(), j[i].get(), MPFR_RNDN);
-        mpfr_mul_ui(step.get(), step.get(), static_cast<unsigned long>(m), MPFR_RNDN);
-        mpfr_sub(j[i - 1].get(), step.get(), j[i + 1].get(), MPFR_RNDN);
-    }
-    std::vector<real> out;
-    out.reserve(static_cast<std::size_t>(n) + 1);
-    for (int m = 0; m <= n; ++m) out.push_back(real(j[static_cast<std::size_t>(m)], x.precision()));
-    return out;
-}
 
 real bessel_j_nth(int n, const real& x) {
     check_argument(n, x, "bessel_j_nth");
